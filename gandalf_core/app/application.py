@@ -1,0 +1,139 @@
+"""The Application: the frame loop over a scene manager, with an OpenGL or a WebGPU renderer.
+
+With a display it opens a glfw window; without one (or with ``headless=True``) it renders offscreen.
+Both take the same path: every frame is drawn offscreen and then, in a window, presented.
+
+Frame order: apply a pending scene switch, poll input, handle resizes, then run the active scene's
+systems in their order — the scene's own systems, then the core ones the app adds when missing
+(TransformSystem, then the RenderSystem, last).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..ecs import Scene, SceneManager
+from ..render.base import Renderer, check_backend
+from .clock import Clock
+from .input import Input, ResizeEvent
+from .window import Window, display_available
+
+
+class Application:
+    """Runs scenes with one backend. ``backend`` is 'opengl' or 'webgpu'."""
+
+    def __init__(
+        self,
+        backend: str = "opengl",
+        width: int = 640,
+        height: int = 480,
+        *,
+        title: str = "gandalf",
+        headless: bool | None = None,
+        fixed_dt: float | None = None,
+    ) -> None:
+        self.backend = check_backend(backend)  # fails before any GPU library is imported
+        self.headless = (not display_available()) if headless is None else bool(headless)
+        self.input = Input()
+        self.clock = Clock(fixed_dt)
+        self.scenes = SceneManager()
+        self.scenes.on_switch.append(self._on_switch)
+        self.window = None if self.headless else Window(width, height, title, self.backend, self.input)
+        from ..render import create_renderer
+
+        self.renderer: Renderer = create_renderer(self.backend, width, height, self.window)
+        self._prepared: set[int] = set()
+        self.running = False
+
+    # --- scenes -------------------------------------------------------------------------------
+    def add_scene(self, scene: Scene) -> Scene:
+        """Register a scene; the first one becomes active."""
+        scene.app = self
+        return self.scenes.add(scene)
+
+    @property
+    def scene(self) -> Scene:
+        if self.scenes.active is None:
+            raise RuntimeError("the application has no scene: call app.add_scene(scene) first")
+        return self.scenes.active
+
+    def switch_scene(self, scene: Scene | str) -> None:
+        """Switch scenes at the start of the next frame."""
+        self.scenes.request_switch(scene)
+
+    def _on_switch(self, _previous: Scene | None, scene: Scene) -> None:
+        scene.app = self
+        self._prepare(scene)
+
+    def _prepare(self, scene: Scene) -> None:
+        # Core systems are added once per scene, after the scene's own systems.
+        if id(scene) in self._prepared:
+            return
+        from ..render import RenderSystem
+        from ..systems import TransformSystem
+
+        if not any(isinstance(s, TransformSystem) for s in scene.systems):
+            scene.add_system(TransformSystem())
+        scene.add_system(RenderSystem(self.renderer))
+        self._prepared.add(id(scene))
+
+    # --- the loop -------------------------------------------------------------------------------
+    def step(self, dt: float | None = None) -> float:
+        """Run exactly one frame and return its time step."""
+        self.scenes.apply_pending()
+        scene = self.scene
+        self._prepare(scene)
+        if self.window is not None:
+            self.window.poll()
+        for event in self.input.begin_frame():
+            if isinstance(event, ResizeEvent):
+                self.renderer.resize(event.width, event.height)
+        ts = self.clock.tick(dt)
+        scene.update(ts)
+        return ts
+
+    def run(self, frames: int | None = None, seconds: float | None = None) -> None:
+        """Run until the window closes, or for ``frames`` frames / ``seconds`` of clock time."""
+        self.running = True
+        start = self.clock.time
+        count = 0
+        while self.running:
+            if self.window is not None and self.window.should_close:
+                break
+            if frames is not None and count >= frames:
+                break
+            if seconds is not None and self.clock.time - start >= seconds:
+                break
+            if frames is None and seconds is None and self.window is None:
+                raise RuntimeError("a headless run needs frames= or seconds= (there is no window to close)")
+            self.step()
+            count += 1
+        self.running = False
+
+    def stop(self) -> None:
+        self.running = False
+
+    # --- capture --------------------------------------------------------------------------------
+    def capture(self) -> np.ndarray:
+        """The last frame as a ``(height, width, 4)`` uint8 RGBA array, top row first."""
+        return self.renderer.read_pixels()
+
+    def save_png(self, path: str | Path) -> Path:
+        return self.renderer.save_png(path)
+
+    def close(self) -> None:
+        """Tear down every scene's systems, the renderer and the window."""
+        for scene in self.scenes.scenes:
+            scene.teardown()
+        self.renderer.release()
+        if self.window is not None:
+            self.window.close()
+
+    def __enter__(self) -> Application:
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        self.close()

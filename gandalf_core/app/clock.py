@@ -1,0 +1,32 @@
+"""The frame clock: real time in a window, a fixed step when asked (deterministic tests and captures)."""
+
+from __future__ import annotations
+
+import time
+
+
+class Clock:
+    """Measures frame times. ``fixed_dt`` makes every frame advance by exactly that many seconds."""
+
+    #: Frame times are clamped to this, so a stall (a breakpoint, a dragged window) can't explode physics.
+    MAX_DT = 0.25
+
+    def __init__(self, fixed_dt: float | None = None) -> None:
+        if fixed_dt is not None and not fixed_dt > 0:
+            raise ValueError(f"fixed_dt must be positive seconds, got {fixed_dt!r}")
+        self.fixed_dt = fixed_dt
+        self.time = 0.0  # simulated seconds since start
+        self.frame = 0
+        self._last = time.perf_counter()
+
+    def tick(self, dt: float | None = None) -> float:
+        """Advance one frame and return its time step in seconds."""
+        now = time.perf_counter()
+        if dt is None:
+            dt = self.fixed_dt if self.fixed_dt is not None else min(now - self._last, self.MAX_DT)
+        elif dt < 0:
+            raise ValueError(f"a frame's dt cannot be negative, got {dt!r}")
+        self._last = now
+        self.time += dt
+        self.frame += 1
+        return dt

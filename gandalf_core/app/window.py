@@ -1,0 +1,78 @@
+"""A glfw window that feeds :class:`~gandalf_core.app.input.Input`; used only when a display exists."""
+
+from __future__ import annotations
+
+import os
+
+from .input import Input
+
+
+def display_available() -> bool:
+    """True when a window can be opened (an X11 or Wayland display is set)."""
+    return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
+
+
+class Window:
+    """A window with a GL 3.3 core context (``api='opengl'``) or none (``api='webgpu'``: wgpu makes a surface)."""
+
+    def __init__(self, width: int, height: int, title: str, api: str, input: Input) -> None:
+        import glfw
+
+        self._glfw = glfw
+        if not glfw.init():
+            raise RuntimeError("glfw could not initialise: is a display available?")
+        if api == "opengl":
+            glfw.window_hint(glfw.CONTEXT_VERSION_MAJOR, 3)
+            glfw.window_hint(glfw.CONTEXT_VERSION_MINOR, 3)
+            glfw.window_hint(glfw.OPENGL_PROFILE, glfw.OPENGL_CORE_PROFILE)
+            glfw.window_hint(glfw.OPENGL_FORWARD_COMPAT, True)
+        else:
+            glfw.window_hint(glfw.CLIENT_API, glfw.NO_API)
+        self.handle = glfw.create_window(width, height, title, None, None)
+        if not self.handle:
+            glfw.terminate()
+            raise RuntimeError(f"glfw could not open a {width}x{height} {api} window")
+        if api == "opengl":
+            glfw.make_context_current(self.handle)
+            glfw.swap_interval(0)
+        self.input = input
+        glfw.set_key_callback(self.handle, self._on_key)
+        glfw.set_cursor_pos_callback(self.handle, lambda _w, x, y: input.move_mouse(x, y))
+        glfw.set_mouse_button_callback(self.handle, self._on_button)
+        glfw.set_scroll_callback(self.handle, lambda _w, dx, dy: input.scroll(dx, dy))
+        glfw.set_framebuffer_size_callback(self.handle, lambda _w, w, h: input.resize(w, h))
+
+    def _on_key(self, _window: object, key: int, _scancode: int, action: int, _mods: int) -> None:
+        glfw = self._glfw
+        name = glfw.get_key_name(key, 0) or _special_key_name(glfw, key)
+        if name:
+            self.input.key(name, {glfw.PRESS: "press", glfw.RELEASE: "release"}.get(action, "repeat"))
+
+    def _on_button(self, _window: object, button: int, action: int, _mods: int) -> None:
+        self.input.button(button, "press" if action == self._glfw.PRESS else "release")
+
+    @property
+    def framebuffer_size(self) -> tuple[int, int]:
+        return self._glfw.get_framebuffer_size(self.handle)
+
+    def poll(self) -> None:
+        self._glfw.poll_events()
+
+    @property
+    def should_close(self) -> bool:
+        return bool(self._glfw.window_should_close(self.handle))
+
+    def swap_buffers(self) -> None:
+        self._glfw.swap_buffers(self.handle)
+
+    def close(self) -> None:
+        self._glfw.destroy_window(self.handle)
+        self._glfw.terminate()
+
+
+def _special_key_name(glfw: object, key: int) -> str | None:
+    # glfw.get_key_name only names printable keys; the rest come from the KEY_* constants.
+    for attr in dir(glfw):
+        if attr.startswith("KEY_") and getattr(glfw, attr) == key:
+            return attr[4:]
+    return None

@@ -1,0 +1,131 @@
+"""Components: plain data attached to entities.
+
+Most components are ordinary objects. A :class:`ColumnarComponent` keeps its numeric fields in
+scene-wide numpy columns while it belongs to a scene, so a system can update every instance at once
+(``store.column("translation")`` is an ``(N, 3)`` array) while student code still writes
+``transform.translation = (0, 1, 0)`` one entity at a time.
+"""
+
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+import numpy as np
+
+
+class Component:
+    """Base class of all components. Components hold data only; behaviour lives in systems."""
+
+    def __repr__(self) -> str:
+        fields = ", ".join(f"{k}={v!r}" for k, v in vars(self).items() if not k.startswith("_"))
+        return f"{type(self).__name__}({fields})"
+
+
+class _ColumnField:
+    """Descriptor that reads/writes one row of a column, or local storage before the component joins a scene."""
+
+    def __init__(self, name: str, shape: tuple[int, ...]) -> None:
+        self.name = name
+        self.shape = shape
+
+    def __get__(self, obj: ColumnarComponent | None, owner: type) -> Any:
+        if obj is None:
+            return self
+        store = obj._store
+        if store is None:
+            return obj._local[self.name]
+        return store.columns[self.name][obj._row]
+
+    def __set__(self, obj: ColumnarComponent, value: Any) -> None:
+        arr = np.asarray(value, dtype=np.float64)
+        if arr.shape != self.shape:
+            try:
+                arr = np.broadcast_to(arr, self.shape)
+            except ValueError:
+                raise ValueError(
+                    f"{type(obj).__name__}.{self.name} must have shape {self.shape}, got {np.shape(value)}"
+                ) from None
+        if not np.all(np.isfinite(arr)):
+            raise ValueError(f"{type(obj).__name__}.{self.name} must be finite, got {value!r}")
+        store = obj._store
+        if store is None:
+            obj._local[self.name] = np.array(arr, dtype=np.float64)
+        else:
+            store.columns[self.name][obj._row] = arr
+
+
+class ColumnarComponent(Component):
+    """A component whose float64 fields live in per-scene numpy columns.
+
+    Subclasses list their fields in ``columns = {"name": (shape, default)}``.
+    """
+
+    columns: ClassVar[dict[str, tuple[tuple[int, ...], Any]]] = {}
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        for name, (shape, _default) in cls.columns.items():
+            setattr(cls, name, _ColumnField(name, tuple(shape)))
+
+    def __init__(self) -> None:
+        self._store: ColumnStore | None = None
+        self._row = -1
+        self._local = {
+            name: np.array(np.broadcast_to(np.asarray(default, np.float64), shape))
+            for name, (shape, default) in self.columns.items()
+        }
+
+    def __repr__(self) -> str:
+        fields = ", ".join(f"{k}={getattr(self, k).tolist()!r}" for k in self.columns)
+        return f"{type(self).__name__}({fields})"
+
+
+class ColumnStore:
+    """The columns of one columnar component type in one scene; rows are packed (swap-remove)."""
+
+    def __init__(self, component_type: type[ColumnarComponent]) -> None:
+        self.component_type = component_type
+        self.capacity = 16
+        self.count = 0
+        self.columns: dict[str, np.ndarray] = {
+            name: np.zeros((self.capacity, *shape)) for name, (shape, _) in component_type.columns.items()
+        }
+        self.owners: list[ColumnarComponent] = []
+
+    def attach(self, component: ColumnarComponent) -> None:
+        if self.count == self.capacity:
+            self._grow()
+        row = self.count
+        for name, col in self.columns.items():
+            col[row] = component._local[name]
+        component._store, component._row = self, row
+        self.owners.append(component)
+        self.count += 1
+
+    def detach(self, component: ColumnarComponent) -> None:
+        row, last = component._row, self.count - 1
+        component._local = {name: col[row].copy() for name, col in self.columns.items()}
+        if row != last:
+            moved = self.owners[last]
+            for col in self.columns.values():
+                col[row] = col[last]
+            moved._row = row
+            self.owners[row] = moved
+        self.owners.pop()
+        component._store, component._row = None, -1
+        self.count -= 1
+
+    def column(self, name: str) -> np.ndarray:
+        """A view of the live rows of column ``name`` (shape ``(count, *field_shape)``)."""
+        return self.columns[name][: self.count]
+
+    def rows_of(self, components: list[ColumnarComponent]) -> np.ndarray:
+        """Row indices of ``components`` (for fancy indexing into columns)."""
+        return np.fromiter((c._row for c in components), dtype=np.intp, count=len(components))
+
+    def _grow(self) -> None:
+        self.capacity *= 2
+        for name, col in self.columns.items():
+            grown = np.zeros((self.capacity, *col.shape[1:]))
+            grown[: self.count] = col[: self.count]
+            self.columns[name] = grown

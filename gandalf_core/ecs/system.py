@@ -1,0 +1,109 @@
+"""Systems: behaviour over every entity that has a given set of component types.
+
+A system names the component types it needs when it is created, e.g.
+``GravitySystem([GravityComponent, TransformComponent])``. The scene keeps, per system, the matching
+entities and their component tuples (in the order the types were given), and keeps them current as
+components are added and removed while the app runs.
+
+Two ways to write a system:
+
+* per entity (the teaching path): override :meth:`System.on_update_entity`;
+* in one batch (the fast path): override :meth:`System.on_update_system` and work on
+  :attr:`System.entities` / :meth:`System.column`, or on a columnar store with numpy.
+"""
+
+from __future__ import annotations
+
+import uuid
+from collections.abc import Iterable, Sequence
+from typing import TYPE_CHECKING, Any
+
+from .component import Component
+from .errors import NotAComponentError
+
+if TYPE_CHECKING:
+    from .scene import Scene
+
+
+class System:
+    """Base class of systems. Subclasses override the hooks they need."""
+
+    def __init__(self, component_types: Sequence[type[Component]] = (), *, name: str | None = None) -> None:
+        types = tuple(component_types)
+        for t in types:
+            if not (isinstance(t, type) and issubclass(t, Component)):
+                raise NotAComponentError(
+                    f"{type(self).__name__}: {t!r} is not a Component subclass; systems filter on component types"
+                )
+        if len(set(types)) != len(types):
+            raise ValueError(f"{type(self).__name__}: component types listed twice: {types}")
+        self.component_types: tuple[type[Component], ...] = types
+        self.name = name or type(self).__name__
+        self.scene: Scene | None = None
+        self.enabled = True
+        self._members: dict[uuid.UUID, tuple[Any, ...]] = {}
+        self._lists: tuple[list[uuid.UUID], list[tuple[Any, ...]]] | None = None
+
+    # --- hooks -----------------------------------------------------------------------------
+    def on_create_system(self) -> None:
+        """Called once when the system joins a scene, before ``on_create_entity`` for existing entities."""
+
+    def on_create_entity(self, entity: uuid.UUID, components: tuple[Any, ...]) -> None:
+        """Called when an entity starts matching this system (also for entities that existed before)."""
+
+    def on_remove_entity(self, entity: uuid.UUID, components: tuple[Any, ...]) -> None:
+        """Called when an entity stops matching (a component removed, or the entity destroyed)."""
+
+    def on_update_system(self, ts: float) -> None:
+        """Called once per frame. The default calls :meth:`on_update_entity` for every matching entity."""
+        for entity, components in zip(*self._cached_lists()):
+            self.on_update_entity(ts, entity, components)
+
+    def on_update_entity(self, ts: float, entity: uuid.UUID, components: tuple[Any, ...]) -> None:
+        """Per-entity update; ``ts`` is the frame time step in seconds."""
+
+    def on_gui_update(self) -> None:
+        """Called once per frame while a GUI layer (the editor) is drawing; empty by default."""
+
+    def on_destroy_system(self) -> None:
+        """Called when the system leaves its scene (or the scene is torn down): release resources here."""
+
+    # --- matching entities --------------------------------------------------------------------
+    @property
+    def entities(self) -> list[uuid.UUID]:
+        """Matching entities in the order they started matching."""
+        return self._cached_lists()[0]
+
+    @property
+    def components(self) -> list[tuple[Any, ...]]:
+        """Component tuples of the matching entities, same order as :attr:`entities`."""
+        return self._cached_lists()[1]
+
+    def column(self, index_or_type: int | type[Component]) -> list[Any]:
+        """All matching components of one type (by position in ``component_types`` or by type)."""
+        i = index_or_type if isinstance(index_or_type, int) else self.component_types.index(index_or_type)
+        return [c[i] for c in self._cached_lists()[1]]
+
+    def __len__(self) -> int:
+        return len(self._members)
+
+    def matches(self, component_types: Iterable[type]) -> bool:
+        have = set(component_types)
+        return all(t in have for t in self.component_types)
+
+    # --- called by the scene --------------------------------------------------------------------
+    def _add_member(self, entity: uuid.UUID, components: tuple[Any, ...]) -> None:
+        self._members[entity] = components
+        self._lists = None
+        self.on_create_entity(entity, components)
+
+    def _remove_member(self, entity: uuid.UUID) -> None:
+        components = self._members.pop(entity)
+        self._lists = None
+        self.on_remove_entity(entity, components)
+
+    def _cached_lists(self) -> tuple[list[uuid.UUID], list[tuple[Any, ...]]]:
+        # Rebuilt lazily after membership changed: iteration stays cheap every other frame.
+        if self._lists is None:
+            self._lists = (list(self._members.keys()), list(self._members.values()))
+        return self._lists

@@ -1,0 +1,250 @@
+"""Affine 4x4 transforms: build (T @ R @ S), take apart, invert, derive normal and view matrices.
+
+Matrices are row-major float64 numpy arrays acting on column vectors (p' = M @ p); the world is right-handed
+with +Y up and a camera looks down its -Z axis. Batch forms take (N, ...) arrays and loop in numpy only.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from .quaternion import _checked, quat_from_matrix3, quat_to_matrix3
+
+# |forward x up| below this (both unit vectors) counts as "up is parallel to the view direction".
+_PARALLEL_UP = 1e-6
+# |det| below this fraction of the product of column lengths counts as singular: the fraction is
+# scale-invariant, so uniformly tiny (1e-6) or huge (1e6) scales still invert.
+_SINGULAR_RATIO = 1e-12
+
+
+def translation(t: ArrayLike) -> np.ndarray:
+    """4x4 matrix translating by the 3-vector `t`."""
+    m = np.eye(4)
+    m[:3, 3] = _vec3(t, "t")
+    return m
+
+
+def scaling(s: ArrayLike) -> np.ndarray:
+    """4x4 matrix scaling by `s`: a scalar (uniform) or a 3-vector (per axis)."""
+    m = np.eye(4)
+    m[:3, :3] = np.diag(_scale3(s))
+    return m
+
+
+def rotation(q: ArrayLike) -> np.ndarray:
+    """4x4 matrix rotating by the quaternion `q` (w, x, y, z)."""
+    m = np.eye(4)
+    m[:3, :3] = quat_to_matrix3(_quat(q))
+    return m
+
+
+def trs(t: ArrayLike, q: ArrayLike, s: ArrayLike) -> np.ndarray:
+    """The model matrix T @ R @ S: scale by `s`, then rotate by `q`, then translate by `t`."""
+    m = np.eye(4)
+    # R @ diag(s) scales the columns of R; no need for two matrix products.
+    m[:3, :3] = quat_to_matrix3(_quat(q)) * _scale3(s)
+    m[:3, 3] = _vec3(t, "t")
+    return m
+
+
+def trs_batch(t: ArrayLike, q: ArrayLike, s: ArrayLike, out: np.ndarray | None = None) -> np.ndarray:
+    """Model matrices T @ R @ S for N entities at once: t (N, 3), q (N, 4), s (N, 3) -> (N, 4, 4).
+
+    Pass a float64 (N, 4, 4) array as `out` to reuse it from frame to frame instead of allocating.
+    """
+    qq = _checked(q, "q", (4,)).reshape(-1, 4)
+    n = qq.shape[0]
+    tt = _checked(t, "t", (3,))
+    ss = _checked(s, "s", (3,))
+    if tt.shape != (n, 3) or ss.shape != (n, 3):
+        raise ValueError(f"t and s must have shape ({n}, 3) to match q {qq.shape}, got {tt.shape} and {ss.shape}")
+    if out is None:
+        out = np.empty((n, 4, 4))
+    elif out.shape != (n, 4, 4) or out.dtype != np.float64:
+        raise ValueError(f"out must be a float64 array of shape ({n}, 4, 4), got {out.dtype} {out.shape}")
+    np.multiply(quat_to_matrix3(qq), ss[:, None, :], out=out[:, :3, :3])
+    out[:, :3, 3] = tt
+    out[:, 3, :3] = 0.0
+    out[:, 3, 3] = 1.0
+    return out
+
+
+def decompose_trs(m: ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Split an affine matrix without shear into (t, q, s) with `trs(t, q, s)` equal to `m`.
+
+    A mirroring matrix (negative determinant) comes back with the x scale negative. A zero scale axis
+    carries no rotation information: that part of the rotation is filled in from the identity, so the
+    result is still a unit quaternion (never NaN).
+    """
+    mm = _affine(m, "m")
+    a = mm[:3, :3]
+    s = np.linalg.norm(a, axis=0)
+    valid = s > 0.0
+    cols = np.zeros((3, 3))
+    cols[:, valid] = a[:, valid] / s[valid]
+    if not np.all(valid):
+        _complete_basis(cols, valid)
+    if np.linalg.det(cols) < 0.0:
+        # Mirror: flip one axis of the rotation and its scale. Prefer a zero-scale axis, whose sign is
+        # free, so the scale signs stay as they were.
+        if np.all(valid):
+            cols[:, 0] = -cols[:, 0]
+            s[0] = -s[0]
+        else:
+            axis = np.flatnonzero(~valid)[-1]
+            cols[:, axis] = -cols[:, axis]
+    return mm[:3, 3].copy(), quat_from_matrix3(cols), s
+
+
+def invert_affine(m: ArrayLike) -> np.ndarray:
+    """Inverse of an affine 4x4 matrix (last row 0, 0, 0, 1); ValueError if it is singular (a zero scale).
+
+    The inverse of the 3x3 part is built from cross products of its columns (adjugate / determinant),
+    which keeps full relative precision for scales far from 1 (1e-6, 1e6) where elimination would not.
+    """
+    mm = _affine(m, "m")
+    a = mm[:3, :3]
+    c0, c1, c2 = a[:, 0], a[:, 1], a[:, 2]
+    rows = np.stack([np.cross(c1, c2), np.cross(c2, c0), np.cross(c0, c1)])
+    det = float(np.dot(c0, rows[0]))
+    lengths = float(np.prod(np.linalg.norm(a, axis=0)))
+    if not np.isfinite(det) or lengths == 0.0 or abs(det) <= _SINGULAR_RATIO * lengths:
+        raise ValueError(f"m is singular (a zero scale or collapsed axis, determinant {det:g}); it has no inverse")
+    inv = np.eye(4)
+    inv[:3, :3] = rows / det
+    inv[:3, 3] = -inv[:3, :3] @ mm[:3, 3]
+    return inv
+
+
+def normal_matrix(m: ArrayLike) -> np.ndarray:
+    """3x3 matrix that transforms surface normals under `m` (renormalise the result per normal).
+
+    It is the cofactor matrix of the upper 3x3 (det * inverse-transpose), scaled so its largest entry
+    has magnitude 1 and signed like the determinant: the same directions as the inverse-transpose,
+    but finite for zero or extreme scales. A fully collapsed matrix gives zeros, never NaN or Inf.
+    """
+    return normal_matrix_batch(_mat4(m, "m")[None])[0]
+
+
+def normal_matrix_batch(ms: ArrayLike) -> np.ndarray:
+    """`normal_matrix` for a stack of matrices: (N, 4, 4) -> (N, 3, 3)."""
+    mm = _checked(ms, "ms", (4, 4)).reshape(-1, 4, 4)
+    a = mm[:, :3, :3]
+    # Scale each matrix to entries <= 1 first so the cross products cannot overflow or underflow.
+    peak = np.max(np.abs(a), axis=(1, 2), keepdims=True)
+    a = a / np.where(peak > 0.0, peak, 1.0)
+    c0, c1, c2 = a[:, :, 0], a[:, :, 1], a[:, :, 2]
+    cof = np.stack([np.cross(c1, c2), np.cross(c2, c0), np.cross(c0, c1)], axis=-1)
+    det = np.einsum("ni,ni->n", c0, cof[:, :, 0])
+    cof_peak = np.max(np.abs(cof), axis=(1, 2))
+    scale = np.where(det < 0.0, -1.0, 1.0) / np.where(cof_peak > 0.0, cof_peak, 1.0)
+    return cof * scale[:, None, None]
+
+
+def look_at(eye: ArrayLike, target: ArrayLike, up: ArrayLike = (0.0, 1.0, 0.0)) -> np.ndarray:
+    """View matrix (world -> camera) of a camera at `eye` looking at `target`, its top towards `up`.
+
+    If `up` is (nearly) parallel to the view direction, a fixed fallback is used instead: for the usual
+    +Y up, a camera looking straight down gets -Z as its top and one looking straight up gets +Z, the
+    orientation it would reach by pitching there from the default view.
+    """
+    e = _vec3(eye, "eye")
+    right, true_up, forward = _camera_basis(e, _vec3(target, "target"), _vec3(up, "up"))
+    view = np.eye(4)
+    view[0, :3], view[1, :3], view[2, :3] = right, true_up, -forward
+    view[:3, 3] = -view[:3, :3] @ e
+    return view
+
+
+def look_at_rotation(eye: ArrayLike, target: ArrayLike, up: ArrayLike = (0.0, 1.0, 0.0)) -> np.ndarray:
+    """Quaternion that orients a camera (looking down its local -Z, +Y up) from `eye` towards `target`.
+
+    It is the rotation part of the camera's world transform, i.e. the inverse of `look_at`'s rotation.
+    """
+    right, true_up, forward = _camera_basis(_vec3(eye, "eye"), _vec3(target, "target"), _vec3(up, "up"))
+    return quat_from_matrix3(np.stack([right, true_up, -forward], axis=1))
+
+
+def _vec3(value: ArrayLike, name: str) -> np.ndarray:
+    """`value` as a finite float64 3-vector."""
+    arr = _checked(value, name, (3,))
+    if arr.ndim != 1:
+        raise ValueError(f"{name} must have shape (3,), got {arr.shape}")
+    return arr
+
+
+def _scale3(s: ArrayLike) -> np.ndarray:
+    """A scale given as a scalar or a 3-vector, as a finite 3-vector."""
+    arr = np.asarray(s, dtype=np.float64)
+    return _vec3(np.full(3, arr) if arr.ndim == 0 else arr, "s")
+
+
+def _quat(q: ArrayLike) -> np.ndarray:
+    """`q` as a finite float64 quaternion of shape (4,)."""
+    arr = _checked(q, "q", (4,))
+    if arr.ndim != 1:
+        raise ValueError(f"q must have shape (4,), got {arr.shape}")
+    return arr
+
+
+def _mat4(m: ArrayLike, name: str) -> np.ndarray:
+    """`m` as a finite float64 matrix of shape (4, 4)."""
+    mm = _checked(m, name, (4, 4))
+    if mm.ndim != 2:
+        raise ValueError(f"{name} must have shape (4, 4), got {mm.shape}")
+    return mm
+
+
+def _affine(m: ArrayLike, name: str) -> np.ndarray:
+    """`m` as a finite 4x4 matrix whose last row is (0, 0, 0, 1)."""
+    mm = _mat4(m, name)
+    if not np.array_equal(mm[3], [0.0, 0.0, 0.0, 1.0]):
+        raise ValueError(f"{name} is not affine: its last row is {mm[3]}, expected (0, 0, 0, 1)")
+    return mm
+
+
+def _complete_basis(cols: np.ndarray, valid: np.ndarray) -> None:
+    """Fill the columns of `cols` not marked `valid` so that all three are orthonormal (in place).
+
+    Missing columns start from the matching identity axis (then the others, in order) and are
+    Gram-Schmidt-orthogonalised against the columns already there; handedness is fixed by the caller.
+    """
+    done = [int(i) for i in np.flatnonzero(valid)]
+    for i in np.flatnonzero(~valid):
+        for k in (i, (i + 1) % 3, (i + 2) % 3):
+            v = np.eye(3)[k]
+            for j in done:
+                v = v - np.dot(cols[:, j], v) * cols[:, j]
+            length = np.linalg.norm(v)
+            # Any identity axis not within ~35 degrees of the span so far gives a well-conditioned column.
+            if length > 0.5:
+                cols[:, i] = v / length
+                done.append(int(i))
+                break
+
+
+def _camera_basis(eye: np.ndarray, target: np.ndarray, up: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Orthonormal (right, up, forward) of a camera at `eye` looking at `target`."""
+    d = target - eye
+    d_peak = np.max(np.abs(d))
+    if d_peak == 0.0:
+        raise ValueError(f"target must differ from eye, both are {tuple(eye.tolist())}")
+    # Normalise after dividing by the largest component so huge or tiny distances neither overflow nor underflow.
+    forward = d / d_peak
+    forward /= np.linalg.norm(forward)
+    up_peak = np.max(np.abs(up))
+    if up_peak == 0.0:
+        raise ValueError("up must be a non-zero vector, got (0, 0, 0)")
+    up_dir = up / up_peak
+    up_dir /= np.linalg.norm(up_dir)
+    right = np.cross(forward, up_dir)
+    if np.linalg.norm(right) < _PARALLEL_UP:
+        # Use the world axis most perpendicular to up (ties prefer Z, then X), signed so that looking
+        # along +up or -up continues smoothly from pitching up or down towards it.
+        k = (2, 0, 1)[int(np.argmin(np.abs(up_dir[[2, 0, 1]])))]
+        helper = np.eye(3)[k] - up_dir[k] * up_dir
+        helper /= np.linalg.norm(helper)
+        right = np.cross(forward, np.sign(np.dot(forward, up_dir)) * helper)
+    right /= np.linalg.norm(right)
+    return right, np.cross(right, forward), forward

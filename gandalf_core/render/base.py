@@ -1,0 +1,77 @@
+"""What both backends' renderers offer the app and the render system.
+
+A renderer owns a GPU context, an offscreen sRGB colour target plus depth, and (optionally) a window
+to present to. Every frame is drawn offscreen first, in a window too, so captures, tests and windows
+share one render path.
+"""
+
+from __future__ import annotations
+
+from abc import ABC, abstractmethod
+from collections import Counter
+from pathlib import Path
+
+import numpy as np
+
+BACKENDS = ("opengl", "webgpu")
+
+
+class UnknownBackendError(ValueError):
+    """A backend name that is neither 'opengl' nor 'webgpu'."""
+
+
+def check_backend(name: str) -> str:
+    """Return the canonical backend name or raise UnknownBackendError listing the valid ones."""
+    key = str(name).lower().replace("-", "").replace("_", "")
+    aliases = {"opengl": "opengl", "gl": "opengl", "moderngl": "opengl", "webgpu": "webgpu", "wgpu": "webgpu"}
+    if key not in aliases:
+        raise UnknownBackendError(f"unknown backend {name!r}: choose one of {', '.join(BACKENDS)}")
+    return aliases[key]
+
+
+class Renderer(ABC):
+    """Backend-neutral face of a render context."""
+
+    backend: str
+    #: NDC depth range of this API, passed to the projection functions.
+    depth_range: str
+
+    def __init__(self, width: int, height: int) -> None:
+        if int(width) <= 0 or int(height) <= 0:
+            raise ValueError(f"render target size must be positive, got {width}x{height}")
+        self.width, self.height = int(width), int(height)
+        #: Counters the tests and benchmarks read: draw calls of the last frame, objects created.
+        self.stats: Counter[str] = Counter()
+
+    @property
+    def aspect(self) -> float:
+        return self.width / self.height
+
+    @abstractmethod
+    def begin_frame(self, clear_color_linear: np.ndarray) -> None:
+        """Start a frame by clearing the offscreen target (colour in linear light, RGBA)."""
+
+    @abstractmethod
+    def end_frame(self) -> None:
+        """Submit the frame and present it to the window, if there is one."""
+
+    @abstractmethod
+    def read_pixels(self) -> np.ndarray:
+        """The last frame as a ``(height, width, 4)`` uint8 array, top row first, sRGB-encoded."""
+
+    @abstractmethod
+    def resize(self, width: int, height: int) -> None:
+        """Recreate the size-dependent targets."""
+
+    @abstractmethod
+    def release(self) -> None:
+        """Free every GPU object this renderer created."""
+
+    def save_png(self, path: str | Path) -> Path:
+        """Write the last frame to a PNG file."""
+        from PIL import Image
+
+        path = Path(path)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        Image.fromarray(self.read_pixels(), "RGBA").save(path)
+        return path

@@ -1,0 +1,5 @@
+"""The OpenGL (moderngl) backend."""
+
+from .renderer import OpenGLRenderer
+
+__all__ = ["OpenGLRenderer"]

@@ -1,0 +1,5 @@
+"""The WebGPU (wgpu-py) backend."""
+
+from .renderer import WebGPURenderer
+
+__all__ = ["WebGPURenderer"]

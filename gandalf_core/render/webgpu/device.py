@@ -1,0 +1,31 @@
+"""Getting a wgpu adapter and device, offscreen or for a window surface."""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from typing import Any
+
+import wgpu
+
+
+def _quiet_runtime_dir() -> None:
+    # lavapipe warns when XDG_RUNTIME_DIR is unset; a private mode-700 folder silences it.
+    if "XDG_RUNTIME_DIR" not in os.environ:
+        path = os.path.join(tempfile.gettempdir(), f"gandalf-xdg-{os.getuid()}")
+        os.makedirs(path, mode=0o700, exist_ok=True)
+        os.environ["XDG_RUNTIME_DIR"] = path
+
+
+def request_device(canvas_context: Any = None) -> tuple[Any, Any]:
+    """Return ``(adapter, device)``; with a canvas context the adapter must be able to present to it."""
+    _quiet_runtime_dir()
+    if canvas_context is not None:
+        adapter = wgpu.gpu.request_adapter_sync(canvas=canvas_context, power_preference="high-performance")
+    else:
+        adapter = wgpu.gpu.request_adapter_sync(power_preference="high-performance")
+    if adapter is None:
+        raise RuntimeError(
+            "no WebGPU adapter found: install a Vulkan driver (on Debian: mesa-vulkan-drivers libvulkan1)"
+        )
+    return adapter, adapter.request_device_sync()

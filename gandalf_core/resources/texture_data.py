@@ -1,0 +1,405 @@
+"""Backend-neutral texture data: RGBA8 pixels plus how they are sampled.
+
+Pixels are stored **top row first** (row 0 is the top of the image, as in every image file). Both render
+backends upload the rows in this order, so texture coordinate (0, 0) samples the top-left texel in OpenGL and
+in WebGPU alike (see :mod:`gandalf_core.resources.primitives` for the matching UV convention).
+
+Colour textures hold sRGB-encoded values (``srgb=True``, the default): the GPU decodes them to linear light when
+sampling. Data textures (normal maps, roughness, noise used as data) set ``srgb=False`` and are read as stored.
+
+Pillow is imported only when a file is read or written.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from gandalf_core.resources.errors import ResourceError
+
+WRAP_MODES = ("repeat", "clamp", "mirror")
+FILTER_MODES = ("linear", "nearest")
+CUBE_FACE_NAMES = ("+X", "-X", "+Y", "-Y", "+Z", "-Z")
+
+_ARRAY_SHAPES = "(H, W), (H, W, 3) or (H, W, 4)"
+# Float input may overshoot [0, 1] by rounding error of the caller's maths; more than this is a real mistake.
+_FLOAT_SLACK = 1e-6
+
+
+def srgb_to_linear(values: np.ndarray) -> np.ndarray:
+    """Decode sRGB-encoded values in [0, 1] to linear light (float64), per IEC 61966-2-1."""
+    v = np.asarray(values, dtype=np.float64)
+    return np.where(v <= 0.04045, v / 12.92, ((v + 0.055) / 1.055) ** 2.4)
+
+
+def linear_to_srgb(values: np.ndarray) -> np.ndarray:
+    """Encode linear-light values in [0, 1] to sRGB (float64); inputs are clipped to [0, 1] first."""
+    v = np.clip(np.asarray(values, dtype=np.float64), 0.0, 1.0)
+    return np.where(v <= 0.0031308, v * 12.92, 1.055 * v ** (1.0 / 2.4) - 0.055)
+
+
+def _label(kind: str, name: str) -> str:
+    return f"{kind} '{name}'"
+
+
+def _check_settings(label: str, wrap: str, filter: str) -> None:
+    if wrap not in WRAP_MODES:
+        allowed = ", ".join(repr(m) for m in WRAP_MODES)
+        raise ResourceError(label, "wrap", f"{wrap!r} is not one of {allowed}")
+    if filter not in FILTER_MODES:
+        allowed = ", ".join(repr(m) for m in FILTER_MODES)
+        raise ResourceError(label, "filter", f"{filter!r} is not one of {allowed}")
+
+
+def _check_rgba8(label: str, field: str, pixels: Any) -> np.ndarray:
+    """Validate an (H, W, 4) uint8 array and return a private, read-only, C-contiguous copy."""
+    if not isinstance(pixels, np.ndarray):
+        raise ResourceError(label, field, f"expected a numpy array, got {type(pixels).__name__}")
+    if pixels.dtype != np.uint8 or pixels.ndim != 3 or pixels.shape[2] != 4:
+        raise ResourceError(
+            label,
+            field,
+            f"expected a uint8 array of shape (H, W, 4), got {pixels.dtype} {pixels.shape} "
+            "(use from_array to convert other shapes and dtypes)",
+        )
+    if pixels.shape[0] < 1 or pixels.shape[1] < 1:
+        raise ResourceError(label, field, f"image is empty: shape {pixels.shape}")
+    # A copy keeps later edits of the caller's array out of a texture that may already be cached on the GPU.
+    owned = np.array(pixels, dtype=np.uint8, order="C", copy=True)
+    owned.flags.writeable = False
+    return owned
+
+
+def _to_rgba8(label: str, arr: Any) -> np.ndarray:
+    """Convert (H, W), (H, W, 3) or (H, W, 4) uint8/integer/float arrays to (H, W, 4) uint8."""
+    a = np.asarray(arr)
+    if a.ndim not in (2, 3) or (a.ndim == 3 and a.shape[2] not in (3, 4)):
+        raise ResourceError(label, "pixels", f"shape {a.shape} is not one of {_ARRAY_SHAPES}")
+    if a.shape[0] < 1 or a.shape[1] < 1:
+        raise ResourceError(label, "pixels", f"image is empty: shape {a.shape}")
+    if a.dtype == np.uint8:
+        a8 = a
+    elif a.dtype.kind == "f":
+        finite = np.isfinite(a)
+        if not finite.all():
+            bad = tuple(int(i) for i in np.argwhere(~finite)[0])
+            raise ResourceError(label, "pixels", f"value at index {bad} is {a[bad]} (NaN/Inf is not a colour)")
+        lo, hi = float(a.min()), float(a.max())
+        if lo < -_FLOAT_SLACK or hi > 1.0 + _FLOAT_SLACK:
+            raise ResourceError(label, "pixels", f"float values must lie in [0, 1], found [{lo:g}, {hi:g}]")
+        a8 = np.rint(np.clip(a.astype(np.float64), 0.0, 1.0) * 255.0).astype(np.uint8)
+    elif a.dtype.kind in "iu":
+        lo, hi = int(a.min()), int(a.max())
+        if lo < 0 or hi > 255:
+            raise ResourceError(label, "pixels", f"integer values must lie in [0, 255], found [{lo}, {hi}]")
+        a8 = a.astype(np.uint8)
+    else:
+        raise ResourceError(label, "pixels", f"dtype {a.dtype} is not uint8, integer or float")
+    if a8.ndim == 2:
+        a8 = np.repeat(a8[:, :, None], 3, axis=2)
+    if a8.shape[2] == 3:
+        alpha = np.full(a8.shape[:2] + (1,), 255, dtype=np.uint8)
+        a8 = np.concatenate([a8, alpha], axis=2)
+    return np.ascontiguousarray(a8)
+
+
+def _box_weights(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Taps for reducing ``n`` texels to ``max(1, n // 2)`` with an exact box (area) filter.
+
+    Output texel ``i`` covers the source interval ``[i*r, (i+1)*r)`` with ``r = n / m``; each source texel
+    contributes the length of its overlap. For even ``n`` this is the plain 2-texel average; for odd ``n`` a
+    footprint of 2.5 or 3 texels, so no source texel is dropped (a plain 2x2 average would skip the last one).
+    Returns ``(indices (m, 4), weights (m, 4))``.
+    """
+    m = max(1, n // 2)
+    r = n / m
+    start = np.floor(np.arange(m) * r).astype(np.int64)
+    idx = start[:, None] + np.arange(4)[None, :]
+    lo = np.arange(m)[:, None] * r
+    hi = lo + r
+    overlap = np.clip(np.minimum(idx + 1, hi) - np.maximum(idx, lo), 0.0, None)
+    overlap[idx >= n] = 0.0
+    return np.minimum(idx, n - 1), overlap / r
+
+
+def _reduce_axis(img: np.ndarray, axis: int) -> np.ndarray:
+    idx, w = _box_weights(img.shape[axis])
+    out = 0.0
+    for k in range(idx.shape[1]):
+        taps = np.take(img, idx[:, k], axis=axis)
+        shape = [1] * img.ndim
+        shape[axis] = w.shape[0]
+        out = out + taps * w[:, k].reshape(shape)
+    return out
+
+
+def _mip_chain(pixels: np.ndarray, srgb: bool) -> list[np.ndarray]:
+    """Box-filtered mip levels of (..., H, W, 4) uint8 pixels, averaged in linear light when ``srgb``."""
+    levels = [pixels]
+    h, w = pixels.shape[-3], pixels.shape[-2]
+    count = max(h, w).bit_length()
+    # Work on a float chain so rounding to 8 bits happens once per level, not accumulated over levels.
+    current = pixels.astype(np.float64) / 255.0
+    if srgb:
+        current[..., :3] = srgb_to_linear(current[..., :3])
+    for _ in range(count - 1):
+        current = _reduce_axis(_reduce_axis(current, current.ndim - 3), current.ndim - 2)
+        encoded = current.copy()
+        if srgb:
+            encoded[..., :3] = linear_to_srgb(encoded[..., :3])  # alpha is never sRGB-encoded
+        levels.append(np.ascontiguousarray(np.rint(np.clip(encoded, 0.0, 1.0) * 255.0).astype(np.uint8)))
+    return levels
+
+
+def _read_image_rgba8(path: str | Path, label: str) -> np.ndarray:
+    """Read an image file with Pillow and convert it to (H, W, 4) uint8, top row first."""
+    from PIL import Image, ImageOps
+
+    p = Path(path)
+    if not p.is_file():
+        raise ResourceError(label, "path", f"file not found: {str(p)!r}")
+    try:
+        with Image.open(p) as img:
+            img.load()
+            img = ImageOps.exif_transpose(img)  # photos store their rotation in EXIF; textures want pixels
+            mode = img.mode
+            if mode == "F":
+                # 32-bit float images have no agreed range (0..1? 0..255? HDR?): converting silently would
+                # guess. Read them with Pillow/numpy and call TextureData.from_array with explicit scaling.
+                raise ResourceError(
+                    label, "mode", f"{str(p)!r} has mode 'F' (32-bit float); scale it yourself and use from_array"
+                )
+            if mode.startswith("I"):
+                # 16-bit greyscale ('I;16*'), or 'I' (32-bit int) which Pillow also uses for 16-bit PNGs.
+                grey = np.asarray(img).astype(np.int64)
+                if grey.size and (grey.min() < 0 or grey.max() > 65535):
+                    raise ResourceError(
+                        label, "mode", f"{str(p)!r} has mode {mode!r} with values outside the 16-bit range"
+                    )
+                grey8 = ((grey * 255 + 32767) // 65535).astype(np.uint8)
+                return _to_rgba8(label, grey8)
+            try:
+                rgba = img.convert("RGBA")
+            except ValueError as exc:
+                raise ResourceError(label, "mode", f"{str(p)!r}: cannot convert mode {mode!r} to RGBA: {exc}") from exc
+            return np.array(rgba, dtype=np.uint8, order="C")
+    except ResourceError:
+        raise
+    except (OSError, ValueError, SyntaxError, Image.DecompressionBombError) as exc:
+        raise ResourceError(label, "path", f"cannot read image {str(p)!r}: {exc}") from exc
+
+
+def _write_png(pixels: np.ndarray, path: str | Path, label: str) -> None:
+    from PIL import Image
+
+    try:
+        Image.fromarray(np.ascontiguousarray(pixels), mode="RGBA").save(Path(path), format="PNG")
+    except OSError as exc:
+        raise ResourceError(label, "path", f"cannot write PNG {str(path)!r}: {exc}") from exc
+
+
+@dataclass(frozen=True, eq=False)
+class TextureData:
+    """An RGBA8 image (top row first) plus its sampling settings.
+
+    ``pixels`` is a read-only, C-contiguous ``uint8`` array of shape (H, W, 4). The constructor takes exactly
+    that; :meth:`from_array` and :meth:`from_file` convert other inputs. Instances are immutable: derive a new
+    one with :func:`dataclasses.replace` to change a setting.
+    """
+
+    pixels: np.ndarray
+    srgb: bool = True
+    wrap: str = "repeat"
+    filter: str = "linear"
+    mipmaps: bool = True
+    name: str = "texture"
+
+    def __post_init__(self) -> None:
+        label = _label("texture", self.name)
+        _check_settings(label, self.wrap, self.filter)
+        object.__setattr__(self, "pixels", _check_rgba8(label, "pixels", self.pixels))
+        object.__setattr__(self, "srgb", bool(self.srgb))
+        object.__setattr__(self, "mipmaps", bool(self.mipmaps))
+
+    @classmethod
+    def from_array(cls, arr: Any, **settings: Any) -> TextureData:
+        """Build a texture from (H, W) grey, (H, W, 3) RGB or (H, W, 4) RGBA data, top row first.
+
+        ``uint8`` (and other integer arrays with values in 0..255) are taken as is; float arrays must hold values
+        in [0, 1] and are scaled by 255 with rounding. NaN/Inf or out-of-range values raise :class:`ResourceError`.
+        ``settings`` are the sampling fields (srgb, wrap, filter, mipmaps, name).
+        """
+        name = settings.get("name", "texture")
+        return cls(_to_rgba8(_label("texture", name), arr), **settings)
+
+    @classmethod
+    def from_file(cls, path: str | Path, **settings: Any) -> TextureData:
+        """Load an image file with Pillow; the texture's name defaults to the file name.
+
+        Every 8-bit mode Pillow can convert (L, LA, P with transparency, RGB, RGBA, CMYK, YCbCr, 1, ...) becomes
+        RGBA8. 16-bit greyscale ('I;16', and 'I' with values in 0..65535) is scaled to 8 bits with rounding.
+        Float images (mode 'F') are **rejected**: their value range is unknown, so the caller scales them and uses
+        :meth:`from_array`. Animated files give their first frame; EXIF rotation is applied.
+        """
+        settings.setdefault("name", Path(path).name)
+        return cls(_read_image_rgba8(path, _label("texture", settings["name"])), **settings)
+
+    @property
+    def width(self) -> int:
+        """Width in texels."""
+        return int(self.pixels.shape[1])
+
+    @property
+    def height(self) -> int:
+        """Height in texels."""
+        return int(self.pixels.shape[0])
+
+    @property
+    def mip_levels(self) -> int:
+        """Number of mip levels: ``floor(log2(max(w, h))) + 1`` with mipmaps, else 1."""
+        return max(self.width, self.height).bit_length() if self.mipmaps else 1
+
+    def mip_chain(self) -> list[np.ndarray]:
+        """All mip levels as (h, w, 4) uint8 arrays, level 0 first.
+
+        Each level halves both sizes (rounding down, never below 1), the WebGPU/OpenGL rule. Texels are box
+        filtered over their exact footprint (odd sizes included); sRGB textures are averaged in linear light so
+        distant textures do not darken. Without mipmaps the chain is just level 0.
+        """
+        if not self.mipmaps:
+            return [self.pixels]
+        return _mip_chain(self.pixels, self.srgb)
+
+    def save_png(self, path: str | Path) -> None:
+        """Write level 0 as an RGBA PNG (for debugging and reference images)."""
+        _write_png(self.pixels, path, _label("texture", self.name))
+
+
+def cube_face_directions(size: int) -> np.ndarray:
+    """Unit view directions through the texel centres of the six cube faces, shape (6, size, size, 3).
+
+    This is the cube-map convention shared by OpenGL, Vulkan and WebGPU. For a direction ``(x, y, z)`` the
+    face is chosen by the largest component ``ma``, then ``s = (sc/|ma| + 1) / 2`` and
+    ``t = (tc/|ma| + 1) / 2`` address the face image, with ``t = 0`` its first (top) row:
+
+    ====  =====  =====
+    face  sc     tc
+    ====  =====  =====
+    +X    -z     -y
+    -X    +z     -y
+    +Y    +x     +z
+    -Y    +x     -z
+    +Z    +x     -y
+    -Z    -x     -y
+    ====  =====  =====
+
+    So the side faces have +Y at their top row, +Y's top row faces -Z and -Y's top row faces +Z.
+    """
+    c = (np.arange(size, dtype=np.float64) + 0.5) / size * 2.0 - 1.0
+    tc, sc = np.meshgrid(c, c, indexing="ij")  # rows walk t, columns walk s
+    one = np.ones_like(sc)
+    faces = [
+        (one, -tc, -sc),  # +X
+        (-one, -tc, sc),  # -X
+        (sc, one, tc),  # +Y
+        (sc, -one, -tc),  # -Y
+        (sc, -tc, one),  # +Z
+        (-sc, -tc, -one),  # -Z
+    ]
+    dirs = np.stack([np.stack(f, axis=-1) for f in faces])
+    return dirs / np.linalg.norm(dirs, axis=-1, keepdims=True)
+
+
+@dataclass(frozen=True, eq=False)
+class CubeTextureData:
+    """Six square RGBA8 faces of equal size, in the order +X, -X, +Y, -Y, +Z, -Z (see :data:`CUBE_FACE_NAMES`).
+
+    The orientation of each face follows the OpenGL/WebGPU cube-map convention documented in
+    :func:`cube_face_directions`; with faces stored top row first, both backends sample them identically.
+    Cube maps always clamp at their edges, so there is no ``wrap`` setting.
+    """
+
+    faces: tuple[np.ndarray, ...]
+    srgb: bool = True
+    filter: str = "linear"
+    mipmaps: bool = True
+    name: str = "cubemap"
+
+    def __post_init__(self) -> None:
+        label = _label("cube texture", self.name)
+        _check_settings(label, "clamp", self.filter)
+        faces = tuple(self.faces)
+        if len(faces) != 6:
+            raise ResourceError(label, "faces", f"expected 6 faces ({', '.join(CUBE_FACE_NAMES)}), got {len(faces)}")
+        checked = tuple(_check_rgba8(label, f"faces[{face}]", f) for face, f in zip(CUBE_FACE_NAMES, faces))
+        for face, f in zip(CUBE_FACE_NAMES, checked):
+            if f.shape[0] != f.shape[1]:
+                raise ResourceError(label, f"faces[{face}]", f"face must be square, got {f.shape[1]}x{f.shape[0]}")
+            if f.shape != checked[0].shape:
+                raise ResourceError(
+                    label,
+                    f"faces[{face}]",
+                    f"size {f.shape[1]}x{f.shape[0]} differs from face +X ({checked[0].shape[1]}x{checked[0].shape[0]})",
+                )
+        object.__setattr__(self, "faces", checked)
+        object.__setattr__(self, "srgb", bool(self.srgb))
+        object.__setattr__(self, "mipmaps", bool(self.mipmaps))
+
+    @classmethod
+    def from_arrays(cls, faces: Sequence[Any], **settings: Any) -> CubeTextureData:
+        """Build from six arrays accepted by :meth:`TextureData.from_array`, in +X, -X, +Y, -Y, +Z, -Z order."""
+        label = _label("cube texture", settings.get("name", "cubemap"))
+        if len(faces) != 6:
+            raise ResourceError(label, "faces", f"expected 6 faces ({', '.join(CUBE_FACE_NAMES)}), got {len(faces)}")
+        converted = []
+        for face, arr in zip(CUBE_FACE_NAMES, faces):
+            try:
+                converted.append(_to_rgba8(label, arr))
+            except ResourceError as exc:
+                raise ResourceError(label, f"faces[{face}]", exc.detail) from exc
+        return cls(tuple(converted), **settings)
+
+    @classmethod
+    def from_files(cls, paths: Sequence[str | Path], **settings: Any) -> CubeTextureData:
+        """Load six image files, in +X, -X, +Y, -Y, +Z, -Z order (same conversions as ``TextureData.from_file``)."""
+        settings.setdefault("name", Path(paths[0]).stem if len(paths) else "cubemap")
+        label = _label("cube texture", settings["name"])
+        if len(paths) != 6:
+            raise ResourceError(label, "faces", f"expected 6 files ({', '.join(CUBE_FACE_NAMES)}), got {len(paths)}")
+        return cls(tuple(_read_image_rgba8(p, label) for p in paths), **settings)
+
+    @property
+    def size(self) -> int:
+        """Edge length of each face in texels."""
+        return int(self.faces[0].shape[0])
+
+    @property
+    def pixels(self) -> np.ndarray:
+        """All faces stacked as one (6, size, size, 4) uint8 array, ready for a layered upload."""
+        return np.stack(self.faces)
+
+    @property
+    def mip_levels(self) -> int:
+        """Number of mip levels: ``floor(log2(size)) + 1`` with mipmaps, else 1."""
+        return self.size.bit_length() if self.mipmaps else 1
+
+    def mip_chain(self) -> list[np.ndarray]:
+        """All mip levels as (6, s, s, 4) uint8 arrays, level 0 first (same filtering as TextureData)."""
+        if not self.mipmaps:
+            return [self.pixels]
+        return _mip_chain(self.pixels, self.srgb)
+
+    def save_png(self, path: str | Path) -> None:
+        """Write the faces as a horizontal cross (4x3 faces, transparent gaps) PNG, for debugging."""
+        s = self.size
+        cross = np.zeros((3 * s, 4 * s, 4), dtype=np.uint8)
+        # (row, column) of each face in the usual unfolded cross: -X | +Z | +X | -Z across the middle.
+        cells = {"+X": (1, 2), "-X": (1, 0), "+Y": (0, 1), "-Y": (2, 1), "+Z": (1, 1), "-Z": (1, 3)}
+        for face, img in zip(CUBE_FACE_NAMES, self.faces):
+            r, c = cells[face]
+            cross[r * s : (r + 1) * s, c * s : (c + 1) * s] = img
+        _write_png(cross, path, _label("cube texture", self.name))

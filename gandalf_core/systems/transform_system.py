@@ -1,0 +1,109 @@
+"""The transform system: world matrices for every entity, parents before children, once per frame.
+
+All local matrices are built in one vectorised call (``trs_batch``); the hierarchy is then resolved
+level by level (every entity at depth *d* in one batched matrix product), so a child is always
+recomputed after any ancestor moved and 100k entities cost a few numpy calls.
+"""
+
+from __future__ import annotations
+
+import uuid
+import numpy as np
+
+from ..components import LinkComponent, TransformComponent
+from ..ecs import Scene, System
+from ..math import decompose_trs, invert_affine, quat_normalize, trs, trs_batch
+
+
+class TransformSystem(System):
+    """Writes ``TransformComponent.world`` for every entity that has a Transform."""
+
+    def __init__(self) -> None:
+        super().__init__([TransformComponent])
+        self._plan_key: tuple[int, int] | None = None
+        self._levels: list[tuple[np.ndarray, np.ndarray]] = []
+
+    def on_update_system(self, ts: float) -> None:
+        scene = self.scene
+        assert scene is not None
+        store = scene.store(TransformComponent)
+        n = store.count
+        if n == 0:
+            return
+        key = (scene.hierarchy_version, scene.membership_version)
+        if key != self._plan_key:
+            self._levels = self._plan(scene)
+            self._plan_key = key
+        q = store.column("quaternion")
+        norms = np.linalg.norm(q, axis=1, keepdims=True)
+        # Renormalise drifting quaternions; a zero quaternion (never valid) means "no rotation".
+        q_unit = np.where(norms > 1e-12, q / np.where(norms > 1e-12, norms, 1.0), np.array([1.0, 0, 0, 0]))
+        local = trs_batch(store.column("translation"), q_unit, store.column("scale"))
+        world = store.column("world")
+        world[:] = local
+        for rows, parent_rows in self._levels:
+            world[rows] = world[parent_rows] @ local[rows]
+
+    def _plan(self, scene: Scene) -> list[tuple[np.ndarray, np.ndarray]]:
+        """Group transform rows by hierarchy depth (depth ≥ 1 only; roots need no product)."""
+        row_of: dict[uuid.UUID, int] = {}
+        for entity, (transform,) in zip(self.entities, self.components):
+            row_of[entity] = transform._row
+        depth_cache: dict[uuid.UUID, int] = {}
+
+        def transformed_parent(entity: uuid.UUID) -> uuid.UUID | None:
+            # The nearest ancestor that has a Transform; ancestors without one count as identity.
+            parent = scene.parent_of(entity)
+            while parent is not None and parent not in row_of:
+                parent = scene.parent_of(parent)
+            return parent
+
+        def depth(entity: uuid.UUID) -> int:
+            chain: list[uuid.UUID] = []
+            node: uuid.UUID | None = entity
+            while node is not None and node not in depth_cache:
+                chain.append(node)
+                node = transformed_parent(node)
+            d = -1 if node is None else depth_cache[node]
+            for item in reversed(chain):  # iterative: a 1000-deep chain must not hit the recursion limit
+                d += 1
+                depth_cache[item] = d
+            return depth_cache[entity]
+
+        by_level: dict[int, tuple[list[int], list[int]]] = {}
+        for entity, row in row_of.items():
+            d = depth(entity)
+            if d == 0:
+                continue
+            parent = transformed_parent(entity)
+            rows, parents = by_level.setdefault(d, ([], []))
+            rows.append(row)
+            parents.append(row_of[parent])  # type: ignore[index]
+        return [
+            (np.array(rows, dtype=np.intp), np.array(parents, dtype=np.intp))
+            for _, (rows, parents) in sorted(by_level.items())
+        ]
+
+
+def world_matrix(scene: Scene, entity: uuid.UUID) -> np.ndarray:
+    """The entity's world matrix computed now from its ancestors' local transforms (no frame needed)."""
+    matrix = np.eye(4)
+    node: uuid.UUID | None = entity
+    while node is not None:
+        transform = scene.try_component(node, TransformComponent)
+        if transform is not None:
+            matrix = trs(transform.translation, quat_normalize(transform.quaternion), transform.scale) @ matrix
+        node = scene.parent_of(node)
+    return matrix
+
+
+def set_parent_keep_world(scene: Scene, entity: uuid.UUID, parent: uuid.UUID | None) -> None:
+    """Re-parent ``entity`` so that its world pose stays where it is (local TRS recomputed)."""
+    world = world_matrix(scene, entity)
+    if scene.try_component(entity, LinkComponent) is None:
+        scene.add_component(entity, LinkComponent(None))
+    scene.set_parent(entity, parent)
+    parent_world = world_matrix(scene, parent) if parent is not None else np.eye(4)
+    t, q, s = decompose_trs(invert_affine(parent_world) @ world)
+    transform = scene.get_component(entity, TransformComponent)
+    transform.translation, transform.quaternion, transform.scale = t, q, s

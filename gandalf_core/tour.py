@@ -1,0 +1,66 @@
+"""The course tour: every available step, in both APIs.
+
+``python -m gandalf_core.tour`` opens each step in a window when a display exists; headless (or with
+``--headless``) it renders every step offscreen and writes ``OUT/stepNN_<topic>-<backend>.png``.
+Steps are found by folder name next to ``gandalf_core`` at run time (the framework never imports a
+step statically).
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import re
+import sys
+import time
+from pathlib import Path
+
+from .render.base import BACKENDS
+
+REPO_ROOT = Path(__file__).resolve().parent.parent
+STEP_PATTERN = re.compile(r"^step\d\d_[a-z0-9_]+$")
+
+
+def find_steps(root: Path = REPO_ROOT) -> list[str]:
+    """Names of the step packages (folders ``stepNN_topic`` with an ``__init__.py``), in order."""
+    return sorted(p.name for p in root.iterdir() if STEP_PATTERN.match(p.name) and (p / "__init__.py").exists())
+
+
+def render_step(step: str, backend: str, out_dir: Path, width: int = 640, height: int = 480) -> Path:
+    """Render one step headless and save its picture; returns the PNG path."""
+    variant = importlib.import_module(f"{step}.{backend}")
+    frames = getattr(importlib.import_module(f"{step}.scene"), "TOUR_FRAMES", 30)
+    with variant.create_app(headless=True, width=width, height=height) as app:
+        app.run(frames=frames)
+        return app.save_png(out_dir / f"{step}-{backend}.png")
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--headless", action="store_true", help="render offscreen even when a display exists")
+    parser.add_argument("--out", default="out", help="folder for the headless pictures (default: out)")
+    parser.add_argument("--steps", nargs="*", help="only these steps (default: all)")
+    parser.add_argument("--backends", nargs="*", default=list(BACKENDS), choices=BACKENDS)
+    args = parser.parse_args(argv)
+    if str(REPO_ROOT) not in sys.path:
+        sys.path.insert(0, str(REPO_ROOT))
+    steps = args.steps or find_steps()
+    from .app.window import display_available
+
+    headless = args.headless or not display_available()
+    out_dir = Path(args.out)
+    for step in steps:
+        for backend in args.backends:
+            if headless:
+                start = time.perf_counter()
+                path = render_step(step, backend, out_dir)
+                print(f"{step:<22} {backend:<7} -> {path}  ({time.perf_counter() - start:.2f} s)")
+            else:
+                print(f"{step} ({backend}): close the window to go on")
+                with importlib.import_module(f"{step}.{backend}").create_app(headless=False) as app:
+                    app.run()
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

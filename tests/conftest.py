@@ -1,0 +1,18 @@
+"""Shared fixtures: headless apps for both backends and image comparison helpers."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+if str(ROOT) not in sys.path:
+    sys.path.insert(0, str(ROOT))
+
+
+@pytest.fixture(params=["opengl", "webgpu"])
+def backend(request: pytest.FixtureRequest) -> str:
+    """Runs a test once per backend."""
+    return request.param

@@ -1,0 +1,62 @@
+"""Grades step 01: HSV conversion and the hue-cycling clear colour, rendered headless in both APIs."""
+
+from __future__ import annotations
+
+import colorsys
+
+import numpy as np
+import pytest
+
+from gandalf_core import Application, ClearColorComponent
+from step01_window.components import HueCycleComponent
+from step01_window.scene import build_scene
+
+# An 8-bit sRGB target stores round(255 * c); both backends may round differently by one step.
+PIXEL_TOLERANCE = 1
+
+
+@pytest.mark.exercise("hsv_to_rgb")
+@pytest.mark.parametrize("hue", [0.0, 30.0, 59.9, 60.0, 123.4, 180.0, 250.0, 300.0, 359.9, 360.0, 725.0, -30.0])
+@pytest.mark.parametrize("sat_val", [(0.0, 0.5), (0.7, 0.9), (1.0, 1.0)])
+def test_hsv_to_rgb_matches_colorsys(impl, hue, sat_val):
+    s, v = sat_val
+    expected = colorsys.hsv_to_rgb((hue % 360.0) / 360.0, s, v)
+    assert np.allclose(impl.hsv_to_rgb(hue, s, v), expected, atol=1e-9)
+
+
+def _expected_bytes(hue: float, s: float, v: float) -> np.ndarray:
+    rgb = colorsys.hsv_to_rgb((hue % 360.0) / 360.0, s, v)
+    return np.round(np.array([*rgb, 1.0]) * 255).astype(int)
+
+
+@pytest.mark.exercise("HueCycleSystem")
+@pytest.mark.parametrize("frames", [1, 30, 400])
+def test_clear_colour_follows_the_hue_in_pixels(impl, backend, frames):
+    with Application(backend, 32, 24, headless=True, fixed_dt=1 / 60) as app:
+        scene = app.add_scene(build_scene(impl))
+        app.run(frames=frames)
+        image = app.capture()
+    entity = scene.query(HueCycleComponent).entities[0]
+    cycle = scene.get_component(entity, HueCycleComponent)
+    expected_hue = (200.0 + 60.0 * frames / 60) % 360.0
+    assert cycle.hue == pytest.approx(expected_hue, abs=1e-6)
+    assert 0.0 <= cycle.hue < 360.0
+    expected = _expected_bytes(expected_hue, 0.7, 0.9)
+    assert image.shape == (24, 32, 4)
+    # Every pixel is the clear colour.
+    assert np.abs(image.reshape(-1, 4).astype(int) - expected).max() <= PIXEL_TOLERANCE
+
+
+@pytest.mark.exercise("HueCycleSystem")
+def test_each_entity_cycles_at_its_own_speed(impl):
+    from gandalf_core import Scene
+
+    scene = Scene("speeds")
+    a = scene.create_entity(ClearColorComponent(), HueCycleComponent(hue=10, speed=90, saturation=1, value=1))
+    b = scene.create_entity(ClearColorComponent(), HueCycleComponent(hue=350, speed=-20, saturation=0.5, value=0.5))
+    scene.add_system(impl.HueCycleSystem())
+    for _ in range(3):
+        scene.update(0.5)
+    assert scene.get_component(a, HueCycleComponent).hue == pytest.approx(145.0)
+    assert scene.get_component(b, HueCycleComponent).hue == pytest.approx(320.0)
+    assert np.allclose(scene.get_component(a, ClearColorComponent).color[:3], colorsys.hsv_to_rgb(145 / 360, 1, 1))
