@@ -45,8 +45,8 @@ class SceneManager:
     def request_switch(self, scene: Scene | str) -> None:
         """Ask to make ``scene`` active from the next frame on."""
         target = self.get(scene) if isinstance(scene, str) else scene
-        if target.name not in self._scenes:
-            self.add(target)
+        if self._scenes.get(target.name) is not target:
+            self.add(target)  # registers it, or raises if a different scene already has that name
         self._pending = target
 
     def apply_pending(self) -> bool:

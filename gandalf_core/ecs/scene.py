@@ -10,6 +10,7 @@ import uuid
 from collections.abc import Iterator
 from typing import Any, TypeVar
 
+from ..resources.assets import Assets
 from .component import ColumnarComponent, ColumnStore, Component
 from .errors import HierarchyCycleError, MissingComponentError, NotAComponentError, UnknownEntityError
 from .hierarchy import LinkComponent
@@ -25,6 +26,7 @@ class Scene:
     def __init__(self, name: str = "scene") -> None:
         self.name = name
         self.app: Any = None  # set by the Application that runs this scene
+        self.assets = Assets()  # meshes, textures and materials by name (backend-neutral data)
         self._entities: dict[uuid.UUID, dict[type, Component]] = {}
         self._stores: dict[type, ColumnStore] = {}
         self._systems: list[System] = []
@@ -64,24 +66,33 @@ class Scene:
 
     def destroy_entity(self, entity: uuid.UUID) -> None:
         """Remove an entity, its components, and (through its Link) all of its descendants."""
-        comps = self._require(entity)
-        link = comps.get(LinkComponent)
-        if link is not None:
-            for child in list(link.children):
-                if child in self._entities:
-                    self.destroy_entity(child)
-        for component_type in list(comps):
-            self.remove_component(entity, component_type)
-        del self._entities[entity]
+        self._require(entity)
+        # Collect the subtree breadth-first without recursion (a 1000-deep chain must not hit the
+        # recursion limit), then destroy it from the leaves up so every child goes before its parent.
+        subtree = [entity]
+        for node in subtree:
+            link = self._entities[node].get(LinkComponent)
+            if link is not None:
+                subtree.extend(child for child in link.children if child in self._entities)
+        for node in reversed(subtree):
+            for component_type in list(self._entities[node]):
+                self.remove_component(node, component_type)
+            del self._entities[node]
 
     # --- components -------------------------------------------------------------------------------
     def add_component(self, entity: uuid.UUID, component: C) -> C:
         """Attach ``component`` to ``entity`` (replacing one of the same type) and update systems."""
         comps = self._require(entity)
         if not isinstance(component, Component):
+            # Passing the class instead of an instance is the usual slip: say so.
+            hint = (
+                f" (pass an instance: {component.__name__}(...))"
+                if isinstance(component, type) and issubclass(component, Component)
+                else ""
+            )
             raise NotAComponentError(
                 f"cannot add {component!r} to {self.describe(entity)}: "
-                f"{type(component).__name__} is not a Component subclass"
+                f"{type(component).__name__} is not a Component subclass{hint}"
             )
         component_type = type(component)
         if isinstance(component, ColumnarComponent) and component._store is not None:

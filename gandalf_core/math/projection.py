@@ -55,7 +55,8 @@ def perspective(
     A point at eye-space distance `near` in front of the camera lands on the depth range's near end, one at
     `far` on its far end. `far` may be `math.inf` (infinite far plane; best paired with `reverse_z`).
     """
-    _require(math.isfinite(fovy_degrees) and 0.0 < fovy_degrees < 180.0, "fovy_degrees", "lie in (0, 180)", fovy_degrees)
+    fov_ok = math.isfinite(fovy_degrees) and 0.0 < fovy_degrees < 180.0
+    _require(fov_ok, "fovy_degrees", "lie in (0, 180)", fovy_degrees)
     _require(math.isfinite(aspect) and aspect > 0.0, "aspect", "be finite and > 0", aspect)
     _require(math.isfinite(near) and near > 0.0, "near", "be finite and > 0", near)
     _require(far > near, "far", f"be greater than near ({near!r}); math.inf is allowed", far)
@@ -87,7 +88,8 @@ def orthographic(
     reverse_z: bool = False,
 ) -> np.ndarray:
     """Orthographic projection (4x4) of the eye-space box [left, right] x [bottom, top] x [-far, -near]."""
-    for name, value in (("left", left), ("right", right), ("bottom", bottom), ("top", top), ("near", near), ("far", far)):
+    bounds = {"left": left, "right": right, "bottom": bottom, "top": top, "near": near, "far": far}
+    for name, value in bounds.items():
         _require(math.isfinite(value), name, "be finite", value)
     _require(right != left, "right", f"differ from left ({left!r})", right)
     _require(top != bottom, "top", f"differ from bottom ({bottom!r})", top)

@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .quaternion import _checked, quat_from_matrix3, quat_to_matrix3
+from .quaternion import _checked, _write_rotation, quat_from_matrix3, quat_to_matrix3
 
 # |forward x up| below this (both unit vectors) counts as "up is parallel to the view direction".
 _PARALLEL_UP = 1e-6
@@ -63,7 +63,7 @@ def trs_batch(t: ArrayLike, q: ArrayLike, s: ArrayLike, out: np.ndarray | None =
         out = np.empty((n, 4, 4))
     elif out.shape != (n, 4, 4) or out.dtype != np.float64:
         raise ValueError(f"out must be a float64 array of shape ({n}, 4, 4), got {out.dtype} {out.shape}")
-    np.multiply(quat_to_matrix3(qq), ss[:, None, :], out=out[:, :3, :3])
+    _write_rotation(qq, out[:, :3, :3], scale=ss)
     out[:, :3, 3] = tt
     out[:, 3, :3] = 0.0
     out[:, 3, 3] = 1.0

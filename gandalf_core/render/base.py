@@ -13,6 +13,9 @@ from pathlib import Path
 
 import numpy as np
 
+from ..resources.assets import Assets
+from .frame import DrawBatch
+
 BACKENDS = ("opengl", "webgpu")
 
 
@@ -48,12 +51,17 @@ class Renderer(ABC):
         return self.width / self.height
 
     @abstractmethod
-    def begin_frame(self, clear_color_linear: np.ndarray) -> None:
-        """Start a frame by clearing the offscreen target (colour in linear light, RGBA)."""
-
-    @abstractmethod
-    def end_frame(self) -> None:
-        """Submit the frame and present it to the window, if there is one."""
+    def render(
+        self,
+        clear_color: np.ndarray,
+        frame: bytes,
+        batches: list[DrawBatch],
+        instances: np.ndarray | None,
+        assets: Assets,
+        reverse_z: bool = False,
+    ) -> None:
+        """Draw one frame: clear to ``clear_color`` (linear RGBA), upload the frame uniforms and the
+        instance data once, draw each batch with one instanced call, then present (in a window)."""
 
     @abstractmethod
     def read_pixels(self) -> np.ndarray:

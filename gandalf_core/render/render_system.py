@@ -1,16 +1,21 @@
-"""The render system: the last system of a frame; clears to the scene's background and draws.
+"""The render system: the last system of a frame. Backend-neutral: it reads components, groups
+entities into instanced batches, gathers their world matrices, and hands both to the renderer.
 
-It is backend-neutral: it reads components and hands the renderer what to draw.
+Batches are planned again only when components come or go; every frame costs one numpy gather
+of the world matrices and one upload, whatever the number of entities.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from ..components import ClearColorComponent
+from ..components import ClearColorComponent, MaterialComponent, MeshComponent, TransformComponent
+from ..components.camera import CameraComponent
 from ..ecs import System
+from ..math import invert_affine
 from .base import Renderer
 from .color import srgb_rgba_to_linear
+from .frame import DrawBatch, pack_frame, pack_instances
 
 DEFAULT_CLEAR = (0.0, 0.0, 0.0, 1.0)
 
@@ -19,17 +24,68 @@ class RenderSystem(System):
     """Draws the scene with ``renderer`` once per frame."""
 
     def __init__(self, renderer: Renderer) -> None:
-        super().__init__([])
+        super().__init__([TransformComponent, MeshComponent, MaterialComponent])
         self.renderer = renderer
+        self._plan_version = -1
+        self.batches: list[DrawBatch] = []
+        self._rows = np.zeros(0, dtype=np.intp)
+        self._instances: np.ndarray | None = None
 
     def on_create_system(self) -> None:
         self._backgrounds = self.scene.query(ClearColorComponent)
+        self._cameras = self.scene.query(CameraComponent, TransformComponent)
 
     def clear_color(self) -> np.ndarray:
         """The first ClearColorComponent's colour in linear light (black when the scene has none)."""
         comps = self._backgrounds.components
         return srgb_rgba_to_linear(comps[0][0].color if comps else DEFAULT_CLEAR)
 
+    def camera(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(view, projection, eye position) of the primary camera; identity when the scene has none.
+
+        With no camera, positions are already clip-space coordinates (step 02 starts there).
+        """
+        chosen = None
+        for entity, (camera, transform) in zip(self._cameras.entities, self._cameras.components):
+            if camera.primary:
+                chosen = (entity, camera, transform)
+                break
+        if chosen is None:
+            return np.eye(4), np.eye(4), np.zeros(3)
+        entity, camera, transform = chosen
+        world = transform.world
+        try:
+            view = invert_affine(world)
+        except ValueError as exc:
+            raise ValueError(f"camera {self.scene.describe(entity)}: its world matrix is singular ({exc})") from None
+        projection = camera.projection_matrix(self.renderer.depth_range, self.renderer.aspect)
+        return view, projection, world[:3, 3].copy()
+
+    def plan(self) -> None:
+        """Group entities by (material, mesh); sorted so that batches sharing a shader are adjacent."""
+        groups: dict[tuple[str, str], list[int]] = {}
+        for transform, mesh, material in self.components:
+            groups.setdefault((material.material, mesh.mesh), []).append(transform._row)
+        materials = self.scene.assets.materials
+        self.batches = []
+        first = 0
+        for (material, mesh), rows in sorted(
+            groups.items(), key=lambda kv: (getattr(materials.get(kv[0][0]), "shader", ""), kv[0])
+        ):
+            self.batches.append(DrawBatch(mesh, material, np.array(rows, dtype=np.intp), first))
+            first += len(rows)
+        self._rows = np.concatenate([b.rows for b in self.batches]) if self.batches else np.zeros(0, np.intp)
+        self._plan_version = self.scene.membership_version
+
     def on_update_system(self, ts: float) -> None:
-        self.renderer.begin_frame(self.clear_color())
-        self.renderer.end_frame()
+        scene = self.scene
+        if self._plan_version != scene.membership_version:
+            self.plan()
+        view, projection, eye = self.camera()
+        app = scene.app
+        time = app.clock.time if app is not None else 0.0
+        frame = pack_frame(view, projection, eye, time, ts)
+        if self.batches:
+            world = scene.store(TransformComponent).columns["world"]
+            self._instances = pack_instances(world, self._rows, self._instances)
+        self.renderer.render(self.clear_color(), frame, self.batches, self._instances, scene.assets)

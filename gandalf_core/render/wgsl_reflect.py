@@ -587,7 +587,8 @@ def _checked_numbers(value: Any, dtype: np.dtype, shape: tuple[int, ...], path: 
             raise ValueError(f"{path}: values out of range for {text} [{info.min}, {info.max}]")
     else:
         # float64 -> float32 must not silently turn a finite value into inf.
-        converted = arr.astype(dtype)
+        with np.errstate(over="ignore"):
+            converted = arr.astype(dtype)
         if np.any(np.isfinite(arr) & ~np.isfinite(converted)):
             raise ValueError(f"{path}: values out of {dtype.name} range for {text}")
     return arr
@@ -711,7 +712,7 @@ class _Resolver:
             return self.integer(e.args[0], line, what, seen)
         if isinstance(e, _TypeRef) and not e.args and e.name in self.mod.consts and e.name not in seen:
             value = self.mod.consts[e.name]
-            if value is None:
+            if value is None or isinstance(value, float):
                 raise self.error(line, f"{what}: constant '{e.name}' is not an integer expression")
             return self.integer(value, line, what, seen | {e.name})
         name = e.name if isinstance(e, _TypeRef) else e.callee.name
@@ -763,7 +764,7 @@ class _Resolver:
             return self.struct(name)
         if name == "bool":
             raise _NotHostShareable(f"{self.filename}:{t.line}: bool is not host-shareable (use u32)")
-        raise self.error(t.line, f"unknown or unsupported type '{self.text(t)}' in a host-shareable struct")
+        raise self.error(t.line, f"unknown or non-host-shareable type '{self.text(t)}'")
 
     def _type_arg(self, t: _TypeRef, i: int) -> _TypeRef:
         arg = t.args[i]

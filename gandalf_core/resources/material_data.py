@@ -91,9 +91,8 @@ class MaterialData:
             if a.ndim == 0:
                 params[key] = float(a)
             elif a.ndim > 2 or not 1 <= a.size <= _MAX_PARAM_FLOATS:
-                raise ResourceError(
-                    label, f"params[{key!r}]", f"expected a float or up to {_MAX_PARAM_FLOATS} floats, got shape {a.shape}"
-                )
+                detail = f"expected a float or up to {_MAX_PARAM_FLOATS} floats, got shape {a.shape}"
+                raise ResourceError(label, f"params[{key!r}]", detail)
             else:
                 params[key] = tuple(float(x) for x in a.reshape(-1))
         object.__setattr__(self, "params", MappingProxyType(params))

@@ -87,7 +87,8 @@ def _float_attribute(label: str, field: str, value: Any, components: int, count:
         raise ResourceError(label, field, f"expected shape (N, {components}), got {a.shape}")
     if count is not None and a.shape[0] != count:
         raise ResourceError(label, field, f"has {a.shape[0]} rows but the mesh has N = {count} vertices")
-    a32 = a.astype(np.float32)  # the float32 check also catches values too large for float32
+    with np.errstate(over="ignore"):  # values too large for float32 become inf and are reported just below
+        a32 = a.astype(np.float32)
     bad = ~np.isfinite(a32)
     if bad.any():
         row, col = (int(i) for i in np.argwhere(bad)[0])
@@ -258,9 +259,7 @@ class MeshData:
         w = np.where(np.sum(np.cross(n, tangent) * b_acc, axis=1) < 0.0, -1.0, 1.0)
         return mesh._replace(tangents=np.concatenate([tangent, w[:, None]], axis=1))
 
-    def interleaved(
-        self, attributes: Sequence[str] = ("position", "normal", "uv")
-    ) -> tuple[np.ndarray, VertexLayout]:
+    def interleaved(self, attributes: Sequence[str] = ("position", "normal", "uv")) -> tuple[np.ndarray, VertexLayout]:
         """Pack the requested attributes into one float32 array of shape (N, floats_per_vertex).
 
         ``attributes`` are names from :data:`ATTRIBUTE_LOCATIONS`, in the order they should appear in the

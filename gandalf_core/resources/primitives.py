@@ -140,15 +140,19 @@ def uv_sphere(radius: float = 1.0, segments: int = 32, rings: int = 16) -> MeshD
 
     u runs once around (starting at +Z, moving towards +X, i.e. left to right seen from outside), v from the
     north pole (v = 0) to the south pole, so an equirectangular image appears upright. The seam column is
-    duplicated for the UV wrap; the pole rows skip their degenerate triangles.
+    duplicated for the UV wrap; each pole has one vertex per column (u at the column's middle), so the pole
+    rows are single triangles without degenerate ones.
     """
     r = _positive("uv_sphere", "radius", radius)
     cols = _count("uv_sphere", "segments", segments, 3)
     rows = _count("uv_sphere", "rings", rings, 2)
     v, u = np.meshgrid(np.linspace(0.0, 1.0, rows + 1), np.linspace(0.0, 1.0, cols + 1), indexing="ij")
+    # Each pole vertex serves one column only (north: column j, south: column j - 1): sample that column's middle.
+    u[0] += 0.5 / cols
+    u[-1] -= 0.5 / cols
     theta, phi = v * np.pi, u * 2.0 * np.pi
-    normals = np.stack([np.sin(theta) * np.sin(phi), np.cos(theta), np.sin(theta) * np.cos(phi)], -1).reshape(-1, 3)
-    uvs = np.stack([u, v], -1).reshape(-1, 2)
+    normals = np.stack([np.sin(theta) * np.sin(phi), np.cos(theta), np.sin(theta) * np.cos(phi)], -1)
+    normals[0], normals[-1] = (0.0, 1.0, 0.0), (0.0, -1.0, 0.0)  # exact poles, whatever phi says
     tris = _grid_indices(rows, cols).reshape(rows, cols, 2, 3)
     # Row 0's second triangle (a, c, d) has a and d on the north pole; the last row's first (a, b, c) has b and c
     # on the south pole: both are degenerate.
@@ -156,7 +160,13 @@ def uv_sphere(radius: float = 1.0, segments: int = 32, rings: int = 16) -> MeshD
     keep[0, :, 1] = False
     keep[-1, :, 0] = False
     indices = tris[keep]
-    return MeshData(normals * r, normals=normals, uvs=uvs, indices=indices, name="uv_sphere").with_tangents()
+    # One pole vertex per pole belongs to no kept triangle (north: the last column, south: the first): drop them.
+    used = np.ones(normals.shape[:2], dtype=bool)
+    used[0, -1] = used[-1, 0] = False
+    remap = np.cumsum(used.ravel()) - 1
+    normals = normals[used]
+    uvs = np.stack([u, v], -1)[used]
+    return MeshData(normals * r, normals=normals, uvs=uvs, indices=remap[indices], name="uv_sphere").with_tangents()
 
 
 def torus(

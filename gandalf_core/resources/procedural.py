@@ -94,6 +94,14 @@ def gradient(
     return TextureData.from_array(img, **settings)
 
 
+def _lattice_coords(n: int, cells: int, shift: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Smoothstep weights and the two wrapped lattice indices for ``n`` texel centres over ``cells`` cells."""
+    x = (np.arange(n) + 0.5) / n * cells - 0.5 + shift
+    i0 = np.floor(x).astype(np.int64)
+    f = x - i0
+    return f * f * (3.0 - 2.0 * f), i0 % cells, (i0 + 1) % cells
+
+
 def value_noise(size: int = 256, seed: int = 0, cells: int = 8, octaves: int = 4, **settings: Any) -> TextureData:
     """Tileable grey fractal value noise in [0, 1], the same for the same arguments.
 
@@ -113,13 +121,13 @@ def value_noise(size: int = 256, seed: int = 0, cells: int = 8, octaves: int = 4
     for o in range(count):
         c = c0 * 2**o
         lattice = rng.random((c, c))
-        x = (np.arange(n) + 0.5) / n * c - 0.5
-        i0 = np.floor(x).astype(np.int64)
-        f = x - i0
-        f = f * f * (3.0 - 2.0 * f)
-        i0, i1 = i0 % c, (i0 + 1) % c
-        rows = lattice[i0] * (1.0 - f)[:, None] + lattice[i1] * f[:, None]
-        layer = rows[:, i0] * (1.0 - f)[None, :] + rows[:, i1] * f[None, :]
+        # A random shift per octave and axis keeps the octaves' lattice lines from lining up into visible seams;
+        # the lattice wraps, so any shift still tiles.
+        shift = rng.random(2)
+        fy, iy0, iy1 = _lattice_coords(n, c, shift[0])
+        fx, ix0, ix1 = _lattice_coords(n, c, shift[1])
+        rows = lattice[iy0] * (1.0 - fy)[:, None] + lattice[iy1] * fy[:, None]
+        layer = rows[:, ix0] * (1.0 - fx)[None, :] + rows[:, ix1] * fx[None, :]
         amplitude = 0.5**o
         total += amplitude * layer
         amplitude_sum += amplitude

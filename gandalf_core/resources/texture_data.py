@@ -340,11 +340,9 @@ class CubeTextureData:
             if f.shape[0] != f.shape[1]:
                 raise ResourceError(label, f"faces[{face}]", f"face must be square, got {f.shape[1]}x{f.shape[0]}")
             if f.shape != checked[0].shape:
-                raise ResourceError(
-                    label,
-                    f"faces[{face}]",
-                    f"size {f.shape[1]}x{f.shape[0]} differs from face +X ({checked[0].shape[1]}x{checked[0].shape[0]})",
-                )
+                first = checked[0].shape[0]
+                detail = f"size {f.shape[1]}x{f.shape[0]} differs from face +X ({first}x{first})"
+                raise ResourceError(label, f"faces[{face}]", detail)
         object.__setattr__(self, "faces", checked)
         object.__setattr__(self, "srgb", bool(self.srgb))
         object.__setattr__(self, "mipmaps", bool(self.mipmaps))

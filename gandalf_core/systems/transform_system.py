@@ -8,11 +8,15 @@ recomputed after any ancestor moved and 100k entities cost a few numpy calls.
 from __future__ import annotations
 
 import uuid
+
 import numpy as np
 
 from ..components import LinkComponent, TransformComponent
 from ..ecs import Scene, System
 from ..math import decompose_trs, invert_affine, quat_normalize, trs, trs_batch
+
+# Quaternions shorter than this carry no usable rotation and count as the identity.
+_MIN_QUAT_NORM = 1e-12
 
 
 class TransformSystem(System):
@@ -37,7 +41,8 @@ class TransformSystem(System):
         q = store.column("quaternion")
         norms = np.linalg.norm(q, axis=1, keepdims=True)
         # Renormalise drifting quaternions; a zero quaternion (never valid) means "no rotation".
-        q_unit = np.where(norms > 1e-12, q / np.where(norms > 1e-12, norms, 1.0), np.array([1.0, 0, 0, 0]))
+        ok = norms > _MIN_QUAT_NORM
+        q_unit = np.where(ok, q / np.where(ok, norms, 1.0), np.array([1.0, 0, 0, 0]))
         local = trs_batch(store.column("translation"), q_unit, store.column("scale"))
         world = store.column("world")
         world[:] = local
@@ -92,7 +97,10 @@ def world_matrix(scene: Scene, entity: uuid.UUID) -> np.ndarray:
     while node is not None:
         transform = scene.try_component(node, TransformComponent)
         if transform is not None:
-            matrix = trs(transform.translation, quat_normalize(transform.quaternion), transform.scale) @ matrix
+            q = transform.quaternion
+            # Same rule as the system's batch path: a (near-)zero quaternion is the identity rotation.
+            q = quat_normalize(q) if np.linalg.norm(q) > _MIN_QUAT_NORM else np.array([1.0, 0.0, 0.0, 0.0])
+            matrix = trs(transform.translation, q, transform.scale) @ matrix
         node = scene.parent_of(node)
     return matrix
 

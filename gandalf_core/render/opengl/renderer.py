@@ -1,4 +1,8 @@
-"""The OpenGL renderer: a moderngl context (EGL offscreen, or a glfw window) and an sRGB offscreen target."""
+"""The OpenGL renderer: a moderngl context (EGL offscreen, or a glfw window) and an sRGB offscreen target.
+
+Each frame: one write of the frame uniform block, one write of all instance data, then one instanced
+draw call per (material, mesh) batch.
+"""
 
 from __future__ import annotations
 
@@ -7,10 +11,16 @@ from typing import Any
 import moderngl
 import numpy as np
 
+from ...resources.assets import Assets
+from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
 from ..base import Renderer
+from ..errors import missing
+from ..frame import FRAME_FLOATS, INSTANCE_FLOATS, DrawBatch
+from .libs import GLMaterial, GLMesh, GLShader, MaterialLib, MeshLib, ShaderLib, TextureLib
 
 GL_FRAMEBUFFER_SRGB = 0x8DB9
 GL_SRGB8_ALPHA8 = 0x8C43
+INSTANCE_STRIDE = INSTANCE_FLOATS * 4
 
 
 class OpenGLRenderer(Renderer):
@@ -26,9 +36,18 @@ class OpenGLRenderer(Renderer):
             self.ctx = moderngl.create_standalone_context(backend="egl", require=330)
         else:
             self.ctx = moderngl.create_context(require=330)
+        self.textures = TextureLib(self.ctx, self.stats)
+        self.shaders = ShaderLib(self.ctx, self.stats)
+        self.meshes = MeshLib(self.ctx, self.stats)
+        self.materials = MaterialLib(self.shaders, self.textures, self.stats)
+        self._frame_ubo = self.ctx.buffer(reserve=FRAME_FLOATS * 4)
+        self._instance_buffer: moderngl.Buffer | None = None
+        self._vaos: dict[tuple[str, str], moderngl.VertexArray] = {}
+        self._state: tuple[Any, ...] | None = None
         self._fbo: moderngl.Framebuffer | None = None
         self._create_targets()
 
+    # --- targets ----------------------------------------------------------------------------------
     def _create_targets(self) -> None:
         size = (self.width, self.height)
         # An sRGB colour target: shaders work in linear light and GL encodes on write, as WebGPU's
@@ -41,27 +60,118 @@ class OpenGLRenderer(Renderer):
         for obj in (self._fbo, self._color, self._depth):
             obj.release()
 
-    def begin_frame(self, clear_color_linear: np.ndarray) -> None:
+    # --- a frame ------------------------------------------------------------------------------------
+    def render(
+        self, clear_color: np.ndarray, frame: bytes, batches: list[DrawBatch], instances: np.ndarray | None,
+        assets: Assets, reverse_z: bool = False,
+    ) -> None:
         self.stats["draw_calls"] = 0
-        self._fbo.use()
+        fbo = self._fbo
+        fbo.use()
         self.ctx.enable_direct(GL_FRAMEBUFFER_SRGB)
-        self.ctx.depth_mask = True
-        r, g, b, a = (float(x) for x in clear_color_linear)
-        self._fbo.clear(r, g, b, a, depth=1.0)
+        fbo.depth_mask = True
+        r, g, b, a = (float(x) for x in clear_color)
+        fbo.clear(r, g, b, a, depth=0.0 if reverse_z else 1.0)
+        self._frame_ubo.write(frame)
+        self._frame_ubo.bind_to_uniform_block(0)
+        if batches:
+            self._upload_instances(instances)
+        self._state = None
+        for batch in batches:
+            material = self._material(batch.material, assets)
+            mesh = self._mesh(batch.mesh, assets)
+            self._apply_state(material, reverse_z)
+            material.apply()
+            vao = self._vertex_array(material.shader, mesh)
+            offset = batch.first_instance * INSTANCE_STRIDE
+            for i, location in enumerate(INSTANCE_LOCATIONS):
+                if location in material.shader.attributes:
+                    vao.bind(location, "f", self._instance_buffer, "4f", offset=offset + 16 * i,
+                             stride=INSTANCE_STRIDE, divisor=1)
+            vao.render(moderngl.TRIANGLES, vertices=mesh.count, instances=batch.count)
+            self.stats["draw_calls"] += 1
+        self._present()
 
-    def end_frame(self) -> None:
+    def _upload_instances(self, instances: np.ndarray) -> None:
+        nbytes = instances.nbytes
+        if self._instance_buffer is None or self._instance_buffer.size < nbytes:
+            if self._instance_buffer is not None:
+                self._instance_buffer.release()
+            capacity = 1 << max(12, (nbytes - 1).bit_length())  # grow by powers of two
+            self._instance_buffer = self.ctx.buffer(reserve=capacity, dynamic=True)
+            self.stats["buffers_created"] += 1
+        self._instance_buffer.write(instances)
+
+    def _apply_state(self, material: GLMaterial, reverse_z: bool) -> None:
+        data = material.data
+        state = (data.cull, data.depth_test, data.depth_write, data.blend, reverse_z)
+        if state == self._state:
+            return
+        ctx = self.ctx
+        if data.cull == "none":
+            ctx.disable(moderngl.CULL_FACE)
+        else:
+            ctx.enable(moderngl.CULL_FACE)
+            ctx.cull_face = data.cull
+        if data.depth_test:
+            ctx.enable(moderngl.DEPTH_TEST)
+            ctx.depth_func = ">=" if reverse_z else "<="
+        else:
+            ctx.disable(moderngl.DEPTH_TEST)
+        self._fbo.depth_mask = data.depth_write
+        if data.blend == "opaque":
+            ctx.disable(moderngl.BLEND)
+        else:
+            ctx.enable(moderngl.BLEND)
+            ctx.blend_func = (
+                (moderngl.SRC_ALPHA, moderngl.ONE_MINUS_SRC_ALPHA) if data.blend == "alpha"
+                else (moderngl.SRC_ALPHA, moderngl.ONE)
+            )
+        self._state = state
+
+    def _present(self) -> None:
         if self.window is not None:
             # Copy the already-encoded bytes as they are: no second sRGB conversion on the way out.
             self.ctx.disable_direct(GL_FRAMEBUFFER_SRGB)
             self.ctx.copy_framebuffer(self.ctx.screen, self._fbo)
             self.window.swap_buffers()
-        else:
-            self.ctx.finish()
 
-    @property
-    def framebuffer(self) -> moderngl.Framebuffer:
-        return self._fbo
+    # --- resources on first use -------------------------------------------------------------------------
+    def _material(self, name: str, assets: Assets) -> GLMaterial:
+        if name in self.materials:
+            return self.materials.get(name)
+        data = assets.materials.get(name)
+        if data is None:
+            raise missing("material", name, list(assets.materials), "a MaterialComponent")
+        for tex in data.textures:
+            if tex not in self.textures and tex in assets.textures:
+                self.textures.build(tex, assets.textures[tex])
+        return self.materials.build(name, data)
 
+    def _mesh(self, name: str, assets: Assets) -> GLMesh:
+        if name in self.meshes:
+            return self.meshes.get(name)
+        data = assets.meshes.get(name)
+        if data is None:
+            raise missing("mesh", name, list(assets.meshes), "a MeshComponent")
+        return self.meshes.build(name, data)
+
+    def _vertex_array(self, shader: GLShader, mesh: GLMesh) -> moderngl.VertexArray:
+        key = (shader.name, mesh.name)
+        vao = self._vaos.get(key)
+        if vao is None:
+            names = mesh_attributes(shader.name, shader.attributes)
+            content = []
+            if names:
+                vbo, layout = self.meshes.vertex_buffer(mesh, names)
+                fmt = " ".join(a.gl_format for a in layout.attributes)
+                content.append((vbo, fmt, *(shader.attributes[a.location] for a in layout.attributes)))
+            vao = self.ctx.vertex_array(shader.program, content, mesh.index_buffer, index_element_size=4)
+            self._vaos[key] = vao
+            self.stats["vertex_arrays_created"] += 1
+        return vao
+
+    # --- read-back, resize, release -------------------------------------------------------------------
     def read_pixels(self) -> np.ndarray:
         data = self._fbo.read(components=4, attachment=0)
         image = np.frombuffer(data, dtype=np.uint8).reshape(self.height, self.width, 4)
@@ -74,6 +184,18 @@ class OpenGLRenderer(Renderer):
         self.width, self.height = int(width), int(height)
         self._create_targets()
 
+    def live_objects(self) -> int:
+        """GPU objects this renderer holds now (for leak tests)."""
+        return len(self._vaos) + sum(len(lib._items) for lib in (self.textures, self.shaders, self.meshes))
+
     def release(self) -> None:
+        for vao in self._vaos.values():
+            vao.release()
+        self._vaos.clear()
+        for lib in (self.materials, self.meshes, self.shaders, self.textures):
+            lib.release()
+        if self._instance_buffer is not None:
+            self._instance_buffer.release()
+        self._frame_ubo.release()
         self._release_targets()
         self.ctx.release()

@@ -1,4 +1,9 @@
-"""The WebGPU renderer: a wgpu device, an ``rgba8unorm-srgb`` offscreen target, optional window surface."""
+"""The WebGPU renderer: a wgpu device, an ``rgba8unorm-srgb`` offscreen target, optional window surface.
+
+Each frame: one write of the frame uniforms, one write of all instance data, one render pass with one
+instanced draw per (material, mesh) batch. Pipelines are cached by what really selects them (shader,
+vertex layout, cull/depth/blend state): changing a material's colour never builds one.
+"""
 
 from __future__ import annotations
 
@@ -8,11 +13,23 @@ from typing import Any
 import numpy as np
 import wgpu
 
+from ...resources.assets import Assets
+from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
 from ..base import Renderer
+from ..errors import missing
+from ..frame import FRAME_FLOATS, INSTANCE_FLOATS, DrawBatch
 from .device import request_device
+from .libs import MaterialLib, MeshLib, ShaderLib, TextureLib, WGPUMaterial, WGPUMesh
 
 COLOR_FORMAT = "rgba8unorm-srgb"
 DEPTH_FORMAT = "depth32float"
+INSTANCE_STRIDE = INSTANCE_FLOATS * 4
+_BLEND = {
+    "alpha": {"color": {"src_factor": "src-alpha", "dst_factor": "one-minus-src-alpha", "operation": "add"},
+              "alpha": {"src_factor": "one", "dst_factor": "one-minus-src-alpha", "operation": "add"}},
+    "additive": {"color": {"src_factor": "src-alpha", "dst_factor": "one", "operation": "add"},
+                 "alpha": {"src_factor": "one", "dst_factor": "one", "operation": "add"}},
+}
 
 
 class WebGPURenderer(Renderer):
@@ -34,15 +51,29 @@ class WebGPURenderer(Renderer):
             self._surface_format = self._surface.get_preferred_format(self.adapter)
             self._surface.configure(device=self.device, format=self._surface_format)
             self._present = _PresentBlit(self.device, self._surface_format)
-        self.encoder: Any = None
-        self.render_pass: Any = None
+        self.frame_layout = self.device.create_bind_group_layout(entries=[{
+            "binding": 0,
+            "visibility": wgpu.ShaderStage.VERTEX | wgpu.ShaderStage.FRAGMENT,
+            "buffer": {"type": "uniform"},
+        }], label="frame")
+        self._frame_buffer = self.device.create_buffer(
+            size=FRAME_FLOATS * 4, usage=wgpu.BufferUsage.UNIFORM | wgpu.BufferUsage.COPY_DST
+        )
+        self._frame_group = self.device.create_bind_group(
+            layout=self.frame_layout, entries=[{"binding": 0, "resource": {"buffer": self._frame_buffer}}]
+        )
+        self.textures = TextureLib(self.device, self.stats)
+        self.shaders = ShaderLib(self.device, self.stats, self.frame_layout)
+        self.meshes = MeshLib(self.device, self.stats)
+        self.materials = MaterialLib(self.device, self.shaders, self.textures, self.stats)
+        self._pipelines: dict[tuple[Any, ...], Any] = {}
+        self._instance_buffer: Any = None
         self._create_targets()
 
     def _create_targets(self) -> None:
         usage = wgpu.TextureUsage
         self._color = self.device.create_texture(
-            size=(self.width, self.height, 1),
-            format=COLOR_FORMAT,
+            size=(self.width, self.height, 1), format=COLOR_FORMAT,
             usage=usage.RENDER_ATTACHMENT | usage.COPY_SRC | usage.TEXTURE_BINDING,
         )
         self._depth = self.device.create_texture(
@@ -51,35 +82,133 @@ class WebGPURenderer(Renderer):
         self.color_view = self._color.create_view()
         self.depth_view = self._depth.create_view()
 
-    def begin_frame(self, clear_color_linear: np.ndarray) -> None:
+    # --- a frame ------------------------------------------------------------------------------------
+    def render(
+        self, clear_color: np.ndarray, frame: bytes, batches: list[DrawBatch], instances: np.ndarray | None,
+        assets: Assets, reverse_z: bool = False,
+    ) -> None:
         self.stats["draw_calls"] = 0
-        self.encoder = self.device.create_command_encoder()
-        self.render_pass = self.encoder.begin_render_pass(
-            color_attachments=[
-                {
-                    "view": self.color_view,
-                    "clear_value": tuple(float(x) for x in clear_color_linear),
-                    "load_op": "clear",
-                    "store_op": "store",
-                }
-            ],
+        queue = self.device.queue
+        queue.write_buffer(self._frame_buffer, 0, frame)
+        if batches:
+            self._upload_instances(instances)
+        # Resolve everything before recording, so a missing resource fails before a pass is open.
+        draws = []
+        for batch in batches:
+            material = self._material(batch.material, assets)
+            mesh = self._mesh(batch.mesh, assets)
+            draws.append((batch, material, mesh, self._pipeline(material, mesh, reverse_z)))
+        encoder = self.device.create_command_encoder()
+        rpass = encoder.begin_render_pass(
+            color_attachments=[{
+                "view": self.color_view, "clear_value": tuple(float(x) for x in clear_color),
+                "load_op": "clear", "store_op": "store",
+            }],
             depth_stencil_attachment={
-                "view": self.depth_view,
-                "depth_clear_value": 1.0,
-                "depth_load_op": "clear",
-                "depth_store_op": "store",
+                "view": self.depth_view, "depth_clear_value": 0.0 if reverse_z else 1.0,
+                "depth_load_op": "clear", "depth_store_op": "store",
             },
         )
-
-    def end_frame(self) -> None:
-        self.render_pass.end()
+        rpass.set_bind_group(0, self._frame_group)
+        for batch, material, mesh, (pipeline, attributes) in draws:
+            rpass.set_pipeline(pipeline)
+            if material.bind_group is not None:
+                rpass.set_bind_group(1, material.bind_group)
+            slot = 0
+            if attributes:
+                vbo, _layout = self.meshes.vertex_buffer(mesh, attributes)
+                rpass.set_vertex_buffer(slot, vbo)
+                slot += 1
+            if any(loc in material.shader.attributes for loc in INSTANCE_LOCATIONS):
+                rpass.set_vertex_buffer(slot, self._instance_buffer, batch.first_instance * INSTANCE_STRIDE)
+            if mesh.index_buffer is not None:
+                rpass.set_index_buffer(mesh.index_buffer, "uint32")
+                rpass.draw_indexed(mesh.count, batch.count)
+            else:
+                rpass.draw(mesh.count, batch.count)
+            self.stats["draw_calls"] += 1
+        rpass.end()
+        surface_texture = None
         if self._surface is not None:
-            self._present.draw(self.encoder, self.color_view, self._surface.get_current_texture().create_view())
-        self.device.queue.submit([self.encoder.finish()])
-        self.render_pass = self.encoder = None
-        if self._surface is not None:
+            surface_texture = self._surface.get_current_texture()
+            self._present.draw(encoder, self.color_view, surface_texture.create_view())
+        queue.submit([encoder.finish()])
+        if surface_texture is not None:
             self._surface.present()
 
+    def _upload_instances(self, instances: np.ndarray) -> None:
+        nbytes = instances.nbytes
+        if self._instance_buffer is None or self._instance_buffer.size < nbytes:
+            if self._instance_buffer is not None:
+                self._instance_buffer.destroy()
+            capacity = 1 << max(12, (nbytes - 1).bit_length())  # grow by powers of two
+            self._instance_buffer = self.device.create_buffer(
+                size=capacity, usage=wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.COPY_DST
+            )
+            self.stats["buffers_created"] += 1
+        self.device.queue.write_buffer(self._instance_buffer, 0, instances)
+
+    def _pipeline(self, material: WGPUMaterial, mesh: WGPUMesh, reverse_z: bool) -> tuple[Any, tuple[str, ...]]:
+        shader = material.shader
+        attributes = mesh_attributes(shader.name, shader.attributes)
+        data = material.data
+        key = (shader.name, attributes, data.cull, data.depth_test, data.depth_write, data.blend, reverse_z)
+        pipeline = self._pipelines.get(key)
+        if pipeline is None:
+            buffers = []
+            if attributes:
+                _vbo, layout = self.meshes.vertex_buffer(mesh, attributes)
+                buffers.append({
+                    "array_stride": layout.stride, "step_mode": "vertex",
+                    "attributes": [{"format": a.wgpu_format, "offset": a.offset_bytes, "shader_location": a.location}
+                                   for a in layout.attributes],
+                })
+            instance_locations = [loc for loc in INSTANCE_LOCATIONS if loc in shader.attributes]
+            if instance_locations:
+                buffers.append({
+                    "array_stride": INSTANCE_STRIDE, "step_mode": "instance",
+                    "attributes": [{"format": "float32x4", "offset": 16 * (loc - 5), "shader_location": loc}
+                                   for loc in instance_locations],
+                })
+            layouts = [self.frame_layout] + ([shader.material_layout] if shader.material_layout else [])
+            target: dict[str, Any] = {"format": COLOR_FORMAT}
+            if data.blend != "opaque":
+                target["blend"] = _BLEND[data.blend]
+            compare = ("greater-equal" if reverse_z else "less-equal") if data.depth_test else "always"
+            pipeline = self.device.create_render_pipeline(
+                layout=self.device.create_pipeline_layout(bind_group_layouts=layouts),
+                vertex={"module": shader.module, "entry_point": shader.vertex_entry, "buffers": buffers},
+                fragment={"module": shader.module, "entry_point": shader.fragment_entry, "targets": [target]},
+                primitive={"topology": "triangle-list", "front_face": "ccw", "cull_mode": data.cull},
+                depth_stencil={"format": DEPTH_FORMAT, "depth_write_enabled": data.depth_write,
+                               "depth_compare": compare},
+                label=f"{shader.name} pipeline",
+            )
+            self._pipelines[key] = pipeline
+            self.stats["pipelines_created"] += 1
+        return pipeline, attributes
+
+    # --- resources on first use -------------------------------------------------------------------------
+    def _material(self, name: str, assets: Assets) -> WGPUMaterial:
+        if name in self.materials:
+            return self.materials.get(name)
+        data = assets.materials.get(name)
+        if data is None:
+            raise missing("material", name, list(assets.materials), "a MaterialComponent")
+        for tex in data.textures:
+            if tex not in self.textures and tex in assets.textures:
+                self.textures.build(tex, assets.textures[tex])
+        return self.materials.build(name, data)
+
+    def _mesh(self, name: str, assets: Assets) -> WGPUMesh:
+        if name in self.meshes:
+            return self.meshes.get(name)
+        data = assets.meshes.get(name)
+        if data is None:
+            raise missing("mesh", name, list(assets.meshes), "a MeshComponent")
+        return self.meshes.build(name, data)
+
+    # --- read-back, resize, release -------------------------------------------------------------------
     def read_pixels(self) -> np.ndarray:
         data = self.device.queue.read_texture(
             {"texture": self._color, "origin": (0, 0, 0), "mip_level": 0},
@@ -98,7 +227,19 @@ class WebGPURenderer(Renderer):
         if self._surface is not None:
             self._surface.configure(device=self.device, format=self._surface_format)
 
+    def live_objects(self) -> int:
+        """GPU objects this renderer holds now (for leak tests)."""
+        return len(self._pipelines) + sum(
+            len(lib._items) for lib in (self.textures, self.shaders, self.meshes, self.materials)
+        )
+
     def release(self) -> None:
+        for lib in (self.materials, self.meshes, self.shaders, self.textures):
+            lib.release()
+        self._pipelines.clear()
+        if self._instance_buffer is not None:
+            self._instance_buffer.destroy()
+        self._frame_buffer.destroy()
         self._color.destroy()
         self._depth.destroy()
         self.device.destroy()
@@ -124,9 +265,9 @@ class _PresentBlit:
             layout=self.pipeline.get_bind_group_layout(0),
             entries=[{"binding": 0, "resource": source_view}, {"binding": 1, "resource": self.sampler}],
         )
-        rpass = encoder.begin_render_pass(
-            color_attachments=[{"view": target_view, "load_op": "clear", "store_op": "store", "clear_value": (0, 0, 0, 1)}]
-        )
+        rpass = encoder.begin_render_pass(color_attachments=[
+            {"view": target_view, "load_op": "clear", "store_op": "store", "clear_value": (0, 0, 0, 1)}
+        ])
         rpass.set_pipeline(self.pipeline)
         rpass.set_bind_group(0, bind_group)
         rpass.draw(3)

@@ -1,0 +1,62 @@
+"""The Camera component: a projection attached to an entity whose Transform places the eye.
+
+The camera looks down its own -Z axis. Its view matrix is the inverse of its entity's world matrix,
+computed every frame, so a camera parented to a moving entity never goes stale. The projection uses
+the renderer's depth range, which is why one scene and one camera give the same picture in both APIs.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..ecs import Component
+from ..math import orthographic, perspective
+
+PROJECTIONS = ("perspective", "orthographic")
+
+
+class CameraComponent(Component):
+    """Perspective (``fov`` degrees, vertical) or orthographic (``height`` world units) projection.
+
+    ``aspect=None`` follows the render target (and so the window when it is resized). Validation runs
+    on construction and again whenever a projection is built, so a bad value names its field.
+    """
+
+    def __init__(
+        self,
+        fov: float = 60.0,
+        near: float = 0.1,
+        far: float = 100.0,
+        *,
+        projection: str = "perspective",
+        height: float = 2.0,
+        aspect: float | None = None,
+        primary: bool = True,
+        reverse_z: bool = False,
+    ) -> None:
+        self.fov = fov
+        self.near = near
+        self.far = far
+        self.projection = projection
+        self.height = height
+        self.aspect = aspect
+        self.primary = primary
+        self.reverse_z = reverse_z
+        self.projection_matrix("opengl", 1.0)  # validate now, naming the bad field
+
+    def projection_matrix(self, depth_range: str, target_aspect: float) -> np.ndarray:
+        """The projection for an API's depth range ('opengl' or 'webgpu')."""
+        aspect = target_aspect if self.aspect is None else self.aspect
+        if self.projection == "perspective":
+            return perspective(self.fov, aspect, self.near, self.far, depth_range=depth_range, reverse_z=self.reverse_z)
+        if self.projection == "orthographic":
+            if not (math.isfinite(self.height) and self.height > 0):
+                raise ValueError(f"CameraComponent.height must be a positive number, got {self.height!r}")
+            half_h = self.height / 2
+            half_w = half_h * aspect
+            return orthographic(
+                -half_w, half_w, -half_h, half_h, self.near, self.far, depth_range=depth_range, reverse_z=self.reverse_z
+            )
+        raise ValueError(f"CameraComponent.projection must be one of {PROJECTIONS}, got {self.projection!r}")

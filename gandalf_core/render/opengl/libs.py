@@ -1,0 +1,289 @@
+"""OpenGL resource libraries: textures, shaders, meshes and materials, built once and cached by name.
+
+As in the paper: ``renderer.textures.build('bricks', TextureData(...))``,
+``renderer.shaders.build('unlit', 'unlit.vert', 'unlit.frag')``,
+``renderer.materials.build('M_Bricks', MaterialData('unlit', ['bricks']))``. The libraries belong to
+one renderer (one GL context), so a fresh renderer starts empty.
+"""
+
+from __future__ import annotations
+
+import re
+from collections import Counter
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import moderngl
+import numpy as np
+
+from ...resources import CubeTextureData, MaterialData, MeshData, ShaderSource, TextureData
+from ..color import srgb_rgba_to_linear
+from ..errors import ShaderCompileError, missing
+from ..shader_files import load_shader
+
+GL_SRGB8_ALPHA8 = 0x8C43
+GL_RGBA8 = 0x8058
+_WRAP = {"repeat": (True, False), "clamp": (False, False), "mirror": (True, True)}
+# Mesa: "0:12(5): error: ..."; NVIDIA: "0(12) : error ..."; others: "ERROR: 0:12: ..."
+_GL_LINE = re.compile(r"^\s*(?:ERROR:\s*)?\d+[:(](\d+)\)?")
+
+
+# --- textures -------------------------------------------------------------------------------------
+class TextureLib:
+    def __init__(self, ctx: moderngl.Context, stats: Counter[str]) -> None:
+        self.ctx, self.stats = ctx, stats
+        self._items: dict[str, Any] = {}
+
+    def build(self, name: str, data: TextureData | CubeTextureData) -> Any:
+        if name in self._items:
+            return self._items[name]
+        fmt = GL_SRGB8_ALPHA8 if data.srgb else GL_RGBA8
+        chain = data.mip_chain() if data.mipmaps else None
+        if isinstance(data, CubeTextureData):
+            levels = chain or [data.pixels]
+            tex = self.ctx.texture_cube((data.size, data.size), 4, levels[0].tobytes(), internal_format=fmt)
+        else:
+            levels = chain or [data.pixels]
+            tex = self.ctx.texture((data.width, data.height), 4, levels[0].tobytes(), internal_format=fmt)
+        if chain:
+            tex.build_mipmaps(0, len(chain) - 1)  # allocates the levels; we then upload our own (gamma-correct)
+            for level, pixels in enumerate(chain[1:], start=1):
+                tex.write(pixels.tobytes(), level=level)
+        linear = moderngl.LINEAR_MIPMAP_LINEAR if chain else moderngl.LINEAR
+        nearest = moderngl.NEAREST_MIPMAP_NEAREST if chain else moderngl.NEAREST
+        tex.filter = (linear, moderngl.LINEAR) if data.filter == "linear" else (nearest, moderngl.NEAREST)
+        if isinstance(data, TextureData):
+            repeat, _mirror = _WRAP[data.wrap]
+            tex.repeat_x = tex.repeat_y = repeat
+            if data.wrap == "mirror":
+                tex.mirror_x = tex.mirror_y = True  # type: ignore[attr-defined]
+        self.stats["textures_created"] += 1
+        self._items[name] = tex
+        return tex
+
+    def get(self, name: str) -> Any:
+        return self._items[name]
+
+    def __contains__(self, name: str) -> bool:
+        return name in self._items
+
+    def release(self) -> None:
+        for tex in self._items.values():
+            tex.release()
+        self._items.clear()
+
+
+# --- shaders --------------------------------------------------------------------------------------
+@dataclass
+class GLShader:
+    """A linked program with what the renderer needs from its introspection."""
+
+    name: str
+    program: moderngl.Program
+    attributes: dict[int, str]  # location -> attribute name in the shader
+    samplers: list[str]  # sampler uniforms in declaration order
+    uniforms: set[str] = field(default_factory=set)
+
+
+class ShaderLib:
+    def __init__(self, ctx: moderngl.Context, stats: Counter[str]) -> None:
+        self.ctx, self.stats = ctx, stats
+        self._items: dict[str, GLShader] = {}
+
+    def build(
+        self,
+        name: str,
+        vertex: str | Path | ShaderSource,
+        fragment: str | Path | ShaderSource,
+        geometry: str | Path | ShaderSource | None = None,
+        tess_control: str | Path | ShaderSource | None = None,
+        tess_evaluation: str | Path | ShaderSource | None = None,
+    ) -> GLShader:
+        """Compile and link a program from files (or ShaderSource); cached by ``name``."""
+        if name in self._items:
+            return self._items[name]
+        stages = {
+            "vertex_shader": load_shader(vertex, "vertex", "glsl"),
+            "fragment_shader": load_shader(fragment, "fragment", "glsl"),
+        }
+        for key, src, stage in (
+            ("geometry_shader", geometry, "geometry"),
+            ("tess_control_shader", tess_control, "tess_control"),
+            ("tess_evaluation_shader", tess_evaluation, "tess_evaluation"),
+        ):
+            if src is not None:
+                stages[key] = load_shader(src, stage, "glsl")
+        try:
+            program = self.ctx.program(**{k: v.text for k, v in stages.items()})
+        except moderngl.Error as exc:
+            raise ShaderCompileError(_explain_gl_error(name, str(exc), stages)) from None
+        self.stats["shaders_created"] += 1
+        attributes, uniforms = {}, set()
+        for member in program:
+            obj = program[member]
+            if isinstance(obj, moderngl.Attribute):
+                attributes[obj.location] = member
+            elif isinstance(obj, moderngl.Uniform):
+                uniforms.add(member)
+            elif isinstance(obj, moderngl.UniformBlock) and member == "Frame":
+                obj.binding = 0
+        samplers = [s for s in _declared_samplers(stages["fragment_shader"].text) if s in uniforms]
+        for unit, sampler in enumerate(samplers):
+            program[sampler].value = unit
+        shader = GLShader(name, program, attributes, samplers, uniforms)
+        self._items[name] = shader
+        return shader
+
+    def get(self, name: str, referrer: str = "a material") -> GLShader:
+        try:
+            return self._items[name]
+        except KeyError:
+            raise missing("shader", name, list(self._items), referrer) from None
+
+    def __contains__(self, name: str) -> bool:
+        return name in self._items
+
+    def release(self) -> None:
+        for shader in self._items.values():
+            shader.program.release()
+        self._items.clear()
+
+
+def _declared_samplers(glsl: str) -> list[str]:
+    """Sampler uniform names in declaration order (comments stripped; formatting does not matter)."""
+    text = re.sub(r"/\*.*?\*/", " ", glsl, flags=re.S)
+    text = re.sub(r"//[^\n]*", " ", text)
+    tokens = re.findall(r"[A-Za-z_]\w*|[;{}]", text)
+    names = []
+    for i, tok in enumerate(tokens[:-2]):
+        if tok == "uniform" and tokens[i + 1].startswith(("sampler", "isampler", "usampler")):
+            names.append(tokens[i + 2])
+    return names
+
+
+def _explain_gl_error(name: str, message: str, stages: dict[str, ShaderSource]) -> str:
+    """Turn moderngl's compiler log into ``file:line: message`` lines for the stage that failed."""
+    lines = message.splitlines()
+    current: ShaderSource | None = None
+    out = []
+    for line in lines:
+        key = line.strip()
+        if key in stages:
+            current = stages[key]
+            continue
+        match = _GL_LINE.match(line)
+        if match and current is not None:
+            out.append(current.format_error(int(match.group(1)), line.strip()))
+    if not out:
+        files = ", ".join(s.filename for s in stages.values())
+        out.append(f"shader '{name}' ({files}): {message.strip()}")
+    return "\n".join(out)
+
+
+# --- meshes ---------------------------------------------------------------------------------------
+@dataclass
+class GLMesh:
+    name: str
+    data: MeshData
+    index_buffer: moderngl.Buffer | None
+    vertex_buffers: dict[tuple[str, ...], moderngl.Buffer] = field(default_factory=dict)
+
+    @property
+    def count(self) -> int:
+        return self.data.index_count if self.index_buffer is not None else self.data.vertex_count
+
+
+class MeshLib:
+    def __init__(self, ctx: moderngl.Context, stats: Counter[str]) -> None:
+        self.ctx, self.stats = ctx, stats
+        self._items: dict[str, GLMesh] = {}
+
+    def build(self, name: str, data: MeshData) -> GLMesh:
+        if name in self._items:
+            return self._items[name]
+        ibo = None
+        if data.indices is not None:
+            ibo = self.ctx.buffer(np.ascontiguousarray(data.indices, dtype=np.uint32).tobytes())
+            self.stats["buffers_created"] += 1
+        mesh = GLMesh(name, data, ibo)
+        self._items[name] = mesh
+        return mesh
+
+    def vertex_buffer(self, mesh: GLMesh, attributes: tuple[str, ...]) -> tuple[moderngl.Buffer, Any]:
+        """The interleaved buffer with exactly ``attributes`` (built once per attribute set)."""
+        data, layout = mesh.data.interleaved(attributes)
+        if attributes not in mesh.vertex_buffers:
+            mesh.vertex_buffers[attributes] = self.ctx.buffer(data.tobytes())
+            self.stats["buffers_created"] += 1
+        return mesh.vertex_buffers[attributes], layout
+
+    def get(self, name: str) -> GLMesh:
+        return self._items[name]
+
+    def __contains__(self, name: str) -> bool:
+        return name in self._items
+
+    def release(self) -> None:
+        for mesh in self._items.values():
+            for buf in mesh.vertex_buffers.values():
+                buf.release()
+            if mesh.index_buffer is not None:
+                mesh.index_buffer.release()
+        self._items.clear()
+
+
+# --- materials ------------------------------------------------------------------------------------
+class GLMaterial:
+    """A material instance: its shader, textures and uniform values (changeable without rebuilding)."""
+
+    def __init__(self, name: str, data: MaterialData, shader: GLShader, textures: list[Any]) -> None:
+        self.name, self.data, self.shader, self.textures = name, data, shader, textures
+        self.set_values(data.uniform_values())
+
+    def set_values(self, values: dict[str, Any]) -> None:
+        """Update uniform values; ``color`` is sRGB and stored linear, as in the WebGPU backend."""
+        self.values = {k: np.asarray(v, dtype=np.float64) for k, v in values.items()}
+        if "color" in self.values:
+            self.values["color"] = srgb_rgba_to_linear(self.values["color"])
+
+    def set_color(self, color: Any) -> None:
+        self.set_values({**{k: v for k, v in self.values.items() if k != "color"}, "color": color})
+
+    def apply(self) -> None:
+        program = self.shader.program
+        for key, value in self.values.items():
+            uniform = f"u_{key}"
+            if uniform in self.shader.uniforms:
+                program[uniform].value = tuple(value.ravel()) if value.size > 1 else float(value)
+        for unit, texture in enumerate(self.textures):
+            texture.use(location=unit)
+
+
+class MaterialLib:
+    def __init__(self, shaders: ShaderLib, textures: TextureLib, stats: Counter[str]) -> None:
+        self.shaders, self.textures, self.stats = shaders, textures, stats
+        self._items: dict[str, GLMaterial] = {}
+
+    def build(self, name: str, data: MaterialData) -> GLMaterial:
+        if name in self._items:
+            return self._items[name]
+        referrer = f"material '{name}'"
+        shader = self.shaders.get(data.shader, referrer)
+        textures = []
+        for tex_name in data.textures:
+            if tex_name not in self.textures:
+                raise missing("texture", tex_name, list(self.textures._items), referrer)
+            textures.append(self.textures.get(tex_name))
+        material = GLMaterial(name, data, shader, textures)
+        self._items[name] = material
+        return material
+
+    def get(self, name: str) -> GLMaterial:
+        return self._items[name]
+
+    def __contains__(self, name: str) -> bool:
+        return name in self._items
+
+    def release(self) -> None:
+        self._items.clear()

@@ -1,0 +1,20 @@
+"""Locating and loading shader files for both backends (includes resolve in ``render/shaders``)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ..resources import ShaderSource
+
+SNIPPETS_DIR = Path(__file__).resolve().parent / "shaders"
+
+
+def load_shader(source: str | Path | ShaderSource, stage: str | None = None, lang: str | None = None) -> ShaderSource:
+    """A ShaderSource from a path, or from text (then ``lang`` is required), or one given already."""
+    if isinstance(source, ShaderSource):
+        return source
+    if isinstance(source, Path) or (isinstance(source, str) and "\n" not in source and Path(source).suffix):
+        return ShaderSource.from_file(source, stage=stage, include_dirs=[SNIPPETS_DIR])
+    if lang is None:
+        raise ValueError("shader text needs lang='glsl' or 'wgsl'")
+    return ShaderSource.from_text(source, lang, stage, filename=f"<{stage or lang} text>", include_dirs=[SNIPPETS_DIR])

@@ -1,0 +1,338 @@
+"""WebGPU resource libraries: textures, shaders, meshes and materials, built once and cached by name.
+
+As in the paper: ``renderer.textures.build('bricks', TextureData(...))``,
+``renderer.shaders.build('unlit', 'unlit.wgsl')``,
+``renderer.materials.build('M_Bricks', MaterialData('unlit', ['bricks']))``.
+
+Bindings come from the shader itself (:mod:`gandalf_core.render.wgsl_reflect`): group 0 is the engine's
+(binding 0: the frame uniforms), group 1 the material's (binding 0: its uniform struct, then a texture
+and a sampler for each of the material's textures, in order).
+"""
+
+from __future__ import annotations
+
+import re
+from collections import Counter
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import wgpu
+
+from ...resources import CubeTextureData, MaterialData, MeshData, ShaderSource, TextureData
+from ..color import srgb_rgba_to_linear
+from ..errors import ShaderCompileError, missing
+from ..shader_files import load_shader
+from ..wgsl_reflect import Binding, ShaderReflection, WGSLReflectError, reflect
+
+_ADDRESS = {"repeat": "repeat", "clamp": "clamp-to-edge", "mirror": "mirror-repeat"}
+_NAGA_LINE = re.compile(r"(?:wgsl|<[^>]*>|\S+\.wgsl):(\d+):(\d+)")
+MATERIAL_GROUP = 1
+
+
+# --- textures -------------------------------------------------------------------------------------
+@dataclass
+class WGPUTexture:
+    texture: Any
+    view: Any
+    sampler: Any
+
+
+class TextureLib:
+    def __init__(self, device: Any, stats: Counter[str]) -> None:
+        self.device, self.stats = device, stats
+        self._items: dict[str, WGPUTexture] = {}
+
+    def build(self, name: str, data: TextureData | CubeTextureData) -> WGPUTexture:
+        if name in self._items:
+            return self._items[name]
+        cube = isinstance(data, CubeTextureData)
+        chain = data.mip_chain() if data.mipmaps else [data.pixels]
+        height, width = chain[0].shape[-3:-1]
+        layers = 6 if cube else 1
+        texture = self.device.create_texture(
+            size=(width, height, layers),
+            mip_level_count=len(chain),
+            format="rgba8unorm-srgb" if data.srgb else "rgba8unorm",
+            usage=wgpu.TextureUsage.TEXTURE_BINDING | wgpu.TextureUsage.COPY_DST,
+            label=name,
+        )
+        for level, pixels in enumerate(chain):
+            h, w = pixels.shape[-3:-1]
+            self.device.queue.write_texture(
+                {"texture": texture, "mip_level": level, "origin": (0, 0, 0)},
+                np.ascontiguousarray(pixels),
+                {"offset": 0, "bytes_per_row": w * 4, "rows_per_image": h},
+                (w, h, layers),
+            )
+        view = texture.create_view(dimension="cube" if cube else "2d")
+        linear = data.filter == "linear"
+        address = "clamp-to-edge" if cube else _ADDRESS[data.wrap]
+        sampler = self.device.create_sampler(
+            address_mode_u=address, address_mode_v=address, address_mode_w=address,
+            mag_filter="linear" if linear else "nearest",
+            min_filter="linear" if linear else "nearest",
+            mipmap_filter="linear" if linear else "nearest",
+        )
+        self.stats["textures_created"] += 1
+        item = self._items[name] = WGPUTexture(texture, view, sampler)
+        return item
+
+    def get(self, name: str) -> WGPUTexture:
+        return self._items[name]
+
+    def __contains__(self, name: str) -> bool:
+        return name in self._items
+
+    def release(self) -> None:
+        for item in self._items.values():
+            item.texture.destroy()
+        self._items.clear()
+
+
+# --- shaders --------------------------------------------------------------------------------------
+@dataclass
+class WGPUShader:
+    """A compiled module and its reflection."""
+
+    name: str
+    module: Any
+    source: ShaderSource
+    reflection: ShaderReflection
+    vertex_entry: str
+    fragment_entry: str
+    attributes: dict[int, str]  # location -> vertex input name
+    material_layout: Any  # the bind group layout of group 1, or None
+    material_bindings: list[Binding] = field(default_factory=list)
+
+
+class ShaderLib:
+    def __init__(self, device: Any, stats: Counter[str], frame_layout: Any) -> None:
+        self.device, self.stats, self.frame_layout = device, stats, frame_layout
+        self._items: dict[str, WGPUShader] = {}
+
+    def build(self, name: str, source: str | Path | ShaderSource, *, vertex_entry: str | None = None,
+              fragment_entry: str | None = None) -> WGPUShader:
+        """Compile a WGSL module (a ``.wgsl`` path or ShaderSource) and reflect it; cached by ``name``."""
+        if name in self._items:
+            return self._items[name]
+        src = load_shader(source, None, "wgsl")
+        try:
+            reflection = reflect(src.text, src.filename)
+        except WGSLReflectError as exc:
+            line = int(m.group(1)) if (m := re.search(r":(\d+):", str(exc))) else 0
+            raise ShaderCompileError(src.format_error(line, str(exc).split(": ", 1)[-1])) from None
+        try:
+            module = self.device.create_shader_module(code=src.text, label=src.filename)
+        except wgpu.GPUError as exc:
+            raise ShaderCompileError(_explain_naga_error(src, str(exc))) from None
+        self.stats["shaders_created"] += 1
+        vs = _entry(reflection, "vertex", vertex_entry, src.filename)
+        fs = _entry(reflection, "fragment", fragment_entry, src.filename)
+        attributes = {vi.location: vi.name for vi in reflection.entry_points[vs].vertex_inputs}
+        material_bindings = reflection.group(MATERIAL_GROUP)
+        layout = None
+        if material_bindings:
+            layout = self.device.create_bind_group_layout(
+                entries=[_layout_entry(b) for b in material_bindings], label=f"{name} material"
+            )
+        shader = WGPUShader(name, module, src, reflection, vs, fs, attributes, layout, material_bindings)
+        self._items[name] = shader
+        return shader
+
+    def get(self, name: str, referrer: str = "a material") -> WGPUShader:
+        try:
+            return self._items[name]
+        except KeyError:
+            raise missing("shader", name, list(self._items), referrer) from None
+
+    def __contains__(self, name: str) -> bool:
+        return name in self._items
+
+    def release(self) -> None:
+        self._items.clear()
+
+
+def _entry(reflection: ShaderReflection, stage: str, wanted: str | None, filename: str) -> str:
+    names = [e.name for e in reflection.entry_points.values() if e.stage == stage]
+    if wanted is not None:
+        if wanted not in names:
+            raise ShaderCompileError(f"{filename}: no @{stage} entry point named '{wanted}' (have: {names})")
+        return wanted
+    if len(names) != 1:
+        raise ShaderCompileError(
+            f"{filename}: expected exactly one @{stage} entry point, found {len(names)} ({names}); name one"
+        )
+    return names[0]
+
+
+def _explain_naga_error(src: ShaderSource, message: str) -> str:
+    match = _NAGA_LINE.search(message)
+    if match is None:
+        return f"{src.filename}: {message.strip()}"
+    first = next((ln.strip() for ln in message.splitlines() if ln.strip().startswith("error")), message.strip())
+    return src.format_error(int(match.group(1)), first)
+
+
+def _layout_entry(b: Binding) -> dict[str, Any]:
+    stage = wgpu.ShaderStage
+    visibility = 0
+    for name, flag in (("vertex", stage.VERTEX), ("fragment", stage.FRAGMENT), ("compute", stage.COMPUTE)):
+        if name in b.stages:
+            visibility |= flag
+    entry: dict[str, Any] = {"binding": b.binding, "visibility": visibility or stage.FRAGMENT}
+    if b.kind == "uniform":
+        entry["buffer"] = {"type": "uniform"}
+    elif b.kind in ("storage", "read-only-storage"):
+        entry["buffer"] = {"type": b.kind}
+    elif b.kind == "texture":
+        entry["texture"] = {"sample_type": b.sample_type, "view_dimension": b.view_dimension,
+                            "multisampled": b.multisampled}
+    elif b.kind in ("sampler", "comparison-sampler"):
+        entry["sampler"] = {"type": "comparison" if b.kind == "comparison-sampler" else "filtering"}
+    else:
+        raise ShaderCompileError(f"binding '{b.name}' ({b.kind}) is not supported in a material's group")
+    return entry
+
+
+# --- meshes ---------------------------------------------------------------------------------------
+@dataclass
+class WGPUMesh:
+    name: str
+    data: MeshData
+    index_buffer: Any
+    vertex_buffers: dict[tuple[str, ...], tuple[Any, Any]] = field(default_factory=dict)
+
+    @property
+    def count(self) -> int:
+        return self.data.index_count if self.index_buffer is not None else self.data.vertex_count
+
+
+class MeshLib:
+    def __init__(self, device: Any, stats: Counter[str]) -> None:
+        self.device, self.stats = device, stats
+        self._items: dict[str, WGPUMesh] = {}
+
+    def build(self, name: str, data: MeshData) -> WGPUMesh:
+        if name in self._items:
+            return self._items[name]
+        ibo = None
+        if data.indices is not None:
+            ibo = self.device.create_buffer_with_data(
+                data=np.ascontiguousarray(data.indices, dtype=np.uint32), usage=wgpu.BufferUsage.INDEX
+            )
+            self.stats["buffers_created"] += 1
+        mesh = self._items[name] = WGPUMesh(name, data, ibo)
+        return mesh
+
+    def vertex_buffer(self, mesh: WGPUMesh, attributes: tuple[str, ...]) -> tuple[Any, Any]:
+        """The interleaved buffer with exactly ``attributes`` and its layout (built once per attribute set)."""
+        if attributes not in mesh.vertex_buffers:
+            data, layout = mesh.data.interleaved(attributes)
+            buf = self.device.create_buffer_with_data(data=data, usage=wgpu.BufferUsage.VERTEX)
+            mesh.vertex_buffers[attributes] = (buf, layout)
+            self.stats["buffers_created"] += 1
+        return mesh.vertex_buffers[attributes]
+
+    def get(self, name: str) -> WGPUMesh:
+        return self._items[name]
+
+    def __contains__(self, name: str) -> bool:
+        return name in self._items
+
+    def release(self) -> None:
+        for mesh in self._items.values():
+            for buf, _ in mesh.vertex_buffers.values():
+                buf.destroy()
+            if mesh.index_buffer is not None:
+                mesh.index_buffer.destroy()
+        self._items.clear()
+
+
+# --- materials ------------------------------------------------------------------------------------
+class WGPUMaterial:
+    """A material instance: uniform buffer + bind group; values change without touching any pipeline."""
+
+    def __init__(self, name: str, data: MaterialData, shader: WGPUShader, textures: list[WGPUTexture],
+                 device: Any) -> None:
+        self.name, self.data, self.shader, self.device = name, data, shader, device
+        self.uniform_buffer = None
+        self._struct = None
+        entries = []
+        texture_slots = [b for b in shader.material_bindings if b.kind == "texture"]
+        if len(texture_slots) != len(textures):
+            raise ShaderCompileError(
+                f"material '{name}' has {len(textures)} texture(s) but shader '{shader.name}' "
+                f"({shader.source.filename}) declares {len(texture_slots)} in @group(1)"
+            )
+        next_texture = iter(textures)
+        current: WGPUTexture | None = None
+        for b in shader.material_bindings:
+            if b.kind == "uniform":
+                self._struct = shader.reflection.structs[b.struct]
+                self.uniform_buffer = device.create_buffer(
+                    size=max(16, self._struct.size),
+                    usage=wgpu.BufferUsage.UNIFORM | wgpu.BufferUsage.COPY_DST,
+                )
+                entries.append({"binding": b.binding, "resource": {"buffer": self.uniform_buffer}})
+            elif b.kind == "texture":
+                current = next(next_texture)
+                entries.append({"binding": b.binding, "resource": current.view})
+            elif b.kind in ("sampler", "comparison-sampler"):
+                if current is None:
+                    raise ShaderCompileError(
+                        f"shader '{shader.name}': sampler '{b.name}' must follow the texture it samples in @group(1)"
+                    )
+                entries.append({"binding": b.binding, "resource": current.sampler})
+        self.bind_group = (
+            device.create_bind_group(layout=shader.material_layout, entries=entries)
+            if shader.material_layout is not None else None
+        )
+        self.set_values(data.uniform_values())
+
+    def set_values(self, values: dict[str, Any]) -> None:
+        """Write uniform values; ``color`` is sRGB and stored linear, as in the OpenGL backend."""
+        self.values = {k: np.asarray(v, dtype=np.float64) for k, v in values.items()}
+        if "color" in self.values:
+            self.values["color"] = srgb_rgba_to_linear(self.values["color"])
+        if self._struct is not None:
+            names = {f.name for f in self._struct.fields}
+            packed = self._struct.pack({k: v for k, v in self.values.items() if k in names}
+                                       | {f: 0.0 for f in names - set(self.values)})
+            self.device.queue.write_buffer(self.uniform_buffer, 0, packed)
+
+    def set_color(self, color: Any) -> None:
+        self.set_values({**{k: v for k, v in self.values.items() if k != "color"}, "color": color})
+
+
+class MaterialLib:
+    def __init__(self, device: Any, shaders: ShaderLib, textures: TextureLib, stats: Counter[str]) -> None:
+        self.device, self.shaders, self.textures, self.stats = device, shaders, textures, stats
+        self._items: dict[str, WGPUMaterial] = {}
+
+    def build(self, name: str, data: MaterialData) -> WGPUMaterial:
+        if name in self._items:
+            return self._items[name]
+        referrer = f"material '{name}'"
+        shader = self.shaders.get(data.shader, referrer)
+        textures = []
+        for tex_name in data.textures:
+            if tex_name not in self.textures:
+                raise missing("texture", tex_name, list(self.textures._items), referrer)
+            textures.append(self.textures.get(tex_name))
+        material = self._items[name] = WGPUMaterial(name, data, shader, textures, self.device)
+        return material
+
+    def get(self, name: str) -> WGPUMaterial:
+        return self._items[name]
+
+    def __contains__(self, name: str) -> bool:
+        return name in self._items
+
+    def release(self) -> None:
+        for material in self._items.values():
+            if material.uniform_buffer is not None:
+                material.uniform_buffer.destroy()
+        self._items.clear()
+

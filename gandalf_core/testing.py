@@ -1,0 +1,83 @@
+"""Helpers for tests and the autograder: headless renders and image comparison with stated tolerances.
+
+``compare_images`` writes the actual, expected and an amplified difference image under
+``tests/_failures/`` (or ``$GANDALF_FAILURE_DIR``) when a comparison fails, so a student or CI log can
+show what went wrong. Set ``GANDALF_UPDATE_REFERENCES=1`` to (re)write reference images.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+
+from .app import Application
+
+FAILURE_DIR = Path(os.environ.get("GANDALF_FAILURE_DIR", Path(__file__).resolve().parent.parent / "tests" / "_failures"))
+
+
+def render_frames(create_app: Callable[..., Application], frames: int = 1, **kwargs: object) -> np.ndarray:
+    """Run a step variant's ``create_app(headless=True, **kwargs)`` for ``frames`` frames; return the image."""
+    with create_app(headless=True, **kwargs) as app:
+        app.run(frames=frames)
+        return app.capture()
+
+
+def psnr(a: np.ndarray, b: np.ndarray) -> float:
+    """Peak signal-to-noise ratio in dB of two uint8 images (RGB only); ``inf`` when identical."""
+    if a.shape != b.shape:
+        raise ValueError(f"image shapes differ: {a.shape} vs {b.shape}")
+    diff = a[..., :3].astype(np.float64) - b[..., :3].astype(np.float64)
+    mse = float(np.mean(diff * diff))
+    return float("inf") if mse == 0.0 else 10.0 * np.log10(255.0**2 / mse)
+
+
+def compare_images(actual: np.ndarray, expected: np.ndarray, name: str, *, min_psnr: float = 40.0,
+                   max_diff: int | None = None) -> float:
+    """Assert two images agree (PSNR ≥ ``min_psnr`` dB, and no channel off by more than ``max_diff``).
+
+    On failure the three images are saved as ``<name>-actual/expected/diff.png`` and an AssertionError
+    names them. Returns the PSNR.
+    """
+    value = psnr(actual, expected)
+    worst = int(np.abs(actual[..., :3].astype(int) - expected[..., :3].astype(int)).max())
+    ok = value >= min_psnr and (max_diff is None or worst <= max_diff)
+    if not ok:
+        paths = save_failure(actual, expected, name)
+        raise AssertionError(
+            f"{name}: images differ: PSNR {value:.1f} dB (need ≥ {min_psnr}), largest channel difference {worst}"
+            + (f" (allowed {max_diff})" if max_diff is not None else "")
+            + f"; see {paths[0].parent}"
+        )
+    return value
+
+
+def compare_to_reference(actual: np.ndarray, reference: str | Path, *, min_psnr: float = 40.0,
+                         max_diff: int | None = None) -> float:
+    """Compare with a committed reference PNG (written instead when ``GANDALF_UPDATE_REFERENCES=1``)."""
+    from PIL import Image
+
+    reference = Path(reference)
+    if os.environ.get("GANDALF_UPDATE_REFERENCES") == "1" or not reference.exists():
+        if not reference.exists() and os.environ.get("GANDALF_UPDATE_REFERENCES") != "1":
+            raise AssertionError(f"no reference image {reference}; run with GANDALF_UPDATE_REFERENCES=1 to create it")
+        reference.parent.mkdir(parents=True, exist_ok=True)
+        Image.fromarray(actual, "RGBA").save(reference)
+        return float("inf")
+    expected = np.asarray(Image.open(reference).convert("RGBA"))
+    return compare_images(actual, expected, reference.stem, min_psnr=min_psnr, max_diff=max_diff)
+
+
+def save_failure(actual: np.ndarray, expected: np.ndarray, name: str) -> list[Path]:
+    from PIL import Image
+
+    FAILURE_DIR.mkdir(parents=True, exist_ok=True)
+    diff = np.abs(actual.astype(int) - expected.astype(int))[..., :3]
+    diff = np.clip(diff * 8, 0, 255).astype(np.uint8)
+    paths = [FAILURE_DIR / f"{name}-{kind}.png" for kind in ("actual", "expected", "diff")]
+    Image.fromarray(actual, "RGBA").save(paths[0])
+    Image.fromarray(expected, "RGBA").save(paths[1])
+    Image.fromarray(diff, "RGB").save(paths[2])
+    return paths

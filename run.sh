@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# gandalf's two entry points; each sets everything up first (scripts/setup.sh).
+#   ./run.sh tour [--out DIR]   the course tour: windows with a display, PNGs in DIR (default out/) without
+#   ./run.sh test [PYTEST ARGS] the whole test suite (window tests run under Xvfb when it is installed)
+set -euo pipefail
+cd "$(dirname "$0")"
+scripts/setup.sh
+export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
+chmod 700 "$XDG_RUNTIME_DIR"
+cmd=${1:-tour}
+shift || true
+case "$cmd" in
+    tour)
+        exec .venv/bin/python -m gandalf_core.tour "$@"
+        ;;
+    test)
+        if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null 2>&1; then
+            exec xvfb-run -a -s "-screen 0 1280x720x24" .venv/bin/python -m pytest "$@"
+        fi
+        exec .venv/bin/python -m pytest "$@"
+        ;;
+    *)
+        echo "usage: ./run.sh tour [--out DIR] | ./run.sh test [pytest args]" >&2
+        exit 2
+        ;;
+esac

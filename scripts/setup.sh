@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Set up everything gandalf needs on a fresh Debian/Ubuntu machine, idempotently:
+#   system packages (software OpenGL/EGL + Vulkan for headless rendering, Xvfb for windows) when root,
+#   a virtual environment in .venv, and the project with its development extras.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+APT_PACKAGES=(libegl1 libegl-mesa0 libgl1 libgl1-mesa-dri mesa-vulkan-drivers libvulkan1 xvfb xauth x11-utils)
+if command -v dpkg-query >/dev/null 2>&1; then
+    missing=()
+    for pkg in "${APT_PACKAGES[@]}"; do
+        dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || missing+=("$pkg")
+    done
+    if [ ${#missing[@]} -gt 0 ]; then
+        if [ "$(id -u)" = 0 ]; then
+            echo "setup: installing ${missing[*]}"
+            export DEBIAN_FRONTEND=noninteractive
+            apt-get update -qq
+            apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+        else
+            echo "setup: please install: sudo apt-get install ${missing[*]}" >&2
+        fi
+    fi
+fi
+
+PYTHON=${PYTHON:-python3}
+if [ ! -x .venv/bin/python ]; then
+    "$PYTHON" -m venv .venv
+fi
+stamp=.venv/.gandalf-installed
+if [ ! -f "$stamp" ] || [ pyproject.toml -nt "$stamp" ]; then
+    .venv/bin/python -m pip install -q --upgrade pip
+    .venv/bin/python -m pip install -q -e ".[dev]"
+    touch "$stamp"
+fi
