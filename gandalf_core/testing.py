@@ -15,7 +15,9 @@ import numpy as np
 
 from .app import Application
 
-FAILURE_DIR = Path(os.environ.get("GANDALF_FAILURE_DIR", Path(__file__).resolve().parent.parent / "tests" / "_failures"))
+FAILURE_DIR = Path(
+    os.environ.get("GANDALF_FAILURE_DIR", Path(__file__).resolve().parent.parent / "tests" / "_failures")
+)
 
 
 def render_frames(create_app: Callable[..., Application], frames: int = 1, **kwargs: object) -> np.ndarray:
@@ -34,8 +36,9 @@ def psnr(a: np.ndarray, b: np.ndarray) -> float:
     return float("inf") if mse == 0.0 else 10.0 * np.log10(255.0**2 / mse)
 
 
-def compare_images(actual: np.ndarray, expected: np.ndarray, name: str, *, min_psnr: float = 40.0,
-                   max_diff: int | None = None) -> float:
+def compare_images(
+    actual: np.ndarray, expected: np.ndarray, name: str, *, min_psnr: float = 40.0, max_diff: int | None = None
+) -> float:
     """Assert two images agree (PSNR ≥ ``min_psnr`` dB, and no channel off by more than ``max_diff``).
 
     On failure the three images are saved as ``<name>-actual/expected/diff.png`` and an AssertionError
@@ -54,8 +57,9 @@ def compare_images(actual: np.ndarray, expected: np.ndarray, name: str, *, min_p
     return value
 
 
-def compare_to_reference(actual: np.ndarray, reference: str | Path, *, min_psnr: float = 40.0,
-                         max_diff: int | None = None) -> float:
+def compare_to_reference(
+    actual: np.ndarray, reference: str | Path, *, min_psnr: float = 40.0, max_diff: int | None = None
+) -> float:
     """Compare with a committed reference PNG (written instead when ``GANDALF_UPDATE_REFERENCES=1``)."""
     from PIL import Image
 

@@ -5,7 +5,7 @@ Both take the same path: every frame is drawn offscreen and then, in a window, p
 
 Frame order: apply a pending scene switch, poll input, handle resizes, then run the active scene's
 systems in their order — the scene's own systems, then the core ones the app adds when missing
-(TransformSystem, then the RenderSystem, last).
+(TransformSystem, LightSystem), then the RenderSystem, last.
 """
 
 from __future__ import annotations
@@ -73,10 +73,15 @@ class Application:
         if id(scene) in self._prepared:
             return
         from ..render import RenderSystem
-        from ..systems import TransformSystem
+        from ..systems import LightSystem, TransformSystem
 
-        if not any(isinstance(s, TransformSystem) for s in scene.systems):
-            scene.add_system(TransformSystem())
+        systems = scene.systems
+        if not any(isinstance(s, TransformSystem) for s in systems):
+            # World matrices must be current before a scene's own light system reads them.
+            lights = [i for i, s in enumerate(systems) if isinstance(s, LightSystem)]
+            scene.add_system(TransformSystem(), index=lights[0] if lights else None)
+        if not any(isinstance(s, LightSystem) for s in systems):
+            scene.add_system(LightSystem())
         scene.add_system(RenderSystem(self.renderer))
         self._prepared.add(id(scene))
 

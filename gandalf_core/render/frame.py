@@ -1,13 +1,13 @@
-"""What a frame hands a renderer: camera uniforms and instanced draw batches (written once for both APIs).
+"""What a frame hands a renderer: camera and light uniforms, and instanced draw batches (written once for
+both APIs).
 
 Per-instance data is the entity's world matrix as three float32 ``vec4`` rows (the affine part; the
 last row is always 0 0 0 1): 48 bytes an instance, uploaded in one write per frame. Shaders rebuild
 the model matrix from the rows and the normal matrix from cross products of its columns, so the CPU
 never inverts a matrix per entity.
 
-The frame uniform block is identical in GLSL (std140) and WGSL, because it holds only mat4/vec4::
-
-    view: mat4, projection: mat4, camera_position: vec4, time: vec4 (x = seconds, y = frame time)
+The frame and light uniform blocks are the same bytes in GLSL (std140) and WGSL because they hold
+only mat4/vec4 members and vec4 arrays (see ``shaders/frame.glsl`` and ``shaders/frame.wgsl``).
 """
 
 from __future__ import annotations
@@ -17,7 +17,24 @@ from dataclasses import dataclass
 import numpy as np
 
 INSTANCE_FLOATS = 12
-FRAME_FLOATS = 16 + 16 + 4 + 4
+# view, projection, camera_position, time, clip_to_direction, depth
+FRAME_FLOATS = 16 + 16 + 4 + 4 + 16 + 4
+MAX_LIGHTS = 64
+# count (ivec4), ambient, position[MAX_LIGHTS], color[MAX_LIGHTS]
+LIGHTS_BYTES = 16 + 16 + 16 * MAX_LIGHTS * 2
+
+
+@dataclass
+class FrameData:
+    """Everything a renderer needs to draw one frame."""
+
+    clear_color: np.ndarray  # linear RGBA
+    frame: bytes  # the frame uniform block
+    lights: bytes  # the lights uniform block
+    batches: list[DrawBatch]
+    instances: np.ndarray | None  # (total instances, 12) float32
+    skybox: str | None = None  # cube texture name, or None for no sky pass
+    reverse_z: bool = False
 
 
 @dataclass
@@ -34,8 +51,20 @@ class DrawBatch:
         return len(self.rows)
 
 
-def pack_frame(view: np.ndarray, projection: np.ndarray, camera_position: np.ndarray, time: float, dt: float) -> bytes:
-    """The frame uniform block as bytes (matrices column-major, as both APIs expect)."""
+def pack_frame(
+    view: np.ndarray,
+    projection: np.ndarray,
+    camera_position: np.ndarray,
+    time: float,
+    dt: float,
+    depth_ends: tuple[float, float] = (-1.0, 1.0),
+) -> bytes:
+    """The frame uniform block as bytes (matrices column-major, as both APIs expect).
+
+    ``depth_ends`` are the NDC depths of the near and far planes (swapped by reverse-Z); the skybox
+    draws at the far one. ``clip_to_direction`` maps a clip-space point on the far plane to a world
+    direction (the inverse of projection × the view's rotation).
+    """
     data = np.zeros(FRAME_FLOATS, dtype=np.float32)
     data[0:16] = view.T.ravel()
     data[16:32] = projection.T.ravel()
@@ -43,6 +72,15 @@ def pack_frame(view: np.ndarray, projection: np.ndarray, camera_position: np.nda
     data[35] = 1.0
     data[36] = time
     data[37] = dt
+    rotation_only = np.eye(4)
+    rotation_only[:3, :3] = view[:3, :3]
+    try:
+        clip_to_direction = np.linalg.inv(projection @ rotation_only)
+    except np.linalg.LinAlgError:
+        clip_to_direction = np.eye(4)
+    data[40:56] = clip_to_direction.T.ravel()
+    data[56] = depth_ends[0]
+    data[57] = depth_ends[1]
     return data.tobytes()
 
 

@@ -1,5 +1,5 @@
 """The render system: the last system of a frame. Backend-neutral: it reads components, groups
-entities into instanced batches, gathers their world matrices, and hands both to the renderer.
+entities into instanced batches, gathers their world matrices, and hands all of it to the renderer.
 
 Batches are planned again only when components come or go; every frame costs one numpy gather
 of the world matrices and one upload, whatever the number of entities.
@@ -9,15 +9,23 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..components import ClearColorComponent, MaterialComponent, MeshComponent, TransformComponent
-from ..components.camera import CameraComponent
+from ..components import (
+    CameraComponent,
+    ClearColorComponent,
+    MaterialComponent,
+    MeshComponent,
+    SkyboxComponent,
+    TransformComponent,
+)
 from ..ecs import System
-from ..math import invert_affine
+from ..math import depth_range, invert_affine
+from ..systems.light_system import LightSystem, pack_lights
 from .base import Renderer
 from .color import srgb_rgba_to_linear
-from .frame import DrawBatch, pack_frame, pack_instances
+from .frame import DrawBatch, FrameData, pack_frame, pack_instances
 
 DEFAULT_CLEAR = (0.0, 0.0, 0.0, 1.0)
+_NO_LIGHTS = pack_lights([])
 
 
 class RenderSystem(System):
@@ -32,26 +40,30 @@ class RenderSystem(System):
         self._instances: np.ndarray | None = None
 
     def on_create_system(self) -> None:
-        self._backgrounds = self.scene.query(ClearColorComponent)
-        self._cameras = self.scene.query(CameraComponent, TransformComponent)
+        scene = self.scene
+        self._backgrounds = scene.query(ClearColorComponent)
+        self._cameras = scene.query(CameraComponent, TransformComponent)
+        self._skyboxes = scene.query(SkyboxComponent)
 
     def clear_color(self) -> np.ndarray:
         """The first ClearColorComponent's colour in linear light (black when the scene has none)."""
         comps = self._backgrounds.components
         return srgb_rgba_to_linear(comps[0][0].color if comps else DEFAULT_CLEAR)
 
-    def camera(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """(view, projection, eye position) of the primary camera; identity when the scene has none.
+    def primary_camera(self) -> tuple[object, CameraComponent, TransformComponent] | None:
+        for entity, (camera, transform) in zip(self._cameras.entities, self._cameras.components):
+            if camera.primary:
+                return entity, camera, transform
+        return None
+
+    def camera(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool]:
+        """(view, projection, eye position, reverse_z) of the primary camera; identity when there is none.
 
         With no camera, positions are already clip-space coordinates (step 02 starts there).
         """
-        chosen = None
-        for entity, (camera, transform) in zip(self._cameras.entities, self._cameras.components):
-            if camera.primary:
-                chosen = (entity, camera, transform)
-                break
+        chosen = self.primary_camera()
         if chosen is None:
-            return np.eye(4), np.eye(4), np.zeros(3)
+            return np.eye(4), np.eye(4), np.zeros(3), False
         entity, camera, transform = chosen
         world = transform.world
         try:
@@ -59,7 +71,7 @@ class RenderSystem(System):
         except ValueError as exc:
             raise ValueError(f"camera {self.scene.describe(entity)}: its world matrix is singular ({exc})") from None
         projection = camera.projection_matrix(self.renderer.depth_range, self.renderer.aspect)
-        return view, projection, world[:3, 3].copy()
+        return view, projection, world[:3, 3].copy(), camera.reverse_z
 
     def plan(self) -> None:
         """Group entities by (material, mesh); sorted so that batches sharing a shader are adjacent."""
@@ -78,14 +90,30 @@ class RenderSystem(System):
         self._plan_version = self.scene.membership_version
 
     def on_update_system(self, ts: float) -> None:
+        self.renderer.render(self.frame_data(ts), self.scene.assets)
+
+    def frame_data(self, ts: float) -> FrameData:
+        """Collect this frame's uniforms and instance data."""
         scene = self.scene
         if self._plan_version != scene.membership_version:
             self.plan()
-        view, projection, eye = self.camera()
+        view, projection, eye, reverse_z = self.camera()
+        lo, hi = depth_range(self.renderer.depth_range)
+        depth_ends = (hi, lo) if reverse_z else (lo, hi)
         app = scene.app
-        time = app.clock.time if app is not None else 0.0
-        frame = pack_frame(view, projection, eye, time, ts)
+        frame = pack_frame(view, projection, eye, app.clock.time if app is not None else 0.0, ts, depth_ends)
         if self.batches:
             world = scene.store(TransformComponent).columns["world"]
             self._instances = pack_instances(world, self._rows, self._instances)
-        self.renderer.render(self.clear_color(), frame, self.batches, self._instances, scene.assets)
+        light_systems = [s for s in scene.systems if isinstance(s, LightSystem)]
+        lights = light_systems[0].data if light_systems else _NO_LIGHTS
+        skyboxes = self._skyboxes.components
+        return FrameData(
+            clear_color=self.clear_color(),
+            frame=frame,
+            lights=lights,
+            batches=self.batches,
+            instances=self._instances if self.batches else None,
+            skybox=skyboxes[0][0].texture if skyboxes else None,
+            reverse_z=reverse_z,
+        )

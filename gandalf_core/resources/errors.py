@@ -12,7 +12,7 @@ class ResourceError(ValueError):
     """Invalid resource data or an unreadable resource file.
 
     The message reads ``"<resource>: <field>: <detail>"``, for example
-    ``"texture 'bricks.png': wrap: 'tile' is not one of 'repeat', 'clamp', 'mirror'"``.
+    ``"texture 'bricks.png': wrap: 'tile' is not one of 'repeat', 'clamp'"``.
     The parts stay available as attributes for tools (the editor, the grader) that show them separately.
     """
 

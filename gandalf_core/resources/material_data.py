@@ -46,7 +46,8 @@ def _floats(label: str, field_name: str, value: Any) -> np.ndarray:
 class MaterialData:
     """How a mesh is drawn: shader name, texture names, colour, shader parameters and fixed-function state.
 
-    ``color`` takes 3 or 4 floats (3 get alpha 1) in linear RGB; values above 1 are allowed (emissive looks).
+    ``color`` takes 3 or 4 floats (3 get alpha 1) as sRGB values, like every colour a scene sets (a colour picker
+    shows them); the renderers decode them to linear light for the shaders. Values above 1 are allowed.
     ``params`` map uniform names to a float or a flat sequence of up to 16 floats (vec2..vec4, mat3, mat4,
     row-major when flattened from a matrix); the name ``"color"`` is reserved for ``color``.
     All fields are validated on construction and stored immutably; use :meth:`with_color` or

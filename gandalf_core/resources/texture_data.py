@@ -21,7 +21,7 @@ import numpy as np
 
 from gandalf_core.resources.errors import ResourceError
 
-WRAP_MODES = ("repeat", "clamp", "mirror")
+WRAP_MODES = ("repeat", "clamp")
 FILTER_MODES = ("linear", "nearest")
 CUBE_FACE_NAMES = ("+X", "-X", "+Y", "-Y", "+Z", "-Z")
 

@@ -62,7 +62,7 @@ def test_resource_error_is_value_error_with_parts() -> None:
 
 
 @pytest.mark.parametrize(
-    ("field", "value", "allowed"), [("wrap", "tile", "'mirror'"), ("filter", "cubic", "'nearest'")]
+    ("field", "value", "allowed"), [("wrap", "tile", "'clamp'"), ("filter", "cubic", "'nearest'")]
 )
 def test_texture_settings_validation_names_field_and_allowed_values(field: str, value: str, allowed: str) -> None:
     with pytest.raises(ResourceError, match=rf"texture 'bricks': {field}: '{value}'.*{allowed}"):

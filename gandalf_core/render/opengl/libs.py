@@ -23,8 +23,9 @@ from ..errors import ShaderCompileError, missing
 from ..shader_files import load_shader
 
 GL_SRGB8_ALPHA8 = 0x8C43
+# The engine's uniform blocks and their binding points (the same numbers as WGSL's @group(0) bindings).
+UNIFORM_BLOCKS = {"Frame": 0, "Lights": 1}
 GL_RGBA8 = 0x8058
-_WRAP = {"repeat": (True, False), "clamp": (False, False), "mirror": (True, True)}
 # Mesa: "0:12(5): error: ..."; NVIDIA: "0(12) : error ..."; others: "ERROR: 0:12: ..."
 _GL_LINE = re.compile(r"^\s*(?:ERROR:\s*)?\d+[:(](\d+)\)?")
 
@@ -47,17 +48,17 @@ class TextureLib:
             levels = chain or [data.pixels]
             tex = self.ctx.texture((data.width, data.height), 4, levels[0].tobytes(), internal_format=fmt)
         if chain:
-            tex.build_mipmaps(0, len(chain) - 1)  # allocates the levels; we then upload our own (gamma-correct)
-            for level, pixels in enumerate(chain[1:], start=1):
-                tex.write(pixels.tobytes(), level=level)
+            tex.build_mipmaps(0, len(chain) - 1)
+            if not isinstance(data, CubeTextureData):
+                # Replace the driver's levels with ours (averaged in linear light), as the WebGPU backend
+                # uploads; moderngl cannot write the levels of a cube map, which keep the driver's.
+                for level, pixels in enumerate(chain[1:], start=1):
+                    tex.write(pixels.tobytes(), level=level)
         linear = moderngl.LINEAR_MIPMAP_LINEAR if chain else moderngl.LINEAR
         nearest = moderngl.NEAREST_MIPMAP_NEAREST if chain else moderngl.NEAREST
         tex.filter = (linear, moderngl.LINEAR) if data.filter == "linear" else (nearest, moderngl.NEAREST)
         if isinstance(data, TextureData):
-            repeat, _mirror = _WRAP[data.wrap]
-            tex.repeat_x = tex.repeat_y = repeat
-            if data.wrap == "mirror":
-                tex.mirror_x = tex.mirror_y = True  # type: ignore[attr-defined]
+            tex.repeat_x = tex.repeat_y = data.wrap == "repeat"
         self.stats["textures_created"] += 1
         self._items[name] = tex
         return tex
@@ -126,9 +127,10 @@ class ShaderLib:
                 attributes[obj.location] = member
             elif isinstance(obj, moderngl.Uniform):
                 uniforms.add(member)
-            elif isinstance(obj, moderngl.UniformBlock) and member == "Frame":
-                obj.binding = 0
-        samplers = [s for s in _declared_samplers(stages["fragment_shader"].text) if s in uniforms]
+            elif isinstance(obj, moderngl.UniformBlock) and member in UNIFORM_BLOCKS:
+                obj.binding = UNIFORM_BLOCKS[member]
+        declared = [name for src in stages.values() for name in _declared_samplers(src.text)]
+        samplers = [s for s in dict.fromkeys(declared) if s in uniforms]
         for unit, sampler in enumerate(samplers):
             program[sampler].value = unit
         shader = GLShader(name, program, attributes, samplers, uniforms)

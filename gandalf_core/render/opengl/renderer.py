@@ -11,16 +11,21 @@ from typing import Any
 import moderngl
 import numpy as np
 
+from ...resources import MaterialData
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
 from ..base import Renderer
 from ..errors import missing
-from ..frame import FRAME_FLOATS, INSTANCE_FLOATS, DrawBatch
+from ..frame import FRAME_FLOATS, INSTANCE_FLOATS, LIGHTS_BYTES, FrameData
+from ..shader_files import SNIPPETS_DIR
 from .libs import GLMaterial, GLMesh, GLShader, MaterialLib, MeshLib, ShaderLib, TextureLib
 
 GL_FRAMEBUFFER_SRGB = 0x8DB9
 GL_SRGB8_ALPHA8 = 0x8C43
 INSTANCE_STRIDE = INSTANCE_FLOATS * 4
+SKY_SHADER = "gandalf.skybox"
+# The sky is drawn where nothing else is: depth test at the far plane, no depth writes, no culling.
+SKY_STATE = MaterialData(SKY_SHADER, cull="none", depth_write=False, name="sky")
 
 
 class OpenGLRenderer(Renderer):
@@ -41,6 +46,8 @@ class OpenGLRenderer(Renderer):
         self.meshes = MeshLib(self.ctx, self.stats)
         self.materials = MaterialLib(self.shaders, self.textures, self.stats)
         self._frame_ubo = self.ctx.buffer(reserve=FRAME_FLOATS * 4)
+        self._lights_ubo = self.ctx.buffer(reserve=LIGHTS_BYTES)
+        self._sky: tuple[GLShader, moderngl.VertexArray] | None = None
         self._instance_buffer: moderngl.Buffer | None = None
         self._vaos: dict[tuple[str, str], moderngl.VertexArray] = {}
         self._state: tuple[Any, ...] | None = None
@@ -61,26 +68,25 @@ class OpenGLRenderer(Renderer):
             obj.release()
 
     # --- a frame ------------------------------------------------------------------------------------
-    def render(
-        self, clear_color: np.ndarray, frame: bytes, batches: list[DrawBatch], instances: np.ndarray | None,
-        assets: Assets, reverse_z: bool = False,
-    ) -> None:
+    def render(self, data: FrameData, assets: Assets) -> None:
         self.stats["draw_calls"] = 0
         fbo = self._fbo
         fbo.use()
         self.ctx.enable_direct(GL_FRAMEBUFFER_SRGB)
         fbo.depth_mask = True
-        r, g, b, a = (float(x) for x in clear_color)
-        fbo.clear(r, g, b, a, depth=0.0 if reverse_z else 1.0)
-        self._frame_ubo.write(frame)
+        r, g, b, a = (float(x) for x in data.clear_color)
+        fbo.clear(r, g, b, a, depth=0.0 if data.reverse_z else 1.0)
+        self._frame_ubo.write(data.frame)
         self._frame_ubo.bind_to_uniform_block(0)
-        if batches:
-            self._upload_instances(instances)
+        self._lights_ubo.write(data.lights)
+        self._lights_ubo.bind_to_uniform_block(1)
+        if data.batches:
+            self._upload_instances(data.instances)
         self._state = None
-        for batch in batches:
+        for batch in data.batches:
             material = self._material(batch.material, assets)
             mesh = self._mesh(batch.mesh, assets)
-            self._apply_state(material, reverse_z)
+            self._apply_state(material.data, data.reverse_z)
             material.apply()
             vao = self._vertex_array(material.shader, mesh)
             offset = batch.first_instance * INSTANCE_STRIDE
@@ -90,7 +96,21 @@ class OpenGLRenderer(Renderer):
                              stride=INSTANCE_STRIDE, divisor=1)
             vao.render(moderngl.TRIANGLES, vertices=mesh.count, instances=batch.count)
             self.stats["draw_calls"] += 1
+        if data.skybox is not None:
+            self._draw_sky(data.skybox, assets, data.reverse_z)
         self._present()
+
+    def _draw_sky(self, texture_name: str, assets: Assets, reverse_z: bool) -> None:
+        """The sky pass, built on first use: a full-screen triangle at the far plane, after opaque geometry."""
+        if self._sky is None:
+            shader = self.shaders.build(SKY_SHADER, SNIPPETS_DIR / "skybox.vert", SNIPPETS_DIR / "skybox.frag")
+            self._sky = (shader, self.ctx.vertex_array(shader.program, []))
+        shader, vao = self._sky
+        texture = self._texture(texture_name, assets, "a SkyboxComponent")
+        self._apply_state(SKY_STATE, reverse_z)
+        texture.use(location=0)
+        vao.render(moderngl.TRIANGLES, vertices=3)
+        self.stats["draw_calls"] += 1
 
     def _upload_instances(self, instances: np.ndarray) -> None:
         nbytes = instances.nbytes
@@ -102,8 +122,7 @@ class OpenGLRenderer(Renderer):
             self.stats["buffers_created"] += 1
         self._instance_buffer.write(instances)
 
-    def _apply_state(self, material: GLMaterial, reverse_z: bool) -> None:
-        data = material.data
+    def _apply_state(self, data: MaterialData, reverse_z: bool) -> None:
         state = (data.cull, data.depth_test, data.depth_write, data.blend, reverse_z)
         if state == self._state:
             return
@@ -147,6 +166,13 @@ class OpenGLRenderer(Renderer):
             if tex not in self.textures and tex in assets.textures:
                 self.textures.build(tex, assets.textures[tex])
         return self.materials.build(name, data)
+
+    def _texture(self, name: str, assets: Assets, referrer: str) -> Any:
+        if name in self.textures:
+            return self.textures.get(name)
+        if name not in assets.textures:
+            raise missing("texture", name, list(assets.textures), referrer)
+        return self.textures.build(name, assets.textures[name])
 
     def _mesh(self, name: str, assets: Assets) -> GLMesh:
         if name in self.meshes:
@@ -197,5 +223,6 @@ class OpenGLRenderer(Renderer):
         if self._instance_buffer is not None:
             self._instance_buffer.release()
         self._frame_ubo.release()
+        self._lights_ubo.release()
         self._release_targets()
         self.ctx.release()

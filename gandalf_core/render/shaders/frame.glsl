@@ -1,7 +1,18 @@
-// Per-frame uniforms, the same bytes as frame.wgsl (see gandalf_core/render/frame.py).
+// Per-frame uniforms (binding 0) and lights (binding 1): the same bytes as frame.wgsl
+// (packed in gandalf_core/render/frame.py and gandalf_core/systems/light_system.py).
 layout(std140) uniform Frame {
     mat4 u_view;
     mat4 u_projection;
     vec4 u_camera_position;
-    vec4 u_time;  // x: seconds since start, y: this frame's time step
+    vec4 u_time;               // x: seconds since start, y: this frame's time step
+    mat4 u_clip_to_direction;  // clip-space point on the far plane -> world direction (skyboxes)
+    vec4 u_depth;              // x: NDC depth of the near plane, y: of the far plane
+};
+
+#define MAX_LIGHTS 64
+layout(std140) uniform Lights {
+    ivec4 u_light_count;                // x: number of lights in use
+    vec4 u_ambient;                     // rgb: ambient light (linear)
+    vec4 u_light_position[MAX_LIGHTS];  // xyz: position (w = 1) or direction towards the light (w = 0)
+    vec4 u_light_color[MAX_LIGHTS];     // rgb: linear colour × intensity, a: range (0 = no falloff)
 };

@@ -1,8 +1,20 @@
-// Per-frame uniforms, the same bytes as frame.glsl (see gandalf_core/render/frame.py).
+// Per-frame uniforms (binding 0) and lights (binding 1): the same bytes as frame.glsl
+// (packed in gandalf_core/render/frame.py and gandalf_core/systems/light_system.py).
 struct Frame {
     view: mat4x4<f32>,
     projection: mat4x4<f32>,
     camera_position: vec4<f32>,
-    time: vec4<f32>,  // x: seconds since start, y: this frame's time step
+    time: vec4<f32>,               // x: seconds since start, y: this frame's time step
+    clip_to_direction: mat4x4<f32>, // clip-space point on the far plane -> world direction (skyboxes)
+    depth: vec4<f32>,              // x: NDC depth of the near plane, y: of the far plane
 };
 @group(0) @binding(0) var<uniform> frame: Frame;
+
+const MAX_LIGHTS: u32 = 64u;
+struct Lights {
+    count: vec4<i32>,                          // x: number of lights in use
+    ambient: vec4<f32>,                        // rgb: ambient light (linear)
+    position: array<vec4<f32>, MAX_LIGHTS>,    // xyz: position (w = 1) or direction towards the light (w = 0)
+    color: array<vec4<f32>, MAX_LIGHTS>,       // rgb: linear colour × intensity, a: range (0 = no falloff)
+};
+@group(0) @binding(1) var<uniform> lights: Lights;

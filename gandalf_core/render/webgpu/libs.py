@@ -26,7 +26,7 @@ from ..errors import ShaderCompileError, missing
 from ..shader_files import load_shader
 from ..wgsl_reflect import Binding, ShaderReflection, WGSLReflectError, reflect
 
-_ADDRESS = {"repeat": "repeat", "clamp": "clamp-to-edge", "mirror": "mirror-repeat"}
+_ADDRESS = {"repeat": "repeat", "clamp": "clamp-to-edge"}
 _NAGA_LINE = re.compile(r"(?:wgsl|<[^>]*>|\S+\.wgsl):(\d+):(\d+)")
 MATERIAL_GROUP = 1
 

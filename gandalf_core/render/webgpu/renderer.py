@@ -13,17 +13,22 @@ from typing import Any
 import numpy as np
 import wgpu
 
+from ...resources import MaterialData
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
 from ..base import Renderer
 from ..errors import missing
-from ..frame import FRAME_FLOATS, INSTANCE_FLOATS, DrawBatch
+from ..frame import FRAME_FLOATS, INSTANCE_FLOATS, LIGHTS_BYTES, FrameData
+from ..shader_files import SNIPPETS_DIR
 from .device import request_device
-from .libs import MaterialLib, MeshLib, ShaderLib, TextureLib, WGPUMaterial, WGPUMesh
+from .libs import MaterialLib, MeshLib, ShaderLib, TextureLib, WGPUMaterial, WGPUMesh, WGPUShader
 
 COLOR_FORMAT = "rgba8unorm-srgb"
 DEPTH_FORMAT = "depth32float"
 INSTANCE_STRIDE = INSTANCE_FLOATS * 4
+SKY_SHADER = "gandalf.skybox"
+# The sky is drawn where nothing else is: depth test at the far plane, no depth writes, no culling.
+SKY_STATE = MaterialData(SKY_SHADER, cull="none", depth_write=False, name="sky")
 _BLEND = {
     "alpha": {"color": {"src_factor": "src-alpha", "dst_factor": "one-minus-src-alpha", "operation": "add"},
               "alpha": {"src_factor": "one", "dst_factor": "one-minus-src-alpha", "operation": "add"}},
@@ -51,17 +56,20 @@ class WebGPURenderer(Renderer):
             self._surface_format = self._surface.get_preferred_format(self.adapter)
             self._surface.configure(device=self.device, format=self._surface_format)
             self._present = _PresentBlit(self.device, self._surface_format)
-        self.frame_layout = self.device.create_bind_group_layout(entries=[{
-            "binding": 0,
-            "visibility": wgpu.ShaderStage.VERTEX | wgpu.ShaderStage.FRAGMENT,
-            "buffer": {"type": "uniform"},
-        }], label="frame")
-        self._frame_buffer = self.device.create_buffer(
-            size=FRAME_FLOATS * 4, usage=wgpu.BufferUsage.UNIFORM | wgpu.BufferUsage.COPY_DST
-        )
-        self._frame_group = self.device.create_bind_group(
-            layout=self.frame_layout, entries=[{"binding": 0, "resource": {"buffer": self._frame_buffer}}]
-        )
+        # Group 0 is the engine's, shared by every pipeline: frame uniforms (0) and lights (1).
+        visible = wgpu.ShaderStage.VERTEX | wgpu.ShaderStage.FRAGMENT
+        self.frame_layout = self.device.create_bind_group_layout(entries=[
+            {"binding": 0, "visibility": visible, "buffer": {"type": "uniform"}},
+            {"binding": 1, "visibility": visible, "buffer": {"type": "uniform"}},
+        ], label="frame")
+        uniform = wgpu.BufferUsage.UNIFORM | wgpu.BufferUsage.COPY_DST
+        self._frame_buffer = self.device.create_buffer(size=FRAME_FLOATS * 4, usage=uniform)
+        self._lights_buffer = self.device.create_buffer(size=LIGHTS_BYTES, usage=uniform)
+        self._frame_group = self.device.create_bind_group(layout=self.frame_layout, entries=[
+            {"binding": 0, "resource": {"buffer": self._frame_buffer}},
+            {"binding": 1, "resource": {"buffer": self._lights_buffer}},
+        ])
+        self._sky_materials: dict[str, Any] = {}
         self.textures = TextureLib(self.device, self.stats)
         self.shaders = ShaderLib(self.device, self.stats, self.frame_layout)
         self.meshes = MeshLib(self.device, self.stats)
@@ -83,29 +91,28 @@ class WebGPURenderer(Renderer):
         self.depth_view = self._depth.create_view()
 
     # --- a frame ------------------------------------------------------------------------------------
-    def render(
-        self, clear_color: np.ndarray, frame: bytes, batches: list[DrawBatch], instances: np.ndarray | None,
-        assets: Assets, reverse_z: bool = False,
-    ) -> None:
+    def render(self, data: FrameData, assets: Assets) -> None:
         self.stats["draw_calls"] = 0
         queue = self.device.queue
-        queue.write_buffer(self._frame_buffer, 0, frame)
-        if batches:
-            self._upload_instances(instances)
+        queue.write_buffer(self._frame_buffer, 0, data.frame)
+        queue.write_buffer(self._lights_buffer, 0, data.lights)
+        if data.batches:
+            self._upload_instances(data.instances)
         # Resolve everything before recording, so a missing resource fails before a pass is open.
         draws = []
-        for batch in batches:
+        for batch in data.batches:
             material = self._material(batch.material, assets)
             mesh = self._mesh(batch.mesh, assets)
-            draws.append((batch, material, mesh, self._pipeline(material, mesh, reverse_z)))
+            draws.append((batch, material, mesh, self._pipeline(material, mesh, data.reverse_z)))
+        sky = self._sky_draw(data.skybox, assets, data.reverse_z) if data.skybox is not None else None
         encoder = self.device.create_command_encoder()
         rpass = encoder.begin_render_pass(
             color_attachments=[{
-                "view": self.color_view, "clear_value": tuple(float(x) for x in clear_color),
+                "view": self.color_view, "clear_value": tuple(float(x) for x in data.clear_color),
                 "load_op": "clear", "store_op": "store",
             }],
             depth_stencil_attachment={
-                "view": self.depth_view, "depth_clear_value": 0.0 if reverse_z else 1.0,
+                "view": self.depth_view, "depth_clear_value": 0.0 if data.reverse_z else 1.0,
                 "depth_load_op": "clear", "depth_store_op": "store",
             },
         )
@@ -127,6 +134,12 @@ class WebGPURenderer(Renderer):
             else:
                 rpass.draw(mesh.count, batch.count)
             self.stats["draw_calls"] += 1
+        if sky is not None:
+            pipeline, bind_group = sky
+            rpass.set_pipeline(pipeline)
+            rpass.set_bind_group(1, bind_group)
+            rpass.draw(3)
+            self.stats["draw_calls"] += 1
         rpass.end()
         surface_texture = None
         if self._surface is not None:
@@ -135,6 +148,26 @@ class WebGPURenderer(Renderer):
         queue.submit([encoder.finish()])
         if surface_texture is not None:
             self._surface.present()
+
+    def _sky_draw(self, texture_name: str, assets: Assets, reverse_z: bool) -> tuple[Any, Any]:
+        """The sky pass's pipeline and bind group, built on first use (only scenes with a skybox pay for it)."""
+        if texture_name not in self.textures:
+            if texture_name not in assets.textures:
+                raise missing("texture", texture_name, list(assets.textures), "a SkyboxComponent")
+            self.textures.build(texture_name, assets.textures[texture_name])
+        shader = self.shaders.build(SKY_SHADER, SNIPPETS_DIR / "skybox.wgsl")
+        material = self._sky_materials.get(texture_name)
+        if material is None:
+            texture = self.textures.get(texture_name)
+            material = self.device.create_bind_group(layout=shader.material_layout, entries=[
+                {"binding": 0, "resource": texture.view}, {"binding": 1, "resource": texture.sampler},
+            ])
+            self._sky_materials[texture_name] = material
+        key = (SKY_SHADER, reverse_z)
+        pipeline = self._pipelines.get(key)
+        if pipeline is None:
+            pipeline = self._pipelines[key] = self._create_pipeline(shader, [], SKY_STATE, reverse_z)
+        return pipeline, material
 
     def _upload_instances(self, instances: np.ndarray) -> None:
         nbytes = instances.nbytes
@@ -170,23 +203,26 @@ class WebGPURenderer(Renderer):
                     "attributes": [{"format": "float32x4", "offset": 16 * (loc - 5), "shader_location": loc}
                                    for loc in instance_locations],
                 })
-            layouts = [self.frame_layout] + ([shader.material_layout] if shader.material_layout else [])
-            target: dict[str, Any] = {"format": COLOR_FORMAT}
-            if data.blend != "opaque":
-                target["blend"] = _BLEND[data.blend]
-            compare = ("greater-equal" if reverse_z else "less-equal") if data.depth_test else "always"
-            pipeline = self.device.create_render_pipeline(
-                layout=self.device.create_pipeline_layout(bind_group_layouts=layouts),
-                vertex={"module": shader.module, "entry_point": shader.vertex_entry, "buffers": buffers},
-                fragment={"module": shader.module, "entry_point": shader.fragment_entry, "targets": [target]},
-                primitive={"topology": "triangle-list", "front_face": "ccw", "cull_mode": data.cull},
-                depth_stencil={"format": DEPTH_FORMAT, "depth_write_enabled": data.depth_write,
-                               "depth_compare": compare},
-                label=f"{shader.name} pipeline",
-            )
-            self._pipelines[key] = pipeline
-            self.stats["pipelines_created"] += 1
+            pipeline = self._pipelines[key] = self._create_pipeline(shader, buffers, data, reverse_z)
         return pipeline, attributes
+
+    def _create_pipeline(self, shader: WGPUShader, buffers: list[dict[str, Any]], data: MaterialData,
+                         reverse_z: bool) -> Any:
+        layouts = [self.frame_layout] + ([shader.material_layout] if shader.material_layout else [])
+        target: dict[str, Any] = {"format": COLOR_FORMAT}
+        if data.blend != "opaque":
+            target["blend"] = _BLEND[data.blend]
+        compare = ("greater-equal" if reverse_z else "less-equal") if data.depth_test else "always"
+        pipeline = self.device.create_render_pipeline(
+            layout=self.device.create_pipeline_layout(bind_group_layouts=layouts),
+            vertex={"module": shader.module, "entry_point": shader.vertex_entry, "buffers": buffers},
+            fragment={"module": shader.module, "entry_point": shader.fragment_entry, "targets": [target]},
+            primitive={"topology": "triangle-list", "front_face": "ccw", "cull_mode": data.cull},
+            depth_stencil={"format": DEPTH_FORMAT, "depth_write_enabled": data.depth_write, "depth_compare": compare},
+            label=f"{shader.name} pipeline",
+        )
+        self.stats["pipelines_created"] += 1
+        return pipeline
 
     # --- resources on first use -------------------------------------------------------------------------
     def _material(self, name: str, assets: Assets) -> WGPUMaterial:
@@ -240,6 +276,7 @@ class WebGPURenderer(Renderer):
         if self._instance_buffer is not None:
             self._instance_buffer.destroy()
         self._frame_buffer.destroy()
+        self._lights_buffer.destroy()
         self._color.destroy()
         self._depth.destroy()
         self.device.destroy()

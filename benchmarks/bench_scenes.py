@@ -1,0 +1,404 @@
+"""Scene benchmark of the gandalf engine: frames per second, frame-time percentiles and peak memory.
+
+Scenes (after the pyGandalf paper; no skybox):
+
+=========  ========  ========
+scene      models    rotating
+=========  ========  ========
+scene1     1         no
+scene2     10        no
+scene3     50        no
+scene4     50        yes
+scene5     100       yes
+cubes1k    1,000     yes
+cubes10k   10,000    yes
+cubes100k  100,000   yes
+=========  ========  ========
+
+Every configuration (backend x scene) runs in a fresh Python process, so its peak RSS
+(``ru_maxrss``) belongs to that configuration alone. Each prints one JSON line.
+
+The engine is used as an application would use it: a headless :class:`~gandalf_core.Application`,
+entities with Transform/Mesh/Material components, a camera entity, and a rotate system. The rotate
+system comes in two forms (``--rotate``):
+
+* ``batch`` (default): one vectorised quaternion product over the TransformComponent store's
+  ``quaternion`` column per frame;
+* ``entity``: the teaching form, ``on_update_entity`` called once per entity.
+
+Every measured frame ends with a read-back (``--sync``) so the GPU has finished the frame:
+
+* ``pixel`` (default): one pixel of the colour target;
+* ``full``: the whole frame through ``app.capture()`` (adds a full-frame copy and row flip);
+* ``none``: no wait (measures CPU submission only; the GPU may still be queueing work).
+
+Run by hand, never in CI::
+
+    python benchmarks/bench_scenes.py                       # every scene, both backends, 1280x720
+    python benchmarks/bench_scenes.py --quick               # a smoke run of a few seconds per backend
+    python benchmarks/bench_scenes.py --backends opengl --scenes scene5,cubes100k --frames 300
+    python benchmarks/bench_scenes.py --scenes cubes100k --profile 25   # cProfile top functions to stderr
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import platform
+import resource
+import subprocess
+import sys
+import time
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+SHADERS = HERE / "shaders"
+
+#: scene name -> (number of models, whether they rotate)
+SCENES: dict[str, tuple[int, bool]] = {
+    "scene1": (1, False),
+    "scene2": (10, False),
+    "scene3": (50, False),
+    "scene4": (50, True),
+    "scene5": (100, True),
+    "cubes1k": (1_000, True),
+    "cubes10k": (10_000, True),
+    "cubes100k": (100_000, True),
+}
+BACKENDS = ("opengl", "webgpu")
+MODELS = ("cube", "sphere")
+ROTATE_MODES = ("batch", "entity")
+SYNC_MODES = ("pixel", "full", "none")
+
+
+# ------------------------------------------------------------------------------------------------
+# The scene (runs in the child process)
+# ------------------------------------------------------------------------------------------------
+def grid_positions(n: int) -> np.ndarray:
+    """``n`` positions on a cubic grid of spacing 1.8 in front of the camera (same layout as raw_ceiling.py)."""
+    g = math.ceil(round(n ** (1.0 / 3.0), 9))
+    i = np.arange(n)
+    return np.stack([(i % g) - (g - 1) / 2, (i // g % g) - (g - 1) / 2, -(i // (g * g)) - 2.0], 1) * 1.8
+
+
+def build_scene(n: int, rotating: bool, model: str, rotate_mode: str) -> tuple[Any, Any]:
+    """The benchmark scene and its model's MeshData: ``n`` lit models on a grid, a camera that sees them all."""
+    from gandalf_core import Component, Scene, System, TransformComponent
+    from gandalf_core.components import CameraComponent, ClearColorComponent, MaterialComponent, MeshComponent
+    from gandalf_core.math import quat_from_axis_angle, quat_mul
+    from gandalf_core.resources import MaterialData, primitives
+
+    class RotateComponent(Component):
+        """Spin about ``axis`` at ``speed`` degrees per second."""
+
+        def __init__(self, axis: tuple[float, float, float], speed: float) -> None:
+            self.axis = np.asarray(axis, dtype=np.float64)
+            self.speed = float(speed)
+
+    class RotateEntitySystem(System):
+        """Teaching form: one Python call per entity per frame."""
+
+        def __init__(self) -> None:
+            super().__init__([TransformComponent, RotateComponent])
+
+        def on_update_entity(self, ts: float, entity: Any, components: tuple[Any, ...]) -> None:
+            transform, rotate = components
+            step = quat_from_axis_angle(rotate.axis, math.radians(rotate.speed) * ts)
+            transform.quaternion = quat_mul(step, transform.quaternion)
+
+    class RotateBatchSystem(System):
+        """Fast form: one vectorised quaternion product over the store's quaternion column."""
+
+        def __init__(self) -> None:
+            super().__init__([TransformComponent, RotateComponent])
+            self._version = -1
+
+        def _plan(self) -> None:
+            # Rows, axes and speeds change only when entities come or go: gather them once then.
+            store = self.scene.store(TransformComponent)
+            self._rows = store.rows_of(self.column(TransformComponent))
+            rotates = self.column(RotateComponent)
+            self._axes = np.array([r.axis for r in rotates], dtype=np.float64).reshape(-1, 3)
+            self._axes /= np.linalg.norm(self._axes, axis=1, keepdims=True)
+            self._speeds = np.radians([r.speed for r in rotates])
+            self._version = self.scene.membership_version
+
+        def on_update_system(self, ts: float) -> None:
+            if self._version != self.scene.membership_version:
+                self._plan()
+            if len(self._rows) == 0:
+                return
+            half = 0.5 * self._speeds * ts
+            step = np.concatenate([np.cos(half)[:, None], np.sin(half)[:, None] * self._axes], axis=1)
+            q = self.scene.store(TransformComponent).column("quaternion")
+            q[self._rows] = quat_mul(step, q[self._rows])
+
+    scene = Scene(f"bench-{n}")
+    mesh = primitives.cube() if model == "cube" else primitives.uv_sphere(0.6, 32, 16)
+    scene.assets.mesh("model", mesh)
+    scene.assets.material("lit", MaterialData("lit", color=(0.9, 0.6, 0.3)))
+    scene.create_entity(ClearColorComponent((0.05, 0.05, 0.1)))
+    g = math.ceil(round(n ** (1.0 / 3.0), 9))
+    scene.create_entity(
+        TransformComponent((0.0, 0.0, 1.6 * g + 2.0)), CameraComponent(60.0, 0.1, 10.0 * g + 100.0)
+    )
+    y_axis = (0.0, 1.0, 0.0)
+    for i, position in enumerate(grid_positions(n)):
+        components: list[Any] = [
+            TransformComponent(position, quaternion=quat_from_axis_angle(y_axis, 0.1 * i)),
+            MeshComponent("model"),
+            MaterialComponent("lit"),
+        ]
+        if rotating:
+            components.append(RotateComponent(y_axis, 30.0 + 10.0 * (i % 7)))
+        scene.create_entity(*components)
+    if rotating:
+        scene.add_system(RotateBatchSystem() if rotate_mode == "batch" else RotateEntitySystem())
+    return scene, mesh
+
+
+# ------------------------------------------------------------------------------------------------
+# Synchronisation: make the GPU finish the frame
+# ------------------------------------------------------------------------------------------------
+def make_sync(app: Any, mode: str) -> tuple[Any, str]:
+    """A callable that waits for the frame, and the mode really used.
+
+    The renderers offer only a full read-back (``read_pixels``); the one-pixel read goes through the
+    renderer's colour target directly, and falls back to the full read if that target is not there.
+    """
+    if mode == "none":
+        return (lambda: None), "none"
+    if mode == "full":
+        return app.capture, "full"
+    r = app.renderer
+    x, y = r.width // 2, r.height // 2
+    if app.backend == "opengl" and hasattr(r, "_fbo"):
+        return (lambda: r._fbo.read(viewport=(x, y, 1, 1), components=4)), "pixel"
+    if app.backend == "webgpu" and hasattr(r, "_color"):
+        def read_one() -> Any:
+            return r.device.queue.read_texture(
+                {"texture": r._color, "origin": (x, y, 0)}, {"bytes_per_row": 256}, (1, 1, 1)
+            )
+        return read_one, "pixel"
+    return app.capture, "full"
+
+
+def renderer_name(app: Any) -> str:
+    r = app.renderer
+    if app.backend == "opengl":
+        return str(r.ctx.info.get("GL_RENDERER", "?"))
+    return str(getattr(r.adapter, "summary", "?"))
+
+
+class Timed:
+    """Wraps a system's ``on_update_system`` and accumulates its time per frame into a bucket."""
+
+    def __init__(self, system: Any, bucket: str, totals: dict[str, float]) -> None:
+        self.inner = system.on_update_system
+        self.bucket = bucket
+        self.totals = totals
+        system.on_update_system = self  # instance attribute shadows the method; the scene calls this
+
+    def __call__(self, ts: float) -> None:
+        t0 = time.perf_counter()
+        self.inner(ts)
+        self.totals[self.bucket] += time.perf_counter() - t0
+
+
+# ------------------------------------------------------------------------------------------------
+# One configuration (child process)
+# ------------------------------------------------------------------------------------------------
+def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
+    """Build the scene, warm up, measure; return the result record."""
+    from gandalf_core import Application, TransformSystem
+    from gandalf_core.render import RenderSystem
+
+    n, rotating = SCENES[cfg["scene"]]
+    width, height = cfg["size"]
+    t_start = time.perf_counter()
+    app = Application(cfg["backend"], width, height, headless=True, fixed_dt=1 / 60)
+    if cfg["backend"] == "opengl":
+        app.renderer.shaders.build("lit", SHADERS / "lit.vert", SHADERS / "lit.frag")
+    else:
+        app.renderer.shaders.build("lit", SHADERS / "lit.wgsl")
+    t_app = time.perf_counter()
+    scene, mesh = build_scene(n, rotating, cfg["model"], cfg["rotate"])
+    app.add_scene(scene)
+    t_scene = time.perf_counter()
+    sync, sync_used = make_sync(app, cfg["sync"])
+
+    app.step()  # first frame: core systems join, batches are planned, GPU objects are built
+    sync()
+    t_first = time.perf_counter()
+    for _ in range(cfg["warmup"]):
+        app.step()
+        sync()
+
+    totals = {"update": 0.0, "transform": 0.0, "render": 0.0, "sync": 0.0}
+    for system in scene.systems:
+        if isinstance(system, RenderSystem):
+            Timed(system, "render", totals)
+        elif isinstance(system, TransformSystem):
+            Timed(system, "transform", totals)
+        else:
+            Timed(system, "update", totals)
+
+    profiler = None
+    if cfg.get("profile"):
+        import cProfile
+
+        profiler = cProfile.Profile()
+        profiler.enable()
+    times = []
+    deadline = time.perf_counter() + cfg["max_seconds"]
+    t0 = time.perf_counter()
+    for _ in range(cfg["frames"]):
+        a = time.perf_counter()
+        app.step()
+        b = time.perf_counter()
+        sync()
+        c = time.perf_counter()
+        totals["sync"] += c - b
+        times.append(c - a)
+        if c > deadline:
+            break
+    wall = time.perf_counter() - t0
+    if profiler is not None:
+        import pstats
+
+        profiler.disable()
+        stats = pstats.Stats(profiler, stream=sys.stderr)
+        stats.sort_stats("tottime").print_stats(cfg["profile"])
+        stats.sort_stats("cumulative").print_stats(cfg["profile"])
+
+    if cfg.get("png"):
+        Path(cfg["png"]).mkdir(parents=True, exist_ok=True)
+        app.save_png(Path(cfg["png"]) / f"{cfg['backend']}-{cfg['scene']}-{cfg['model']}.png")
+
+    frames = len(times)
+    ms = np.array(times) * 1e3
+    tris = mesh.triangle_count
+    record = {
+        "bench": "gandalf-scenes",
+        "backend": cfg["backend"],
+        "scene": cfg["scene"],
+        "models": n,
+        "rotating": rotating,
+        "rotate": cfg["rotate"] if rotating else None,
+        "model": cfg["model"],
+        "triangles_per_model": tris,
+        "triangles": tris * n,
+        "size": [width, height],
+        "sync": sync_used,
+        "warmup": cfg["warmup"],
+        "frames": frames,
+        "fps": round(frames / wall, 1),
+        "frame_ms": {
+            "mean": round(float(ms.mean()), 3),
+            "p50": round(float(np.percentile(ms, 50)), 3),
+            "p95": round(float(np.percentile(ms, 95)), 3),
+            "p99": round(float(np.percentile(ms, 99)), 3),
+        },
+        # CPU time per frame in each part: the rotate system, the transform system, the render system
+        # (gather + upload + draw submission) and the read-back wait.
+        "cpu_ms": {k: round(v * 1e3 / frames, 3) for k, v in totals.items()},
+        "draw_calls": int(app.renderer.stats["draw_calls"]),
+        "setup_s": {
+            "app": round(t_app - t_start, 3),
+            "scene": round(t_scene - t_app, 3),
+            "first_frame": round(t_first - t_scene, 3),
+        },
+        "renderer": renderer_name(app),
+    }
+    app.close()
+    # Linux reports ru_maxrss in KiB (macOS in bytes).
+    rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    record["peak_rss_mb"] = round(rss / (1024 * 1024 if sys.platform == "darwin" else 1024), 1)
+    return record
+
+
+# ------------------------------------------------------------------------------------------------
+# The driver (parent process)
+# ------------------------------------------------------------------------------------------------
+def parse_size(text: str) -> tuple[int, int]:
+    try:
+        w, h = (int(v) for v in text.lower().split("x"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"--size must look like 1280x720, got {text!r}") from None
+    if w <= 0 or h <= 0:
+        raise argparse.ArgumentTypeError(f"--size must be positive, got {text!r}")
+    return w, h
+
+
+def parse_list(text: str, allowed: tuple[str, ...] | list[str], option: str) -> list[str]:
+    items = [t.strip() for t in text.split(",") if t.strip()]
+    bad = [t for t in items if t not in allowed]
+    if bad or not items:
+        raise SystemExit(f"{option}: unknown {bad or 'empty list'}; choose from {', '.join(allowed)}")
+    return items
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--backends", default="opengl,webgpu", help="comma list of opengl, webgpu")
+    parser.add_argument("--scenes", default=",".join(SCENES), help=f"comma list of {', '.join(SCENES)}")
+    parser.add_argument("--size", type=parse_size, default=None, help="WIDTHxHEIGHT (default 1280x720)")
+    parser.add_argument("--frames", type=int, default=None, help="measured frames (default 300)")
+    parser.add_argument("--warmup", type=int, default=None, help="frames before measuring (default 30)")
+    parser.add_argument("--max-seconds", type=float, default=30.0,
+                        help="stop measuring a configuration after this long, whatever --frames says")
+    parser.add_argument("--model", choices=MODELS, default="cube", help="cube (12 triangles) or sphere (960)")
+    parser.add_argument("--rotate", choices=ROTATE_MODES, default="batch", help="rotate system form")
+    parser.add_argument("--sync", choices=SYNC_MODES, default="pixel", help="read-back after every frame")
+    parser.add_argument("--quick", action="store_true",
+                        help="smoke run: 320x180, 10 frames, scenes scene1,scene5,cubes1k unless given")
+    parser.add_argument("--profile", type=int, default=0, metavar="N",
+                        help="cProfile the measured frames and print the top N functions to stderr")
+    parser.add_argument("--png", default=None, metavar="DIR", help="save each configuration's last frame here")
+    parser.add_argument("--child", default=None, help=argparse.SUPPRESS)
+    args = parser.parse_args(argv)
+
+    if args.child is not None:
+        print(json.dumps(run_config(json.loads(args.child))), flush=True)
+        return 0
+
+    default_scenes = "scene1,scene5,cubes1k" if args.quick else ",".join(SCENES)
+    scenes_text = args.scenes if args.scenes != ",".join(SCENES) else default_scenes
+    scenes = parse_list(scenes_text, list(SCENES), "--scenes")
+    backends = parse_list(args.backends, BACKENDS, "--backends")
+    size = args.size or ((320, 180) if args.quick else (1280, 720))
+    frames = args.frames if args.frames is not None else (10 if args.quick else 300)
+    warmup = args.warmup if args.warmup is not None else (2 if args.quick else 30)
+    if frames < 1 or warmup < 0:
+        raise SystemExit("--frames must be >= 1 and --warmup >= 0")
+
+    print(json.dumps({"bench": "gandalf-scenes-host", "python": platform.python_version(),
+                      "machine": platform.machine(), "cpus": os.cpu_count(),
+                      "platform": platform.platform()}), flush=True)
+    failures = 0
+    for backend in backends:
+        for scene in scenes:
+            cfg = {"backend": backend, "scene": scene, "size": size, "frames": frames, "warmup": warmup,
+                   "max_seconds": args.max_seconds, "model": args.model, "rotate": args.rotate,
+                   "sync": args.sync, "profile": args.profile, "png": args.png}
+            proc = subprocess.run([sys.executable, str(Path(__file__).resolve()), "--child", json.dumps(cfg)],
+                                  cwd=ROOT, stdout=subprocess.PIPE, text=True)
+            lines = [ln for ln in proc.stdout.splitlines() if ln.startswith("{")]
+            if proc.returncode != 0 or not lines:
+                failures += 1
+                print(json.dumps({"bench": "gandalf-scenes", "backend": backend, "scene": scene,
+                                  "error": f"child exited with {proc.returncode}"}), flush=True)
+                continue
+            print(lines[-1], flush=True)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.path.insert(0, str(ROOT))
+    raise SystemExit(main())

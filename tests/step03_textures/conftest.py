@@ -1,0 +1,34 @@
+"""Step 03 tests get the implementation under test (solutions, or exercises with --student) as ``impl``,
+and ``render_scene``: draw a scene with the step's textured shader, headless, in one backend."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+import pytest
+
+from gandalf_core import Application, Scene
+from gandalf_core.grading.plugin import impl_fixture
+from step03_textures.opengl import SHADERS
+from step03_textures.scene import SHADER
+
+impl = impl_fixture("step03_textures")
+
+
+def render(backend: str, scene: Scene, width: int, height: int, frames: int = 1) -> tuple[np.ndarray, dict]:
+    """The last frame (top row first) and the renderer's stats after ``frames`` frames of ``scene``."""
+    with Application(backend, width, height, headless=True, fixed_dt=1 / 60) as app:
+        if backend == "opengl":
+            app.renderer.shaders.build(SHADER, SHADERS / "textured.vert", SHADERS / "textured.frag")
+        else:
+            app.renderer.shaders.build(SHADER, SHADERS / "textured.wgsl")
+        app.add_scene(scene)
+        app.run(frames=frames)
+        return app.capture(), dict(app.renderer.stats)
+
+
+@pytest.fixture
+def render_scene() -> Callable[..., tuple[np.ndarray, dict]]:
+    """``render_scene(backend, scene, width, height, frames=1) -> (image, stats)``."""
+    return render
