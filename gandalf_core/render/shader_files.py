@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 
 from ..resources import ShaderSource
@@ -9,12 +10,21 @@ from ..resources import ShaderSource
 SNIPPETS_DIR = Path(__file__).resolve().parent / "shaders"
 
 
-def load_shader(source: str | Path | ShaderSource, stage: str | None = None, lang: str | None = None) -> ShaderSource:
-    """A ShaderSource from a path, or from text (then ``lang`` is required), or one given already."""
+def load_shader(
+    source: str | Path | ShaderSource,
+    stage: str | None = None,
+    lang: str | None = None,
+    include_dirs: Sequence[str | Path] = (),
+) -> ShaderSource:
+    """A ShaderSource from a path, or from text (then ``lang`` is required), or one given already.
+
+    ``#include`` lines resolve next to the file, then in ``include_dirs``, then in the engine's snippets.
+    """
     if isinstance(source, ShaderSource):
         return source
+    dirs = [*include_dirs, SNIPPETS_DIR]
     if isinstance(source, Path) or (isinstance(source, str) and "\n" not in source and Path(source).suffix):
-        return ShaderSource.from_file(source, stage=stage, include_dirs=[SNIPPETS_DIR])
+        return ShaderSource.from_file(source, stage=stage, include_dirs=dirs)
     if lang is None:
         raise ValueError("shader text needs lang='glsl' or 'wgsl'")
-    return ShaderSource.from_text(source, lang, stage, filename=f"<{stage or lang} text>", include_dirs=[SNIPPETS_DIR])
+    return ShaderSource.from_text(source, lang, stage, filename=f"<{stage or lang} text>", include_dirs=dirs)

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import re
 from collections import Counter
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -100,13 +101,18 @@ class ShaderLib:
         geometry: str | Path | ShaderSource | None = None,
         tess_control: str | Path | ShaderSource | None = None,
         tess_evaluation: str | Path | ShaderSource | None = None,
+        *,
+        include_dirs: Sequence[str | Path] = (),
     ) -> GLShader:
-        """Compile and link a program from files (or ShaderSource); cached by ``name``."""
+        """Compile and link a program from files (or ShaderSource); cached by ``name``.
+
+        ``include_dirs`` are searched for ``#include`` files after the shader's own folder.
+        """
         if name in self._items:
             return self._items[name]
         stages = {
-            "vertex_shader": load_shader(vertex, "vertex", "glsl"),
-            "fragment_shader": load_shader(fragment, "fragment", "glsl"),
+            "vertex_shader": load_shader(vertex, "vertex", "glsl", include_dirs),
+            "fragment_shader": load_shader(fragment, "fragment", "glsl", include_dirs),
         }
         for key, src, stage in (
             ("geometry_shader", geometry, "geometry"),
@@ -114,7 +120,7 @@ class ShaderLib:
             ("tess_evaluation_shader", tess_evaluation, "tess_evaluation"),
         ):
             if src is not None:
-                stages[key] = load_shader(src, stage, "glsl")
+                stages[key] = load_shader(src, stage, "glsl", include_dirs)
         try:
             program = self.ctx.program(**{k: v.text for k, v in stages.items()})
         except moderngl.Error as exc:

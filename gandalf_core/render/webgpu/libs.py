@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import re
 from collections import Counter
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -113,11 +114,14 @@ class ShaderLib:
         self._items: dict[str, WGPUShader] = {}
 
     def build(self, name: str, source: str | Path | ShaderSource, *, vertex_entry: str | None = None,
-              fragment_entry: str | None = None) -> WGPUShader:
-        """Compile a WGSL module (a ``.wgsl`` path or ShaderSource) and reflect it; cached by ``name``."""
+              fragment_entry: str | None = None, include_dirs: Sequence[str | Path] = ()) -> WGPUShader:
+        """Compile a WGSL module (a ``.wgsl`` path or ShaderSource) and reflect it; cached by ``name``.
+
+        ``include_dirs`` are searched for ``#include`` files after the shader's own folder.
+        """
         if name in self._items:
             return self._items[name]
-        src = load_shader(source, None, "wgsl")
+        src = load_shader(source, None, "wgsl", include_dirs)
         try:
             reflection = reflect(src.text, src.filename)
         except WGSLReflectError as exc:

@@ -1,0 +1,72 @@
+"""Turn the JSON lines of bench_scenes.py (and optionally raw_ceiling.py) into markdown tables.
+
+usage: python benchmarks/summarize.py scenes.jsonl [ceiling.jsonl]
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+from typing import Any
+
+#: engine scene -> raw_ceiling.py instance count it matches (same grid and camera)
+CEILING_MATCH = {"scene1": 1, "scene5": 100, "cubes1k": 1000, "cubes10k": 10000, "cubes100k": 100000}
+
+
+def load(path: str) -> list[dict[str, Any]]:
+    """The JSON records of a file, skipping lines that are not JSON objects."""
+    records = []
+    for line in Path(path).read_text().splitlines():
+        if line.startswith("{"):
+            records.append(json.loads(line))
+    return records
+
+
+def scenes_table(records: list[dict[str, Any]]) -> str:
+    """One row per configuration: fps, frame-time percentiles, CPU split, draw calls, memory."""
+    head = ("| backend | scene | models | triangles | fps | p50 ms | p95 ms | p99 ms | rotate ms | transform ms "
+            "| render ms | sync ms | draws | peak RSS MiB |")
+    rows = [head, "|" + "---|" * (head.count("|") - 1)]
+    for r in records:
+        if r.get("bench") != "gandalf-scenes":
+            continue
+        if "error" in r:
+            rows.append(f"| {r['backend']} | {r['scene']} | failed: {r['error']} |" + " |" * 11)
+            continue
+        f, c = r["frame_ms"], r["cpu_ms"]
+        rows.append(
+            f"| {r['backend']} | {r['scene']} | {r['models']:,} | {r['triangles']:,} | {r['fps']:,.1f} "
+            f"| {f['p50']:.2f} | {f['p95']:.2f} | {f['p99']:.2f} | {c['update']:.2f} | {c['transform']:.2f} | {c['render']:.2f} "
+            f"| {c['sync']:.2f} | {r['draw_calls']} | {r['peak_rss_mb']:.0f} |"
+        )
+    return "\n".join(rows)
+
+
+def ceiling_table(scenes: list[dict[str, Any]], ceiling: list[dict[str, Any]]) -> str:
+    """Engine fps next to the raw-API ceiling's for the matching instance counts."""
+    raw = {(r["backend"], r["n"]): r["fps"] for r in ceiling}
+    rows = ["| backend | scene | N | engine fps | raw ceiling fps | engine / ceiling |", "|---|---|---|---|---|---|"]
+    for r in scenes:
+        n = CEILING_MATCH.get(r.get("scene", ""))
+        if r.get("bench") != "gandalf-scenes" or "error" in r or n is None or (r["backend"], n) not in raw:
+            continue
+        top = raw[(r["backend"], n)]
+        rows.append(f"| {r['backend']} | {r['scene']} | {n:,} | {r['fps']:,.1f} | {top:,.1f} | {r['fps'] / top:.2f} |")
+    return "\n".join(rows)
+
+
+def main(argv: list[str]) -> int:
+    if not argv:
+        print(__doc__, file=sys.stderr)
+        return 2
+    scenes = load(argv[0])
+    print(scenes_table(scenes))
+    if len(argv) > 1:
+        print()
+        print(ceiling_table(scenes, load(argv[1])))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main(sys.argv[1:]))

@@ -1,0 +1,39 @@
+"""Shared helpers of the step 04 tests: headless apps of the step's scene and the camera they render with."""
+
+from __future__ import annotations
+
+import importlib
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+
+from gandalf_core import Application
+from gandalf_core.render import RenderSystem
+from step04_camera.scene import build_scene
+
+REFERENCES = Path(__file__).resolve().parent / "references"
+SIZE = (128, 96)
+
+
+def make_app(backend: str, impl: object, size: tuple[int, int] = SIZE) -> Application:
+    """A headless app of the step's scene with ``impl`` providing look_at and OrbitCameraSystem."""
+    app = Application(backend, *size, headless=True, fixed_dt=1 / 60)
+    importlib.import_module(f"step04_camera.{backend}").register_shaders(app)
+    app.add_scene(build_scene(impl))
+    return app
+
+
+def only(**parts: object) -> SimpleNamespace:
+    """An implementation that takes ``parts`` from the code under test and the rest from the reference,
+    so each exercise is graded on its own."""
+    from step04_camera import solutions
+
+    return SimpleNamespace(look_at=solutions.look_at, OrbitCameraSystem=solutions.OrbitCameraSystem) if not parts \
+        else SimpleNamespace(**{"look_at": solutions.look_at, "OrbitCameraSystem": solutions.OrbitCameraSystem, **parts})
+
+
+def rendered_camera(app: Application) -> tuple[np.ndarray, np.ndarray]:
+    """(view, projection) the render system used for the last frame's primary camera."""
+    view, projection, _eye = app.scene.get_system(RenderSystem).camera()
+    return view, projection
