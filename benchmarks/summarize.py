@@ -37,8 +37,8 @@ def scenes_table(records: list[dict[str, Any]]) -> str:
         f, c = r["frame_ms"], r["cpu_ms"]
         rows.append(
             f"| {r['backend']} | {r['scene']} | {r['models']:,} | {r['triangles']:,} | {r['fps']:,.1f} "
-            f"| {f['p50']:.2f} | {f['p95']:.2f} | {f['p99']:.2f} | {c['update']:.2f} | {c['transform']:.2f} | {c['render']:.2f} "
-            f"| {c['sync']:.2f} | {r['draw_calls']} | {r['peak_rss_mb']:.0f} |"
+            f"| {f['p50']:.2f} | {f['p95']:.2f} | {f['p99']:.2f} | {c['update']:.2f} | {c['transform']:.2f} "
+            f"| {c['render']:.2f} | {c['sync']:.2f} | {r['draw_calls']} | {r['peak_rss_mb']:.0f} |"
         )
     return "\n".join(rows)
 

@@ -40,7 +40,9 @@ def build_scene(impl: ModuleType) -> Scene:
     assets.material("shape", MaterialData("normals"))
 
     scene.create_entity(InfoComponent("background"), ClearColorComponent((0.55, 0.7, 0.85)))
-    scene.create_entity(InfoComponent("ground"), TransformComponent(), MeshComponent("ground"), MaterialComponent("ground"))
+    scene.create_entity(
+        InfoComponent("ground"), TransformComponent(), MeshComponent("ground"), MaterialComponent("ground")
+    )
     scene.create_entity(
         InfoComponent("house"), TransformComponent((0.0, 0.5, 0.0), (0.0, 20.0, 0.0)),
         MeshComponent("cube"), MaterialComponent("crate"),

@@ -23,13 +23,15 @@ State = tuple[np.ndarray, np.ndarray]
 Acceleration = Callable[[np.ndarray, np.ndarray], np.ndarray]
 
 
-def _check_spring(k: float, m: float, c: float) -> None:
-    if not (math.isfinite(k) and k >= 0.0):
-        raise ValueError(f"stiffness k must be a finite number >= 0, got {k!r}")
-    if not (math.isfinite(m) and m > 0.0):
-        raise ValueError(f"mass m must be a finite number > 0, got {m!r}")
-    if not (math.isfinite(c) and c >= 0.0):
-        raise ValueError(f"damping c must be a finite number >= 0, got {c!r}")
+def _check_spring(k: float | np.ndarray, m: float | np.ndarray, c: float | np.ndarray) -> None:
+    if type(k) is float and type(m) is float and type(c) is float:  # the common case, checked cheaply
+        if math.isfinite(k + m + c) and k >= 0.0 and m > 0.0 and c >= 0.0:
+            return
+    # Arrays are allowed (one spring per element: the stiffness sweep runs many springs at once).
+    for name, value, low_ok in (("stiffness k", k, True), ("mass m", m, False), ("damping c", c, True)):
+        arr = np.asarray(value, dtype=np.float64)
+        if not (np.all(np.isfinite(arr)) and np.all(arr >= 0.0 if low_ok else arr > 0.0)):
+            raise ValueError(f"{name} must be finite and {'>= 0' if low_ok else '> 0'}, got {value!r}")
 
 
 def spring_acceleration(k: float, m: float, c: float = 0.0, rest: float | np.ndarray = 0.0) -> Acceleration:

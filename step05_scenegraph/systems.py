@@ -15,7 +15,7 @@ from gandalf_core import System, TransformComponent
 from gandalf_core.math import quat_from_axis_angle, quat_mul
 from gandalf_core.systems.transform_system import set_parent_keep_world
 
-from .components import GravityComponent, HouseRotationComponent, ReparentOnKeyComponent, SpinComponent, SpringComponent
+from .components import GravityComponent, ReparentOnKeyComponent, SpinComponent, SpringComponent
 from .fixed_step import FixedStep
 from .integrators import (
     explicit_euler_step,
@@ -27,7 +27,6 @@ from .integrators import (
 
 __all__ = [
     "GravitySystem",
-    "HouseRotationComponent",
     "ReparentSystem",
     "SceneSwitchSystem",
     "SpinSystem",

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import atexit
 import os
 
 from .input import Input
@@ -19,8 +20,9 @@ class Window:
         import glfw
 
         self._glfw = glfw
-        if not glfw.init():
+        if not _glfw_ready(glfw):
             raise RuntimeError("glfw could not initialise: is a display available?")
+        glfw.default_window_hints()  # hints persist between windows: start from a clean slate
         if api == "opengl":
             glfw.window_hint(glfw.CONTEXT_VERSION_MAJOR, 3)
             glfw.window_hint(glfw.CONTEXT_VERSION_MINOR, 3)
@@ -30,7 +32,6 @@ class Window:
             glfw.window_hint(glfw.CLIENT_API, glfw.NO_API)
         self.handle = glfw.create_window(width, height, title, None, None)
         if not self.handle:
-            glfw.terminate()
             raise RuntimeError(f"glfw could not open a {width}x{height} {api} window")
         if api == "opengl":
             glfw.make_context_current(self.handle)
@@ -66,8 +67,20 @@ class Window:
         self._glfw.swap_buffers(self.handle)
 
     def close(self) -> None:
+        # glfw itself stays initialised (terminated at exit): re-initialising it for the next window
+        # races with the X server resetting after its last client left.
         self._glfw.destroy_window(self.handle)
-        self._glfw.terminate()
+
+
+_initialised = False
+
+
+def _glfw_ready(glfw: object) -> bool:
+    global _initialised
+    if not _initialised and glfw.init():
+        atexit.register(glfw.terminate)
+        _initialised = True
+    return _initialised
 
 
 def _special_key_name(glfw: object, key: int) -> str | None:

@@ -6,10 +6,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from gandalf_core import Scene
+from gandalf_core import Scene, TransformComponent
 from gandalf_core.components import MaterialComponent, MeshComponent
 from gandalf_core.resources import MaterialData, TextureData, quad
-from gandalf_core import TransformComponent
 from step03_textures.scene import SHADER
 
 BRICK = (0.62, 0.27, 0.18)
@@ -37,7 +36,9 @@ def _texels(tex: TextureData) -> np.ndarray:
 
 
 @pytest.mark.exercise("brick_texture")
-@pytest.mark.parametrize("size,brick,mortar", [((64, 32), (16, 8), 1), ((128, 64), (32, 16), 2), ((50, 30), (12, 7), 3)])
+@pytest.mark.parametrize(
+    "size,brick,mortar", [((64, 32), (16, 8), 1), ((128, 64), (32, 16), 2), ((50, 30), (12, 7), 3)]
+)
 def test_mortar_and_bricks_are_where_the_rules_put_them(impl, size, brick, mortar):
     w, h = size
     tex = impl.brick_texture(w, h, brick_size=brick, mortar=mortar, brick_color=BRICK, mortar_color=MORTAR,

@@ -55,6 +55,7 @@ class WebGPURenderer(Renderer):
         if self._surface is not None:
             self._surface_format = self._surface.get_preferred_format(self.adapter)
             self._surface.configure(device=self.device, format=self._surface_format)
+            self._surface.set_physical_size(*window.framebuffer_size)
             self._present = _PresentBlit(self.device, self._surface_format)
         # Group 0 is the engine's, shared by every pipeline: frame uniforms (0) and lights (1).
         visible = wgpu.ShaderStage.VERTEX | wgpu.ShaderStage.FRAGMENT
@@ -261,7 +262,7 @@ class WebGPURenderer(Renderer):
         self.width, self.height = int(width), int(height)
         self._create_targets()
         if self._surface is not None:
-            self._surface.configure(device=self.device, format=self._surface_format)
+            self._surface.set_physical_size(*self.window.framebuffer_size)
 
     def live_objects(self) -> int:
         """GPU objects this renderer holds now (for leak tests)."""

@@ -25,15 +25,14 @@ def make_app(backend: str, impl: object, size: tuple[int, int] = SIZE) -> Applic
 
 
 def only(**parts: object) -> SimpleNamespace:
-    """An implementation that takes ``parts`` from the code under test and the rest from the reference,
-    so each exercise is graded on its own."""
+    """An implementation taking ``parts`` from the code under test and the rest from the reference
+    solutions, so that each exercise is graded on its own."""
     from step04_camera import solutions
 
-    return SimpleNamespace(look_at=solutions.look_at, OrbitCameraSystem=solutions.OrbitCameraSystem) if not parts \
-        else SimpleNamespace(**{"look_at": solutions.look_at, "OrbitCameraSystem": solutions.OrbitCameraSystem, **parts})
+    return SimpleNamespace(**{"look_at": solutions.look_at, "OrbitCameraSystem": solutions.OrbitCameraSystem, **parts})
 
 
 def rendered_camera(app: Application) -> tuple[np.ndarray, np.ndarray]:
     """(view, projection) the render system used for the last frame's primary camera."""
-    view, projection, _eye = app.scene.get_system(RenderSystem).camera()
+    view, projection = app.scene.get_system(RenderSystem).camera()[:2]
     return view, projection

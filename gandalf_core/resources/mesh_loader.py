@@ -1,0 +1,195 @@
+"""Meshes from files: OBJ, glTF/GLB, PLY and STL through trimesh, as validated :class:`MeshData`.
+
+``load_meshes(path)`` returns one mesh per part of the file (the objects of an OBJ, the mesh nodes of a glTF
+scene with their node transforms applied); ``load_mesh(path)`` merges all parts into one. Every mesh gets
+vertex normals (smooth, area-weighted, computed when the file has none), keeps its UVs (converted to the
+engine's convention, v = 0 at the top of the image) and then gets tangents, and keeps vertex colours.
+Degenerate triangles (repeated or collinear corners) are dropped, so they never produce NaN normals.
+
+Results are cached by (resolved path, modification time, size): loading an unchanged file again returns the
+same immutable objects; editing the file loads it anew. trimesh is imported only when a file is read.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from gandalf_core.resources.errors import ResourceError
+from gandalf_core.resources.mesh_data import MeshData
+
+#: File extensions the loader reads (lower case, with the dot).
+MESH_EXTENSIONS = (".obj", ".gltf", ".glb", ".ply", ".stl")
+
+_cache: dict[tuple[str, int, int], dict[str, MeshData]] = {}
+_merged_cache: dict[tuple[str, int, int], MeshData] = {}
+
+
+def clear_cache() -> None:
+    """Forget every loaded file (the next load reads from disk again)."""
+    _cache.clear()
+    _merged_cache.clear()
+
+
+def load_meshes(path: str | Path) -> dict[str, MeshData]:
+    """One :class:`MeshData` per part of the file at ``path``, by part name, in file order.
+
+    Raises :class:`ResourceError` naming the file when it is missing, has an unsupported extension, cannot be
+    parsed, or holds no triangles. Repeated calls for an unchanged file return the cached result.
+    """
+    key, label = _key(path)
+    if key not in _cache:
+        _cache[key] = _read(Path(key[0]), label)
+    return dict(_cache[key])
+
+
+def load_mesh(path: str | Path) -> MeshData:
+    """All parts of the file at ``path`` merged into one :class:`MeshData` (named after the file's stem).
+
+    An attribute (UVs, colours) survives the merge only when every part has it; normals are always present.
+    """
+    key, label = _key(path)
+    if key not in _merged_cache:
+        parts = load_meshes(path)
+        _merged_cache[key] = _merge(list(parts.values()), Path(key[0]).stem, label)
+    return _merged_cache[key]
+
+
+def _key(path: str | Path) -> tuple[tuple[str, int, int], str]:
+    """The cache key of ``path`` and the label errors use; checks existence and extension first."""
+    p = Path(path)
+    label = f"mesh file '{p}'"
+    if p.suffix.lower() not in MESH_EXTENSIONS:
+        allowed = ", ".join(MESH_EXTENSIONS)
+        raise ResourceError(label, "path", f"unsupported extension {p.suffix or '(none)'!r}; supported: {allowed}")
+    try:
+        resolved = p.resolve(strict=True)
+        stat = resolved.stat()
+    except OSError:
+        raise ResourceError(label, "path", "file not found") from None
+    if not resolved.is_file():
+        raise ResourceError(label, "path", "is not a file")
+    return (str(resolved), stat.st_mtime_ns, stat.st_size), label
+
+
+def _read(path: Path, label: str) -> dict[str, MeshData]:
+    import trimesh
+
+    if path.stat().st_size == 0:
+        raise ResourceError(label, "contents", "the file is empty")
+    try:
+        # process=False keeps the file's vertex order and UV seams; OBJ objects stay separate parts.
+        loaded = trimesh.load(str(path), process=False, split_objects=True, group_material=False)
+    except Exception as exc:  # trimesh raises many types (ValueError, KeyError, struct.error, ...) for bad files
+        raise ResourceError(label, "contents", f"cannot be read as {path.suffix[1:].upper()}: {exc}") from None
+    parts: dict[str, MeshData] = {}
+    for name, mesh, transform in _parts(loaded, path.stem):
+        data = _to_mesh_data(mesh, transform, name, label)
+        if data is not None:
+            parts[_unique(name, parts)] = data
+    if not parts:
+        raise ResourceError(label, "contents", "the file holds no triangles")
+    return parts
+
+
+def _parts(loaded: Any, stem: str) -> list[tuple[str, Any, np.ndarray]]:
+    """(name, trimesh.Trimesh, world transform) for every triangle mesh in a load result."""
+    import trimesh
+
+    if isinstance(loaded, trimesh.Trimesh):
+        return [(stem, loaded, np.eye(4))]
+    if not isinstance(loaded, trimesh.Scene):
+        return []  # a point cloud or a path: no triangles
+    out = []
+    for node in loaded.graph.nodes_geometry:
+        transform, geometry = loaded.graph[node]
+        mesh = loaded.geometry.get(geometry)
+        if isinstance(mesh, trimesh.Trimesh):
+            out.append((str(node), mesh, np.asarray(transform, dtype=np.float64)))
+    return out
+
+
+def _unique(name: str, taken: dict[str, Any]) -> str:
+    candidate, i = name, 1
+    while candidate in taken:
+        i += 1
+        candidate = f"{name}.{i}"
+    return candidate
+
+
+def _to_mesh_data(mesh: Any, transform: np.ndarray, name: str, label: str) -> MeshData | None:
+    """A validated MeshData for one trimesh part, or None when it has no usable triangle."""
+    positions = np.asarray(mesh.vertices, dtype=np.float64)
+    faces = np.asarray(mesh.faces, dtype=np.int64).reshape(-1, 3)
+    if positions.ndim != 2 or positions.shape[1] != 3 or len(faces) == 0:
+        return None
+    if not np.all(np.isfinite(positions)):
+        raise ResourceError(label, f"part '{name}'", "vertex positions contain NaN or infinity")
+    if faces.min() < 0 or faces.max() >= len(positions):
+        raise ResourceError(label, f"part '{name}'", "a face refers to a vertex that does not exist")
+    positions = positions @ transform[:3, :3].T + transform[:3, 3]
+    faces = faces[_usable_triangles(positions, faces)]
+    if len(faces) == 0:
+        return None
+    # trimesh keeps normals read from the file in its cache; asking for mesh.vertex_normals would compute them.
+    normals = mesh._cache.cache.get("vertex_normals")
+    if normals is not None:
+        normals = np.asarray(normals, dtype=np.float64)
+        if normals.shape != positions.shape or not np.all(np.isfinite(normals)):
+            normals = None
+        else:
+            # Normals transform with the cofactor (inverse transpose) of the linear part, then renormalise.
+            normals = normals @ np.linalg.inv(transform[:3, :3])
+            length = np.linalg.norm(normals, axis=1, keepdims=True)
+            normals = np.where(length > 1e-12, normals / np.maximum(length, 1e-12), [0.0, 1.0, 0.0])
+    uvs = _uvs(mesh, len(positions))
+    colors = _colors(mesh, len(positions))
+    data = MeshData(positions, normals=normals, uvs=uvs, colors=colors, indices=faces, name=name).with_normals()
+    return data.with_tangents() if uvs is not None else data
+
+
+def _usable_triangles(positions: np.ndarray, faces: np.ndarray) -> np.ndarray:
+    """Mask of triangles with three distinct corners and a non-zero area (relative to their size)."""
+    a, b, c = (positions[faces[:, k]] for k in range(3))
+    distinct = (faces[:, 0] != faces[:, 1]) & (faces[:, 1] != faces[:, 2]) & (faces[:, 0] != faces[:, 2])
+    area2 = np.linalg.norm(np.cross(b - a, c - a), axis=1)
+    edge2 = np.maximum.reduce([np.sum((b - a) ** 2, 1), np.sum((c - b) ** 2, 1), np.sum((a - c) ** 2, 1)])
+    return distinct & (area2 > 1e-12 * np.maximum(edge2, 1e-300))
+
+
+def _uvs(mesh: Any, count: int) -> np.ndarray | None:
+    uv = getattr(mesh.visual, "uv", None) if getattr(mesh.visual, "kind", None) == "texture" else None
+    if uv is None:
+        return None
+    uv = np.asarray(uv, dtype=np.float64)
+    if uv.shape != (count, 2) or not np.all(np.isfinite(uv)):
+        return None
+    # trimesh uses the OBJ convention (v = 0 at the bottom); the engine's v = 0 is the top row.
+    return np.column_stack([uv[:, 0], 1.0 - uv[:, 1]])
+
+
+def _colors(mesh: Any, count: int) -> np.ndarray | None:
+    if getattr(mesh.visual, "kind", None) != "vertex":
+        return None
+    colors = np.asarray(mesh.visual.vertex_colors)
+    if colors.shape != (count, 4):
+        return None
+    return colors.astype(np.float64) / 255.0 if colors.dtype.kind in "iu" else colors.astype(np.float64)
+
+
+def _merge(parts: list[MeshData], name: str, label: str) -> MeshData:
+    if len(parts) == 1:
+        return parts[0] if parts[0].name == name else MeshData(**_fields(parts[0]), name=name)
+    fields: dict[str, Any] = {"positions": np.concatenate([p.positions for p in parts])}
+    for attr in ("normals", "uvs", "tangents", "colors"):
+        values = [getattr(p, attr) for p in parts]
+        fields[attr] = np.concatenate(values) if all(v is not None for v in values) else None
+    offsets = np.cumsum([0] + [p.vertex_count for p in parts[:-1]])
+    fields["indices"] = np.concatenate([p.triangles().reshape(-1).astype(np.int64) + o for p, o in zip(parts, offsets)])
+    return MeshData(**fields, name=name)
+
+
+def _fields(mesh: MeshData) -> dict[str, Any]:
+    return {f: getattr(mesh, f) for f in ("positions", "normals", "uvs", "tangents", "colors", "indices")}

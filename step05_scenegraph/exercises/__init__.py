@@ -1,0 +1,25 @@
+"""Step 05 exercises: the house capstone (``house.py``) and two integrators (``integrators.py``).
+
+Grade them with ``pytest --student tests/step05_scenegraph``.
+"""
+
+from .house import (
+    ORANGE,
+    HouseRotationSystem,
+    brick_texture_data,
+    house_camera,
+    house_material_data,
+    house_meshes,
+)
+from .integrators import rk4_step, semi_implicit_euler_step
+
+__all__ = [
+    "ORANGE",
+    "HouseRotationSystem",
+    "brick_texture_data",
+    "house_camera",
+    "house_material_data",
+    "house_meshes",
+    "rk4_step",
+    "semi_implicit_euler_step",
+]

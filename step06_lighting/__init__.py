@@ -1,0 +1,1 @@
+"""Step 06 — lighting: meshes from files, Blinn-Phong with many lights, a skybox and environment mapping."""

@@ -1,0 +1,27 @@
+"""The step's shader files, and where the student's (or the reference) ``shading`` include lives.
+
+Every lit shader includes ``shading.glsl``/``shading.wgsl`` (Blinn-Phong, reflect, refract) from the folder of
+the implementation package, so ``--student`` renders with the exercises and the default with the solutions.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from types import ModuleType
+
+SHADER_DIR = Path(__file__).resolve().parent / "shaders"
+
+#: shader name -> (GLSL vertex file, GLSL fragment file); the WGSL module is ``<name>.wgsl``.
+SHADERS = {
+    "phong": ("lit.vert", "phong.frag"),
+    "phong_textured": ("phong_textured.vert", "phong_textured.frag"),
+    "mirror": ("lit.vert", "mirror.frag"),
+    "glass": ("lit.vert", "glass.frag"),
+    "emissive": ("lit.vert", "emissive.frag"),
+}
+
+
+def impl_shader_dir(impl: ModuleType) -> Path:
+    """The folder holding ``impl``'s ``shading.glsl`` and ``shading.wgsl``."""
+    return Path(impl.__file__).resolve().parent
+

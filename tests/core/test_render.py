@@ -1,0 +1,250 @@
+"""The render systems of both backends, headless: instancing, caching, errors, lights, sky, reverse-Z.
+
+Tolerances: the two backends rasterise the same triangles with the same (software) drivers' rules; we
+require PSNR >= 40 dB between them and no channel more than 2/255 apart (measured: identical, or 1/255
+on a few lit pixels).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from gandalf_core import Application, Scene
+from gandalf_core.components import (
+    CameraComponent,
+    ClearColorComponent,
+    LightComponent,
+    MaterialComponent,
+    MeshComponent,
+    SkyboxComponent,
+    TransformComponent,
+)
+from gandalf_core.math import look_at_rotation
+from gandalf_core.render.errors import MissingResourceError, ShaderCompileError
+from gandalf_core.resources import MaterialData, checkerboard, cube, sky_cube, uv_sphere
+from gandalf_core.testing import compare_images
+
+SHADERS = Path(__file__).parent / "shaders"
+W, H = 96, 72
+
+
+def make_app(backend: str, **kwargs) -> Application:
+    app = Application(backend, W, H, headless=True, fixed_dt=1 / 60, **kwargs)
+    if backend == "opengl":
+        app.renderer.shaders.build("unlit", SHADERS / "unlit.vert", SHADERS / "unlit.frag")
+        app.renderer.shaders.build("lit", SHADERS / "lit.vert", SHADERS / "lit.frag")
+    else:
+        app.renderer.shaders.build("unlit", SHADERS / "unlit.wgsl")
+        app.renderer.shaders.build("lit", SHADERS / "lit.wgsl")
+    return app
+
+
+def add_camera(scene: Scene, eye=(0.0, 1.5, 6.0), **camera) -> None:
+    eye = np.array(eye, dtype=float)
+    scene.create_entity(TransformComponent(eye, quaternion=look_at_rotation(eye, (0, 0, 0))),
+                        CameraComponent(**{"fov": 50.0, "near": 0.1, "far": 100.0, **camera}))
+
+
+def cubes_scene(n: int = 5, **camera) -> Scene:
+    scene = Scene("cubes")
+    scene.assets.mesh("cube", cube())
+    scene.assets.texture("checker", checkerboard(32, 4))
+    scene.assets.material("M", MaterialData("unlit", ["checker"], color=(1.0, 0.6, 0.3)))
+    scene.create_entity(ClearColorComponent((0.2, 0.3, 0.4)))
+    for i in range(n):
+        scene.create_entity(TransformComponent((i * 1.5 - 3.0, 0, 0), (30, 40 * i, 0)),
+                            MeshComponent("cube"), MaterialComponent("M"))
+    add_camera(scene, **camera)
+    return scene
+
+
+def lit_scene(lights: int = 1, sky: bool = False, **camera) -> Scene:
+    scene = Scene("lit")
+    scene.assets.mesh("sphere", uv_sphere(segments=24, rings=12))
+    scene.assets.material("M", MaterialData("lit", color=(0.9, 0.6, 0.3)))
+    if sky:
+        scene.assets.texture("sky", sky_cube(32))
+        scene.create_entity(SkyboxComponent("sky"))
+    for i in range(3):
+        scene.create_entity(TransformComponent((i * 2.2 - 2.2, 0, 0), scale=(1, 1 + 0.5 * i, 1)),
+                            MeshComponent("sphere"), MaterialComponent("M"))
+    for i in range(lights):
+        scene.create_entity(TransformComponent(rotation=(-45, 30 + 10 * i, 0)),
+                            LightComponent("directional", (1, 1, 1), 1.0 / max(lights, 1)))
+    scene.create_entity(TransformComponent(), LightComponent("ambient", (0.2, 0.2, 0.3)))
+    add_camera(scene, **camera)
+    return scene
+
+
+def render(backend: str, scene: Scene, frames: int = 2) -> tuple[np.ndarray, Application]:
+    app = make_app(backend)
+    app.add_scene(scene)
+    app.run(frames=frames)
+    return app.capture(), app
+
+
+@pytest.mark.parametrize("build", [cubes_scene, lambda: lit_scene(3, sky=True)], ids=["textured", "lit-sky"])
+def test_backends_draw_the_same_picture(build):
+    images = {}
+    for backend in ("opengl", "webgpu"):
+        images[backend], app = render(backend, build())
+        app.close()
+    assert (images["opengl"][..., :3] != images["opengl"][0, 0, :3]).any(), "nothing was drawn"
+    compare_images(images["webgpu"], images["opengl"], "backends-agree", min_psnr=40.0, max_diff=2)
+
+
+def test_ten_thousand_entities_share_one_draw_call(backend):
+    scene = Scene("many")
+    scene.assets.mesh("cube", cube(0.01))
+    scene.assets.texture("checker", checkerboard(8, 2))
+    scene.assets.material("M", MaterialData("unlit", ["checker"]))
+    scene.assets.material("N", MaterialData("unlit", ["checker"], color=(0.2, 0.9, 0.2)))
+    rng = np.random.default_rng(1)
+    for p in rng.uniform(-2, 2, size=(10_000, 3)):
+        scene.create_entity(TransformComponent(p), MeshComponent("cube"), MaterialComponent("M"))
+    add_camera(scene)
+    with make_app(backend) as app:
+        app.add_scene(scene)
+        app.run(frames=2)
+        assert app.renderer.stats["draw_calls"] == 1
+        # A second material is a second batch, whatever the counts.
+        scene.create_entity(TransformComponent(), MeshComponent("cube"), MaterialComponent("N"))
+        app.step()
+        assert app.renderer.stats["draw_calls"] == 2
+
+
+def test_colour_change_rebuilds_nothing(backend):
+    with make_app(backend) as app:
+        app.add_scene(cubes_scene(3))
+        app.run(frames=2)
+        before = app.capture()
+        created = dict(app.renderer.stats)
+        app.renderer.materials.get("M").set_color((0.1, 0.9, 0.2))
+        app.run(frames=2)
+        after = app.capture()
+        for key in ("pipelines_created", "shaders_created", "vertex_arrays_created", "textures_created",
+                    "buffers_created"):
+            assert app.renderer.stats[key] == created.get(key, 0), key
+    assert np.abs(after.astype(int) - before.astype(int)).max() > 50
+
+
+def test_runtime_changes_show_up(backend):
+    """Entities added and removed while running (instance buffer growth, batch re-planning)."""
+    scene = cubes_scene(1)
+    with make_app(backend) as app:
+        app.add_scene(scene)
+        app.step()
+        one = app.capture()
+        extra = [scene.create_entity(TransformComponent((x, -1.0, 0.0), scale=0.4), MeshComponent("cube"),
+                                     MaterialComponent("M")) for x in np.linspace(-3, 3, 400)]
+        app.step()
+        many = app.capture()
+        for entity in extra:
+            scene.remove_component(entity, MeshComponent)
+        app.step()
+        again = app.capture()
+    background = np.round(np.array([0.2, 0.3, 0.4]) * 255)  # the clear colour reads back as its sRGB bytes
+
+    def coverage(img: np.ndarray) -> float:
+        return (np.abs(img[..., :3].astype(int) - background).max(axis=2) > 3).mean()
+    assert coverage(many) > coverage(one) + 0.05
+    assert np.array_equal(again, one)
+
+
+@pytest.mark.parametrize("frag,line", [("broken.frag", 6)])
+def test_glsl_error_names_file_and_line(frag, line):
+    with Application("opengl", 8, 8, headless=True) as app:
+        with pytest.raises(ShaderCompileError, match=rf"broken\.frag:{line}:"):
+            app.renderer.shaders.build("broken", SHADERS / "unlit.vert", SHADERS / frag)
+
+
+def test_wgsl_error_names_file_and_line():
+    with Application("webgpu", 8, 8, headless=True) as app:
+        with pytest.raises(ShaderCompileError, match=r"broken\.wgsl:5:"):
+            app.renderer.shaders.build("broken", SHADERS / "broken.wgsl")
+
+
+def test_missing_resources_are_named(backend):
+    scene = Scene("bad")
+    scene.assets.mesh("cube", cube())
+    scene.assets.material("needs-shader", MaterialData("no-such-shader"))
+    scene.assets.material("needs-texture", MaterialData("unlit", ["no-such-texture"]))
+    scene.assets.material("ok", MaterialData("lit"))
+    entity = scene.create_entity(TransformComponent(), MeshComponent("cube"), MaterialComponent("needs-shader"))
+    with make_app(backend) as app:
+        app.add_scene(scene)
+        with pytest.raises(MissingResourceError, match="material 'needs-shader' names shader 'no-such-shader'"):
+            app.step()
+        scene.add_component(entity, MaterialComponent("needs-texture"))
+        with pytest.raises(MissingResourceError, match="texture 'no-such-texture'"):
+            app.step()
+        scene.add_component(entity, MaterialComponent("no-such-material"))
+        with pytest.raises(MissingResourceError, match="material 'no-such-material'"):
+            app.step()
+        scene.add_component(entity, MaterialComponent("ok"))
+        scene.add_component(entity, MeshComponent("no-such-mesh"))
+        with pytest.raises(MissingResourceError, match="mesh 'no-such-mesh'"):
+            app.step()
+
+
+def test_only_needed_passes_are_built(backend):
+    """No sky pipeline/shader unless the scene has a SkyboxComponent."""
+    without, app = render(backend, lit_scene(1, sky=False))
+    shaders_without = app.renderer.stats["shaders_created"]
+    app.close()
+    with_sky, app = render(backend, lit_scene(1, sky=True))
+    assert app.renderer.stats["shaders_created"] == shaders_without + 1
+    app.close()
+    top = slice(0, 8)  # the sky shows at the top of the picture
+    assert np.abs(with_sky[top].astype(int) - without[top].astype(int)).max() > 20
+
+
+def test_reverse_z_draws_the_same_picture(backend):
+    normal, app = render(backend, lit_scene(2, sky=True, near=0.01, far=1e5))
+    app.close()
+    reverse, app = render(backend, lit_scene(2, sky=True, near=0.01, far=1e5, reverse_z=True))
+    app.close()
+    compare_images(reverse, normal, f"reverse-z-{backend}", min_psnr=40.0, max_diff=2)
+
+
+def test_lights_count_and_no_lights(backend):
+    dark, app = render(backend, lit_scene(0))
+    app.close()
+    lit, app = render(backend, lit_scene(1))
+    app.close()
+    assert lit[..., :3].astype(int).sum() > dark[..., :3].astype(int).sum()
+    assert dark[..., :3].max() > 0  # ambient light still shows the spheres
+
+
+def test_zero_scale_and_huge_scale_entities_render_without_errors(backend):
+    scene = cubes_scene(0)
+    scene.create_entity(TransformComponent(scale=0.0), MeshComponent("cube"), MaterialComponent("M"))
+    scene.create_entity(TransformComponent((0, 0, -50), scale=1e-6), MeshComponent("cube"), MaterialComponent("M"))
+    scene.create_entity(TransformComponent((0, 0, -90), scale=(1e3, 1e-3, 1)), MeshComponent("cube"),
+                        MaterialComponent("M"))
+    image, app = render(backend, scene)
+    app.close()
+    assert image.shape == (H, W, 4)
+
+
+def test_resize_follows_the_window_size(backend):
+    with make_app(backend) as app:
+        app.add_scene(cubes_scene(3))
+        app.step()
+        app.input.resize(64, 40)
+        app.step()
+        assert app.capture().shape == (40, 64, 4)
+
+
+def test_many_frames_create_nothing_new(backend):
+    with make_app(backend) as app:
+        app.add_scene(lit_scene(2, sky=True))
+        app.run(frames=3)
+        live, created = app.renderer.live_objects(), dict(app.renderer.stats)
+        app.run(frames=50)
+        assert app.renderer.live_objects() == live
+        assert {k: v for k, v in app.renderer.stats.items() if k != "draw_calls"} == \
+            {k: v for k, v in created.items() if k != "draw_calls"}
