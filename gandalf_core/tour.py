@@ -50,16 +50,33 @@ def main(argv: list[str] | None = None) -> int:
     headless = args.headless or not display_available()
     out_dir = Path(args.out)
     for step in steps:
+        images = {}
         for backend in args.backends:
             if headless:
                 start = time.perf_counter()
                 path = render_step(step, backend, out_dir)
+                images[backend] = path
                 print(f"{step:<22} {backend:<7} -> {path}  ({time.perf_counter() - start:.2f} s)")
             else:
                 print(f"{step} ({backend}): close the window to go on")
                 with importlib.import_module(f"{step}.{backend}").create_app(headless=False) as app:
                     app.run()
+        if len(images) == 2:
+            print(f"{step:<22} OpenGL vs WebGPU: {_agreement(*images.values())}")
     return 0
+
+
+def _agreement(a: Path, b: Path) -> str:
+    """How closely the two backends' pictures agree (PSNR over RGB, largest channel difference)."""
+    import numpy as np
+    from PIL import Image
+
+    from .testing import psnr
+
+    x, y = (np.asarray(Image.open(p).convert("RGBA")) for p in (a, b))
+    worst = int(np.abs(x[..., :3].astype(int) - y[..., :3].astype(int)).max())
+    value = psnr(x, y)
+    return "identical" if worst == 0 else f"PSNR {value:.1f} dB, largest channel difference {worst}/255"
 
 
 if __name__ == "__main__":

@@ -5,7 +5,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# --8<-- [start:packages]
 APT_PACKAGES=(libegl1 libegl-mesa0 libgl1 libgl1-mesa-dri mesa-vulkan-drivers libvulkan1 xvfb xauth x11-utils)
+# --8<-- [end:packages]
 if command -v dpkg-query >/dev/null 2>&1; then
     missing=()
     for pkg in "${APT_PACKAGES[@]}"; do

@@ -56,7 +56,7 @@ def build_scene(impl: ModuleType) -> Scene:
     floor = (MeshComponent("floor"), MaterialComponent("floor"))
     scene.create_entity(InfoComponent("floor"), TransformComponent(), *floor)
     for name, material, x in (("clay bunny", "clay", -2.3), ("silver bunny", "silver", 0.0), ("ice bunny", "ice", 2.3)):
-        scene.create_entity(InfoComponent(name), TransformComponent((x, 0.0, 0.0), rotation=(0.0, 25.0, 0.0)),
+        scene.create_entity(InfoComponent(name), TransformComponent((x, 0.0, 0.0), rotation=(0.0, 60.0, 0.0)),
                             MeshComponent("bunny"), MaterialComponent(material))
     for k in range(RING_LIGHTS):
         rgb = colorsys.hsv_to_rgb(k / RING_LIGHTS, 0.75, 1.0)
@@ -66,7 +66,7 @@ def build_scene(impl: ModuleType) -> Scene:
             TransformComponent(),
             OrbitComponent(center=(0.0, 0.45 + 0.5 * (k % 2), 0.0), radius=3.6, angle=360.0 * k / RING_LIGHTS,
                            speed=24.0),
-            LightComponent("point", rgb, intensity=3.0, range=4.5),
+            LightComponent("point", rgb, intensity=1.6, range=4.0),
             MeshComponent("marker"),
             MaterialComponent(f"marker{k}"),
         )

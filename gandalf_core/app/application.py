@@ -86,6 +86,7 @@ class Application:
         self._prepared.add(id(scene))
 
     # --- the loop -------------------------------------------------------------------------------
+    # --8<-- [start:step]
     def step(self, dt: float | None = None) -> float:
         """Run exactly one frame and return its time step."""
         self.scenes.apply_pending()
@@ -99,6 +100,7 @@ class Application:
         ts = self.clock.tick(dt)
         scene.update(ts)
         return ts
+    # --8<-- [end:step]
 
     def run(self, frames: int | None = None, seconds: float | None = None) -> None:
         """Run until the window closes, or for ``frames`` frames / ``seconds`` of clock time."""

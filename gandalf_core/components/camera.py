@@ -15,6 +15,8 @@ from ..ecs import Component
 from ..math import orthographic, perspective
 
 PROJECTIONS = ("perspective", "orthographic")
+# Parameter names of the projection functions -> this component's fields, for error messages.
+_FIELDS = {"fovy_degrees": "fov", "aspect": "aspect", "near": "near", "far": "far"}
 
 
 class CameraComponent(Component):
@@ -47,7 +49,19 @@ class CameraComponent(Component):
         self.projection_matrix("opengl", 1.0)  # validate now, naming the bad field
 
     def projection_matrix(self, depth_range: str, target_aspect: float) -> np.ndarray:
-        """The projection for an API's depth range ('opengl' or 'webgpu')."""
+        """The projection for an API's depth range ('opengl' or 'webgpu').
+
+        A bad value raises ValueError naming the component's field (``CameraComponent.fov`` ...).
+        """
+        try:
+            return self._projection(depth_range, target_aspect)
+        except ValueError as exc:
+            message = str(exc)
+            for parameter, field in _FIELDS.items():
+                message = message.replace(parameter, f"CameraComponent.{field}")
+            raise ValueError(message) from None
+
+    def _projection(self, depth_range: str, target_aspect: float) -> np.ndarray:
         aspect = target_aspect if self.aspect is None else self.aspect
         if self.projection == "perspective":
             return perspective(self.fov, aspect, self.near, self.far, depth_range=depth_range, reverse_z=self.reverse_z)

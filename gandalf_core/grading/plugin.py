@@ -34,6 +34,7 @@ def pytest_configure(config: pytest.Config) -> None:
     _results.clear()
 
 
+# --8<-- [start:impl_fixture]
 def impl_fixture(step_package: str) -> Any:
     """Create the ``impl`` fixture of a step: its ``exercises`` or ``solutions`` package."""
 
@@ -43,6 +44,7 @@ def impl_fixture(step_package: str) -> Any:
         return importlib.import_module(f"{step_package}.{which}")
 
     return impl
+# --8<-- [end:impl_fixture]
 
 
 @pytest.hookimpl(hookwrapper=True)

@@ -45,10 +45,12 @@ class RenderSystem(System):
         self._cameras = scene.query(CameraComponent, TransformComponent)
         self._skyboxes = scene.query(SkyboxComponent)
 
+    # --8<-- [start:clear_color]
     def clear_color(self) -> np.ndarray:
         """The first ClearColorComponent's colour in linear light (black when the scene has none)."""
         comps = self._backgrounds.components
         return srgb_rgba_to_linear(comps[0][0].color if comps else DEFAULT_CLEAR)
+    # --8<-- [end:clear_color]
 
     def primary_camera(self) -> tuple[object, CameraComponent, TransformComponent] | None:
         for entity, (camera, transform) in zip(self._cameras.entities, self._cameras.components):

@@ -1,6 +1,22 @@
-"""Core systems that every scene can use."""
+"""Core systems that every scene can use: transforms, lights, camera controllers."""
 
+from .camera_controllers import (
+    FlyControllerComponent,
+    FlyControllerSystem,
+    OrbitControllerComponent,
+    OrbitControllerSystem,
+)
 from .light_system import LightSystem, pack_lights
 from .transform_system import TransformSystem, set_parent_keep_world, world_matrix
 
-__all__ = ["LightSystem", "pack_lights", "TransformSystem", "set_parent_keep_world", "world_matrix"]
+__all__ = [
+    "FlyControllerComponent",
+    "FlyControllerSystem",
+    "LightSystem",
+    "OrbitControllerComponent",
+    "OrbitControllerSystem",
+    "TransformSystem",
+    "pack_lights",
+    "set_parent_keep_world",
+    "world_matrix",
+]

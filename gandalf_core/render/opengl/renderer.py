@@ -55,6 +55,7 @@ class OpenGLRenderer(Renderer):
         self._create_targets()
 
     # --- targets ----------------------------------------------------------------------------------
+    # --8<-- [start:targets]
     def _create_targets(self) -> None:
         size = (self.width, self.height)
         # An sRGB colour target: shaders work in linear light and GL encodes on write, as WebGPU's
@@ -62,6 +63,7 @@ class OpenGLRenderer(Renderer):
         self._color = self.ctx.texture(size, 4, internal_format=GL_SRGB8_ALPHA8)
         self._depth = self.ctx.depth_texture(size)
         self._fbo = self.ctx.framebuffer([self._color], self._depth)
+    # --8<-- [end:targets]
 
     def _release_targets(self) -> None:
         for obj in (self._fbo, self._color, self._depth):
@@ -70,12 +72,14 @@ class OpenGLRenderer(Renderer):
     # --- a frame ------------------------------------------------------------------------------------
     def render(self, data: FrameData, assets: Assets) -> None:
         self.stats["draw_calls"] = 0
+        # --8<-- [start:clear]
         fbo = self._fbo
         fbo.use()
         self.ctx.enable_direct(GL_FRAMEBUFFER_SRGB)
         fbo.depth_mask = True
         r, g, b, a = (float(x) for x in data.clear_color)
         fbo.clear(r, g, b, a, depth=0.0 if data.reverse_z else 1.0)
+        # --8<-- [end:clear]
         self._frame_ubo.write(data.frame)
         self._frame_ubo.bind_to_uniform_block(0)
         self._lights_ubo.write(data.lights)

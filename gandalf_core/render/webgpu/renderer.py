@@ -79,6 +79,7 @@ class WebGPURenderer(Renderer):
         self._instance_buffer: Any = None
         self._create_targets()
 
+    # --8<-- [start:targets]
     def _create_targets(self) -> None:
         usage = wgpu.TextureUsage
         self._color = self.device.create_texture(
@@ -90,6 +91,7 @@ class WebGPURenderer(Renderer):
         )
         self.color_view = self._color.create_view()
         self.depth_view = self._depth.create_view()
+    # --8<-- [end:targets]
 
     # --- a frame ------------------------------------------------------------------------------------
     def render(self, data: FrameData, assets: Assets) -> None:
@@ -107,6 +109,7 @@ class WebGPURenderer(Renderer):
             draws.append((batch, material, mesh, self._pipeline(material, mesh, data.reverse_z)))
         sky = self._sky_draw(data.skybox, assets, data.reverse_z) if data.skybox is not None else None
         encoder = self.device.create_command_encoder()
+        # --8<-- [start:clear]
         rpass = encoder.begin_render_pass(
             color_attachments=[{
                 "view": self.color_view, "clear_value": tuple(float(x) for x in data.clear_color),
@@ -118,6 +121,7 @@ class WebGPURenderer(Renderer):
             },
         )
         rpass.set_bind_group(0, self._frame_group)
+        # --8<-- [end:clear]
         for batch, material, mesh, (pipeline, attributes) in draws:
             rpass.set_pipeline(pipeline)
             if material.bind_group is not None:

@@ -1,0 +1,158 @@
+"""Shared helpers of the step 06 tests: headless apps, a lit sphere scene, and the numpy reference renderer.
+
+The reference traces one ray per pixel centre against the exact sphere with the camera the app uses and
+shades the hit point with a numpy twin of the step's shaders (``lighting.glsl`` + the reference
+``blinn_phong``), in float64 and linear light, then encodes to 8-bit sRGB like the framebuffer.
+"""
+
+from __future__ import annotations
+
+import importlib
+from pathlib import Path
+from types import ModuleType
+
+import numpy as np
+
+from gandalf_core import Application, Scene, TransformComponent
+from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
+from gandalf_core.math import look_at_rotation
+from gandalf_core.resources import MaterialData, linear_to_srgb, srgb_to_linear, uv_sphere
+
+REFERENCES = Path(__file__).resolve().parent / "references"
+SIZE = (112, 84)
+EYE = np.array([0.0, 0.0, 3.2])
+FOV = 45.0
+
+
+def make_app(backend: str, impl: ModuleType, size: tuple[int, int] = SIZE) -> Application:
+    """A headless app of ``backend`` with the step's shaders built from ``impl``'s shading include."""
+    app = Application(backend, *size, headless=True, fixed_dt=1 / 60)
+    importlib.import_module(f"step06_lighting.{backend}").register_shaders(app, impl)
+    return app
+
+
+def sphere_scene(material: MaterialData, lights: list[tuple[LightComponent, TransformComponent]],
+                 textures: dict | None = None, light_system=None) -> Scene:
+    """A unit sphere at the origin seen from EYE, lit by ``lights``."""
+    scene = Scene("sphere")
+    scene.assets.mesh("sphere", uv_sphere(1.0, 96, 48))
+    for name, data in (textures or {}).items():
+        scene.assets.texture(name, data)
+    scene.assets.material("M", material)
+    scene.create_entity(TransformComponent(), MeshComponent("sphere"), MaterialComponent("M"))
+    for light, transform in lights:
+        # Fresh components: the same light list may describe several scenes (and the numpy reference).
+        scene.create_entity(
+            TransformComponent(transform.translation, quaternion=transform.quaternion, scale=transform.scale),
+            LightComponent(light.kind, light.color, light.intensity, light.range),
+        )
+    scene.create_entity(TransformComponent(EYE, quaternion=look_at_rotation(EYE, (0, 0, 0))),
+                        CameraComponent(FOV, 0.1, 20.0))
+    if light_system is not None:
+        scene.add_system(light_system)
+    return scene
+
+
+def render(backend: str, impl: ModuleType, scene: Scene, size: tuple[int, int] = SIZE, frames: int = 1) -> np.ndarray:
+    with make_app(backend, impl, size) as app:
+        app.add_scene(scene)
+        app.run(frames=frames)
+        return app.capture()
+
+
+def directional(towards, color=(1.0, 1.0, 1.0), intensity=1.0):
+    """A directional light whose light comes from direction ``towards`` (a vector pointing at the light)."""
+    t = np.asarray(towards, dtype=np.float64)
+    return LightComponent("directional", color, intensity), TransformComponent(t, quaternion=look_at_rotation(t, (0, 0, 0)))
+
+
+def point(position, color=(1.0, 1.0, 1.0), intensity=1.0, range=0.0):
+    return LightComponent("point", color, intensity, range), TransformComponent(position)
+
+
+def ambient(color):
+    return LightComponent("ambient", color), TransformComponent()
+
+
+# --- the numpy reference ----------------------------------------------------------------------------
+def sphere_hits(size: tuple[int, int] = SIZE) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(hit mask (H, W), hit points (H, W, 3), unit view rays (H, W, 3)) for the unit sphere at the origin."""
+    w, h = size
+    x = (np.arange(w) + 0.5) / w * 2.0 - 1.0
+    y = 1.0 - (np.arange(h) + 0.5) / h * 2.0
+    tan = np.tan(np.radians(FOV) / 2)
+    d = np.stack(np.broadcast_arrays(x[None, :] * tan * w / h, y[:, None] * tan, -np.ones((h, w))), -1)
+    d /= np.linalg.norm(d, axis=-1, keepdims=True)
+    b = np.sum(d * EYE, axis=-1)
+    disc = b * b - (EYE @ EYE - 1.0)
+    hit = disc > 0.0
+    t = -b - np.sqrt(np.maximum(disc, 0.0))
+    return hit, EYE + t[..., None] * d, d
+
+
+def inner(mask: np.ndarray, pixels: int = 2) -> np.ndarray:
+    """``mask`` eroded by ``pixels``: the silhouette's edge pixels are partly covered and rasterised differently."""
+    out = mask.copy()
+    for _ in range(pixels):
+        out[1:] &= mask[:-1] & out[1:]
+        out[:-1] &= out[1:]
+        out[:, 1:] &= out[:, :-1]
+        out[:, :-1] &= out[:, 1:]
+    return out
+
+
+def blinn_phong_np(n, l, v, radiance, albedo, specular, shininess):
+    """Numpy twin of the reference ``blinn_phong`` (arrays (..., 3))."""
+    n_dot_l = np.maximum(np.sum(n * l, axis=-1, keepdims=True), 0.0)
+    h = l + v
+    length = np.linalg.norm(h, axis=-1, keepdims=True)
+    h = np.where(length > 1e-6, h / np.maximum(length, 1e-6), n)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        lobe = np.power(np.maximum(np.sum(n * h, axis=-1, keepdims=True), 0.0), shininess) if shininess > 0 else 1.0
+    return (albedo + specular * lobe) * radiance * n_dot_l
+
+
+def shade_np(p, n, v, albedo_srgb, specular, shininess, lights):
+    """Numpy twin of ``shade()`` in lighting.glsl; ``lights`` as (LightComponent, TransformComponent) pairs."""
+    albedo = srgb_to_linear(np.asarray(albedo_srgb, dtype=np.float64))
+    color = np.zeros(p.shape)
+    for light, transform in lights:
+        radiance = srgb_to_linear(np.asarray(light.color, dtype=np.float64)) * light.intensity
+        if light.kind == "ambient":
+            color = color + radiance * albedo
+            continue
+        if light.kind == "directional":
+            t = np.asarray(transform.translation, dtype=np.float64)
+            l = np.broadcast_to(t / np.linalg.norm(t), p.shape)
+            rad = radiance
+        else:
+            d = np.asarray(transform.translation, dtype=np.float64) - p
+            dist = np.linalg.norm(d, axis=-1, keepdims=True)
+            l = np.where(dist > 1e-6, d / np.maximum(dist, 1e-6), n)
+            rad = radiance
+            if light.range > 0:
+                window = np.clip(1.0 - (dist / light.range) ** 4, 0.0, 1.0)
+                rad = radiance * window * window / np.maximum(dist * dist, 1e-4)
+        color = color + blinn_phong_np(n, l, v, rad, albedo, specular, shininess)
+    return color
+
+
+def to_srgb8(linear: np.ndarray) -> np.ndarray:
+    return np.round(linear_to_srgb(np.clip(linear, 0.0, 1.0)) * 255.0)
+
+
+def reference_sphere(material: MaterialData, lights, size: tuple[int, int] = SIZE) -> tuple[np.ndarray, np.ndarray]:
+    """(expected 8-bit RGB (H, W, 3), hit mask) of the phong sphere."""
+    hit, p, _ = sphere_hits(size)
+    n = p / np.linalg.norm(p, axis=-1, keepdims=True)
+    v = EYE - p
+    v /= np.linalg.norm(v, axis=-1, keepdims=True)
+    params = material.params
+    color = shade_np(p, n, v, material.color[:3], params.get("specular", 0.0), params.get("shininess", 0.0), lights)
+    return to_srgb8(color), hit
+
+
+def pixel_errors(image: np.ndarray, expected: np.ndarray, mask: np.ndarray) -> tuple[float, float]:
+    """(mean, 99th percentile) absolute channel error in 8-bit steps over the pixels of ``mask``."""
+    diff = np.abs(image[..., :3].astype(np.float64) - expected)[mask]
+    return float(diff.mean()), float(np.percentile(diff, 99))
