@@ -165,9 +165,9 @@ def plot_sweep(ratios: Sequence[float], sweep: dict[str, np.ndarray], path: Path
         r = np.asarray(ratios)
         ax.scatter(r[ok], np.full(ok.sum(), row), c="tab:green", marker="o", s=18)
         ax.scatter(r[~ok], np.full((~ok).sum(), row), c="tab:red", marker="x", s=18)
-    for limit, label in ((4 / SWEEP_DT**2, "ω·dt = 2"), (8 / SWEEP_DT**2, "ω·dt = 2√2")):
+    for limit, label, side in ((4 / SWEEP_DT**2, "ω·dt = 2 ", "right"), (8 / SWEEP_DT**2, " ω·dt = 2√2", "left")):
         ax.axvline(limit, color="grey", ls="--", lw=0.8)
-        ax.text(limit, len(INTEGRATOR_NAMES) - 0.45, label, fontsize=7, ha="center")
+        ax.text(limit, len(INTEGRATOR_NAMES) - 0.45, label, fontsize=7, ha=side)
     ax.set_xscale("log")
     ax.set_yticks(range(len(INTEGRATOR_NAMES)), INTEGRATOR_NAMES, fontsize=8)
     ax.set_ylim(-0.6, len(INTEGRATOR_NAMES) - 0.1)

@@ -40,17 +40,21 @@ def sphere_scene(material: MaterialData, lights: list[tuple[LightComponent, Tran
         scene.assets.texture(name, data)
     scene.assets.material("M", material)
     scene.create_entity(TransformComponent(), MeshComponent("sphere"), MaterialComponent("M"))
-    for light, transform in lights:
-        # Fresh components: the same light list may describe several scenes (and the numpy reference).
-        scene.create_entity(
-            TransformComponent(transform.translation, quaternion=transform.quaternion, scale=transform.scale),
-            LightComponent(light.kind, light.color, light.intensity, light.range),
-        )
+    add_lights(scene, lights)
     scene.create_entity(TransformComponent(EYE, quaternion=look_at_rotation(EYE, (0, 0, 0))),
                         CameraComponent(FOV, 0.1, 20.0))
     if light_system is not None:
         scene.add_system(light_system)
     return scene
+
+
+def add_lights(scene: Scene, lights: list[tuple[LightComponent, TransformComponent]]) -> None:
+    """Copies of ``lights`` as entities: the same list may describe several scenes (and the numpy reference)."""
+    for light, transform in lights:
+        scene.create_entity(
+            TransformComponent(transform.translation, quaternion=transform.quaternion, scale=transform.scale),
+            LightComponent(light.kind, light.color, light.intensity, light.range),
+        )
 
 
 def render(backend: str, impl: ModuleType, scene: Scene, size: tuple[int, int] = SIZE, frames: int = 1) -> np.ndarray:
@@ -63,7 +67,8 @@ def render(backend: str, impl: ModuleType, scene: Scene, size: tuple[int, int] =
 def directional(towards, color=(1.0, 1.0, 1.0), intensity=1.0):
     """A directional light whose light comes from direction ``towards`` (a vector pointing at the light)."""
     t = np.asarray(towards, dtype=np.float64)
-    return LightComponent("directional", color, intensity), TransformComponent(t, quaternion=look_at_rotation(t, (0, 0, 0)))
+    transform = TransformComponent(t, quaternion=look_at_rotation(t, (0.0, 0.0, 0.0)))
+    return LightComponent("directional", color, intensity), transform
 
 
 def point(position, color=(1.0, 1.0, 1.0), intensity=1.0, range=0.0):
@@ -101,7 +106,7 @@ def inner(mask: np.ndarray, pixels: int = 2) -> np.ndarray:
     return out
 
 
-def blinn_phong_np(n, l, v, radiance, albedo, specular, shininess):
+def blinn_phong_np(n, l, v,  # noqa: E741 (the shader's names) radiance, albedo, specular, shininess):
     """Numpy twin of the reference ``blinn_phong`` (arrays (..., 3))."""
     n_dot_l = np.maximum(np.sum(n * l, axis=-1, keepdims=True), 0.0)
     h = l + v
@@ -123,12 +128,14 @@ def shade_np(p, n, v, albedo_srgb, specular, shininess, lights):
             continue
         if light.kind == "directional":
             t = np.asarray(transform.translation, dtype=np.float64)
-            l = np.broadcast_to(t / np.linalg.norm(t), p.shape)
+            l = np.broadcast_to(  # noqa: E741
+                t / np.linalg.norm(t), p.shape)
             rad = radiance
         else:
             d = np.asarray(transform.translation, dtype=np.float64) - p
             dist = np.linalg.norm(d, axis=-1, keepdims=True)
-            l = np.where(dist > 1e-6, d / np.maximum(dist, 1e-6), n)
+            l = np.where(dist  # noqa: E741
+                 > 1e-6, d / np.maximum(dist, 1e-6), n)
             rad = radiance
             if light.range > 0:
                 window = np.clip(1.0 - (dist / light.range) ** 4, 0.0, 1.0)

@@ -1,0 +1,69 @@
+"""The repository's own conventions: every step has the same shape, and its two implementations the same API."""
+
+from __future__ import annotations
+
+import ast
+import importlib
+from collections import Counter
+from pathlib import Path
+
+import pytest
+
+from gandalf_core.tour import REPO_ROOT, find_steps
+
+STEPS = find_steps()
+
+
+def test_steps_are_found_in_order():
+    assert STEPS and STEPS == sorted(STEPS)
+    assert STEPS[0] == "step01_window"
+
+
+@pytest.mark.parametrize("step", STEPS)
+def test_step_has_the_standard_files(step):
+    folder = REPO_ROOT / step
+    for name in ("__init__.py", "scene.py", "opengl.py", "webgpu.py", "exercises/__init__.py", "solutions/__init__.py"):
+        assert (folder / name).is_file(), f"{step} lacks {name}"
+    assert (REPO_ROOT / "tests" / step).is_dir(), f"{step} has no tests/{step} folder (its autograder)"
+    for variant in ("opengl", "webgpu"):
+        assert callable(getattr(importlib.import_module(f"{step}.{variant}"), "create_app", None))
+
+
+@pytest.mark.parametrize("step", STEPS)
+def test_exercises_and_solutions_export_the_same_names(step):
+    exercises = importlib.import_module(f"{step}.exercises")
+    solutions = importlib.import_module(f"{step}.solutions")
+    assert sorted(exercises.__all__) == sorted(solutions.__all__)
+
+
+@pytest.mark.parametrize("step", STEPS)
+def test_backend_neutral_code_imports_no_gpu_library(step):
+    """scene.py, components, exercises and solutions are the same for both APIs: no moderngl/wgpu in them."""
+    folder = REPO_ROOT / step
+    neutral = [p for p in folder.rglob("*.py") if p.name not in ("opengl.py", "webgpu.py", "raw.py", "preview.py")
+               and "bench" not in p.name]
+    for path in neutral:
+        for node in ast.walk(ast.parse(path.read_text())):
+            names = []
+            if isinstance(node, ast.Import):
+                names = [a.name for a in node.names]
+            elif isinstance(node, ast.ImportFrom) and node.module:
+                names = [node.module]
+            for name in names:
+                assert name.split(".")[0] not in ("moderngl", "wgpu"), f"{path.relative_to(REPO_ROOT)} imports {name}"
+
+
+def test_test_file_names_are_unique():
+    """Test folders are not packages, so pytest needs every test module name to be unique."""
+    names = Counter(p.name for p in (REPO_ROOT / "tests").rglob("test_*.py"))
+    assert not [n for n, c in names.items() if c > 1]
+
+
+def test_every_module_has_a_docstring():
+    missing = []
+    for root in ["gandalf_core", *STEPS]:
+        for path in Path(REPO_ROOT / root).rglob("*.py"):
+            tree = ast.parse(path.read_text())
+            if path.stat().st_size and ast.get_docstring(tree) is None:
+                missing.append(str(path.relative_to(REPO_ROOT)))
+    assert not missing, missing
