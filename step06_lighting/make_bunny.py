@@ -43,15 +43,15 @@ def build_bunny():
 
     scene = trimesh.Scene()
     scene.add_geometry(_part(3, (0.62, 0.56, 0.78), flatten_below=-0.42), node_name="body", geom_name="body",
-                       transform=_place((0.0, 0.52, -0.1)))
+                       transform=_place((0.0, 0.455, -0.1)))
     scene.add_geometry(_part(3, (0.40, 0.36, 0.44)), node_name="head", geom_name="head",
-                       transform=_place((0.0, 1.06, 0.5), rot_x=-12.0))
+                       transform=_place((0.0, 0.995, 0.5), rot_x=-12.0))
     ear = _part(2, (0.11, 0.40, 0.06))
     for side, name in ((-1.0, "ear_left"), (1.0, "ear_right")):
         scene.add_geometry(ear, node_name=name, geom_name=name,
-                           transform=_place((0.15 * side, 1.55, 0.36), rot_x=-18.0, rot_z=-12.0 * side))
+                           transform=_place((0.15 * side, 1.485, 0.36), rot_x=-18.0, rot_z=-12.0 * side))
     scene.add_geometry(_part(1, (0.16, 0.16, 0.16)), node_name="tail", geom_name="tail",
-                       transform=_place((0.0, 0.55, -0.88)))
+                       transform=_place((0.0, 0.485, -0.88)))
     return scene
 
 

@@ -10,11 +10,13 @@ from __future__ import annotations
 from abc import ABC, abstractmethod
 from collections import Counter
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
 from ..resources.assets import Assets
-from .frame import DrawBatch
+from .frame import FrameData
+from .library import ResourceLib
 
 BACKENDS = ("opengl", "webgpu")
 
@@ -51,17 +53,9 @@ class Renderer(ABC):
         return self.width / self.height
 
     @abstractmethod
-    def render(
-        self,
-        clear_color: np.ndarray,
-        frame: bytes,
-        batches: list[DrawBatch],
-        instances: np.ndarray | None,
-        assets: Assets,
-        reverse_z: bool = False,
-    ) -> None:
-        """Draw one frame: clear to ``clear_color`` (linear RGBA), upload the frame uniforms and the
-        instance data once, draw each batch with one instanced call, then present (in a window)."""
+    def render(self, data: FrameData, assets: Assets) -> None:
+        """Draw one frame: clear, upload the frame and light uniforms and the instance data once, draw
+        each batch with one instanced call (and the sky, if any), then present (in a window)."""
 
     @abstractmethod
     def read_pixels(self) -> np.ndarray:
@@ -74,6 +68,27 @@ class Renderer(ABC):
     @abstractmethod
     def release(self) -> None:
         """Free every GPU object this renderer created."""
+
+    # --- resources on first use (the same for both backends) ------------------------------------
+    # Each renderer has ``textures``, ``shaders``, ``meshes`` and ``materials`` libraries (ResourceLib).
+    textures: ResourceLib[Any]
+    shaders: ResourceLib[Any]
+    meshes: ResourceLib[Any]
+    materials: ResourceLib[Any]
+
+    def resolve_material(self, name: str, assets: Assets) -> Any:
+        """The material a MaterialComponent names, built (with its textures) from the scene's assets."""
+        data = assets.materials.get(name)
+        if data is not None and name not in self.materials:
+            for texture in data.textures:
+                self.textures.resolve(texture, assets.textures, f"material '{name}'")
+        return self.materials.resolve(name, assets.materials, "a MaterialComponent")
+
+    def resolve_mesh(self, name: str, assets: Assets) -> Any:
+        return self.meshes.resolve(name, assets.meshes, "a MeshComponent")
+
+    def resolve_texture(self, name: str, assets: Assets, referrer: str) -> Any:
+        return self.textures.resolve(name, assets.textures, referrer)
 
     def save_png(self, path: str | Path) -> Path:
         """Write the last frame to a PNG file."""

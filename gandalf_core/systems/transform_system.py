@@ -106,7 +106,11 @@ def world_matrix(scene: Scene, entity: uuid.UUID) -> np.ndarray:
 
 
 def set_parent_keep_world(scene: Scene, entity: uuid.UUID, parent: uuid.UUID | None) -> None:
-    """Re-parent ``entity`` so that its world pose stays where it is (local TRS recomputed)."""
+    """Re-parent ``entity`` so that its world pose stays where it is (local TRS recomputed).
+
+    Exact when the new parent's world matrix has no shear (uniform scale, or non-uniform scale without
+    rotation above it); a local TRS cannot express a sheared pose, so then the closest TRS is kept.
+    """
     world = world_matrix(scene, entity)
     if scene.try_component(entity, LinkComponent) is None:
         scene.add_component(entity, LinkComponent(None))

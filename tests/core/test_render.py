@@ -248,3 +248,17 @@ def test_many_frames_create_nothing_new(backend):
         assert app.renderer.live_objects() == live
         assert {k: v for k, v in app.renderer.stats.items() if k != "draw_calls"} == \
             {k: v for k, v in created.items() if k != "draw_calls"}
+
+
+def test_one_name_for_different_data_in_two_scenes_is_an_error(backend):
+    """Libraries cache by name; a second scene that reuses a name for other data must not get the first's."""
+    first, second = cubes_scene(1), cubes_scene(1)
+    second.assets.mesh("cube", cube(2.0))
+    second.name = "cubes-2"
+    with make_app(backend) as app:
+        app.add_scene(first)
+        app.add_scene(second)
+        app.step()
+        app.switch_scene(second)
+        with pytest.raises(ValueError, match="mesh 'cube' was already built from other data"):
+            app.step()

@@ -106,10 +106,10 @@ def inner(mask: np.ndarray, pixels: int = 2) -> np.ndarray:
     return out
 
 
-def blinn_phong_np(n, l, v,  # noqa: E741 (the shader's names) radiance, albedo, specular, shininess):
+def blinn_phong_np(n, to_light, v, radiance, albedo, specular, shininess):
     """Numpy twin of the reference ``blinn_phong`` (arrays (..., 3))."""
-    n_dot_l = np.maximum(np.sum(n * l, axis=-1, keepdims=True), 0.0)
-    h = l + v
+    n_dot_l = np.maximum(np.sum(n * to_light, axis=-1, keepdims=True), 0.0)
+    h = to_light + v
     length = np.linalg.norm(h, axis=-1, keepdims=True)
     h = np.where(length > 1e-6, h / np.maximum(length, 1e-6), n)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
@@ -128,19 +128,17 @@ def shade_np(p, n, v, albedo_srgb, specular, shininess, lights):
             continue
         if light.kind == "directional":
             t = np.asarray(transform.translation, dtype=np.float64)
-            l = np.broadcast_to(  # noqa: E741
-                t / np.linalg.norm(t), p.shape)
+            to_light = np.broadcast_to(t / np.linalg.norm(t), p.shape)
             rad = radiance
         else:
             d = np.asarray(transform.translation, dtype=np.float64) - p
             dist = np.linalg.norm(d, axis=-1, keepdims=True)
-            l = np.where(dist  # noqa: E741
-                 > 1e-6, d / np.maximum(dist, 1e-6), n)
+            to_light = np.where(dist > 1e-6, d / np.maximum(dist, 1e-6), n)
             rad = radiance
             if light.range > 0:
                 window = np.clip(1.0 - (dist / light.range) ** 4, 0.0, 1.0)
                 rad = radiance * window * window / np.maximum(dist * dist, 1e-4)
-        color = color + blinn_phong_np(n, l, v, rad, albedo, specular, shininess)
+        color = color + blinn_phong_np(n, to_light, v, rad, albedo, specular, shininess)
     return color
 
 

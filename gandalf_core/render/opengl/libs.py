@@ -20,7 +20,8 @@ import numpy as np
 
 from ...resources import CubeTextureData, MaterialData, MeshData, ShaderSource, TextureData
 from ..color import srgb_rgba_to_linear
-from ..errors import ShaderCompileError, missing
+from ..errors import ShaderCompileError
+from ..library import ResourceLib
 from ..shader_files import load_shader
 
 GL_SRGB8_ALPHA8 = 0x8C43
@@ -32,14 +33,14 @@ _GL_LINE = re.compile(r"^\s*(?:ERROR:\s*)?\d+[:(](\d+)\)?")
 
 
 # --- textures -------------------------------------------------------------------------------------
-class TextureLib:
-    def __init__(self, ctx: moderngl.Context, stats: Counter[str]) -> None:
-        self.ctx, self.stats = ctx, stats
-        self._items: dict[str, Any] = {}
+class TextureLib(ResourceLib[Any]):
+    kind = "texture"
 
-    def build(self, name: str, data: TextureData | CubeTextureData) -> Any:
-        if name in self._items:
-            return self._items[name]
+    def __init__(self, ctx: moderngl.Context, stats: Counter[str]) -> None:
+        super().__init__(stats)
+        self.ctx = ctx
+
+    def _create(self, name: str, data: TextureData | CubeTextureData) -> Any:
         fmt = GL_SRGB8_ALPHA8 if data.srgb else GL_RGBA8
         chain = data.mip_chain() if data.mipmaps else None
         if isinstance(data, CubeTextureData):
@@ -61,19 +62,10 @@ class TextureLib:
         if isinstance(data, TextureData):
             tex.repeat_x = tex.repeat_y = data.wrap == "repeat"
         self.stats["textures_created"] += 1
-        self._items[name] = tex
         return tex
 
-    def get(self, name: str) -> Any:
-        return self._items[name]
-
-    def __contains__(self, name: str) -> bool:
-        return name in self._items
-
-    def release(self) -> None:
-        for tex in self._items.values():
-            tex.release()
-        self._items.clear()
+    def _release(self, item: Any) -> None:
+        item.release()
 
 
 # --- shaders --------------------------------------------------------------------------------------
@@ -88,10 +80,12 @@ class GLShader:
     uniforms: set[str] = field(default_factory=set)
 
 
-class ShaderLib:
+class ShaderLib(ResourceLib[GLShader]):
+    kind = "shader"
+
     def __init__(self, ctx: moderngl.Context, stats: Counter[str]) -> None:
-        self.ctx, self.stats = ctx, stats
-        self._items: dict[str, GLShader] = {}
+        super().__init__(stats)
+        self.ctx = ctx
 
     def build(
         self,
@@ -141,21 +135,11 @@ class ShaderLib:
             program[sampler].value = unit
         shader = GLShader(name, program, attributes, samplers, uniforms)
         self._items[name] = shader
+        self._data[name] = stages
         return shader
 
-    def get(self, name: str, referrer: str = "a material") -> GLShader:
-        try:
-            return self._items[name]
-        except KeyError:
-            raise missing("shader", name, list(self._items), referrer) from None
-
-    def __contains__(self, name: str) -> bool:
-        return name in self._items
-
-    def release(self) -> None:
-        for shader in self._items.values():
-            shader.program.release()
-        self._items.clear()
+    def _release(self, item: GLShader) -> None:
+        item.program.release()
 
 
 def _declared_samplers(glsl: str) -> list[str]:
@@ -202,21 +186,19 @@ class GLMesh:
         return self.data.index_count if self.index_buffer is not None else self.data.vertex_count
 
 
-class MeshLib:
-    def __init__(self, ctx: moderngl.Context, stats: Counter[str]) -> None:
-        self.ctx, self.stats = ctx, stats
-        self._items: dict[str, GLMesh] = {}
+class MeshLib(ResourceLib[GLMesh]):
+    kind = "mesh"
 
-    def build(self, name: str, data: MeshData) -> GLMesh:
-        if name in self._items:
-            return self._items[name]
+    def __init__(self, ctx: moderngl.Context, stats: Counter[str]) -> None:
+        super().__init__(stats)
+        self.ctx = ctx
+
+    def _create(self, name: str, data: MeshData) -> GLMesh:
         ibo = None
         if data.indices is not None:
             ibo = self.ctx.buffer(np.ascontiguousarray(data.indices, dtype=np.uint32).tobytes())
             self.stats["buffers_created"] += 1
-        mesh = GLMesh(name, data, ibo)
-        self._items[name] = mesh
-        return mesh
+        return GLMesh(name, data, ibo)
 
     def vertex_buffer(self, mesh: GLMesh, attributes: tuple[str, ...]) -> tuple[moderngl.Buffer, Any]:
         """The interleaved buffer with exactly ``attributes`` (built once per attribute set)."""
@@ -226,19 +208,11 @@ class MeshLib:
             self.stats["buffers_created"] += 1
         return mesh.vertex_buffers[attributes], layout
 
-    def get(self, name: str) -> GLMesh:
-        return self._items[name]
-
-    def __contains__(self, name: str) -> bool:
-        return name in self._items
-
-    def release(self) -> None:
-        for mesh in self._items.values():
-            for buf in mesh.vertex_buffers.values():
-                buf.release()
-            if mesh.index_buffer is not None:
-                mesh.index_buffer.release()
-        self._items.clear()
+    def _release(self, item: GLMesh) -> None:
+        for buf in item.vertex_buffers.values():
+            buf.release()
+        if item.index_buffer is not None:
+            item.index_buffer.release()
 
 
 # --- materials ------------------------------------------------------------------------------------
@@ -268,30 +242,15 @@ class GLMaterial:
             texture.use(location=unit)
 
 
-class MaterialLib:
-    def __init__(self, shaders: ShaderLib, textures: TextureLib, stats: Counter[str]) -> None:
-        self.shaders, self.textures, self.stats = shaders, textures, stats
-        self._items: dict[str, GLMaterial] = {}
+class MaterialLib(ResourceLib[GLMaterial]):
+    kind = "material"
 
-    def build(self, name: str, data: MaterialData) -> GLMaterial:
-        if name in self._items:
-            return self._items[name]
+    def __init__(self, shaders: ShaderLib, textures: TextureLib, stats: Counter[str]) -> None:
+        super().__init__(stats)
+        self.shaders, self.textures = shaders, textures
+
+    def _create(self, name: str, data: MaterialData) -> GLMaterial:
         referrer = f"material '{name}'"
         shader = self.shaders.get(data.shader, referrer)
-        textures = []
-        for tex_name in data.textures:
-            if tex_name not in self.textures:
-                raise missing("texture", tex_name, list(self.textures._items), referrer)
-            textures.append(self.textures.get(tex_name))
-        material = GLMaterial(name, data, shader, textures)
-        self._items[name] = material
-        return material
-
-    def get(self, name: str) -> GLMaterial:
-        return self._items[name]
-
-    def __contains__(self, name: str) -> bool:
-        return name in self._items
-
-    def release(self) -> None:
-        self._items.clear()
+        textures = [self.textures.get(tex, referrer) for tex in data.textures]
+        return GLMaterial(name, data, shader, textures)

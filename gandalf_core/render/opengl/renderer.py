@@ -15,10 +15,9 @@ from ...resources import MaterialData
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
 from ..base import Renderer
-from ..errors import missing
 from ..frame import FRAME_FLOATS, INSTANCE_FLOATS, LIGHTS_BYTES, FrameData
 from ..shader_files import SNIPPETS_DIR
-from .libs import GLMaterial, GLMesh, GLShader, MaterialLib, MeshLib, ShaderLib, TextureLib
+from .libs import GLMesh, GLShader, MaterialLib, MeshLib, ShaderLib, TextureLib
 
 GL_FRAMEBUFFER_SRGB = 0x8DB9
 GL_SRGB8_ALPHA8 = 0x8C43
@@ -88,8 +87,8 @@ class OpenGLRenderer(Renderer):
             self._upload_instances(data.instances)
         self._state = None
         for batch in data.batches:
-            material = self._material(batch.material, assets)
-            mesh = self._mesh(batch.mesh, assets)
+            material = self.resolve_material(batch.material, assets)
+            mesh = self.resolve_mesh(batch.mesh, assets)
             self._apply_state(material.data, data.reverse_z)
             material.apply()
             vao = self._vertex_array(material.shader, mesh)
@@ -110,7 +109,7 @@ class OpenGLRenderer(Renderer):
             shader = self.shaders.build(SKY_SHADER, SNIPPETS_DIR / "skybox.vert", SNIPPETS_DIR / "skybox.frag")
             self._sky = (shader, self.ctx.vertex_array(shader.program, []))
         shader, vao = self._sky
-        texture = self._texture(texture_name, assets, "a SkyboxComponent")
+        texture = self.resolve_texture(texture_name, assets, "a SkyboxComponent")
         self._apply_state(SKY_STATE, reverse_z)
         texture.use(location=0)
         vao.render(moderngl.TRIANGLES, vertices=3)
@@ -159,33 +158,6 @@ class OpenGLRenderer(Renderer):
             self.ctx.copy_framebuffer(self.ctx.screen, self._fbo)
             self.window.swap_buffers()
 
-    # --- resources on first use -------------------------------------------------------------------------
-    def _material(self, name: str, assets: Assets) -> GLMaterial:
-        if name in self.materials:
-            return self.materials.get(name)
-        data = assets.materials.get(name)
-        if data is None:
-            raise missing("material", name, list(assets.materials), "a MaterialComponent")
-        for tex in data.textures:
-            if tex not in self.textures and tex in assets.textures:
-                self.textures.build(tex, assets.textures[tex])
-        return self.materials.build(name, data)
-
-    def _texture(self, name: str, assets: Assets, referrer: str) -> Any:
-        if name in self.textures:
-            return self.textures.get(name)
-        if name not in assets.textures:
-            raise missing("texture", name, list(assets.textures), referrer)
-        return self.textures.build(name, assets.textures[name])
-
-    def _mesh(self, name: str, assets: Assets) -> GLMesh:
-        if name in self.meshes:
-            return self.meshes.get(name)
-        data = assets.meshes.get(name)
-        if data is None:
-            raise missing("mesh", name, list(assets.meshes), "a MeshComponent")
-        return self.meshes.build(name, data)
-
     def _vertex_array(self, shader: GLShader, mesh: GLMesh) -> moderngl.VertexArray:
         key = (shader.name, mesh.name)
         vao = self._vaos.get(key)
@@ -216,7 +188,7 @@ class OpenGLRenderer(Renderer):
 
     def live_objects(self) -> int:
         """GPU objects this renderer holds now (for leak tests)."""
-        return len(self._vaos) + sum(len(lib._items) for lib in (self.textures, self.shaders, self.meshes))
+        return len(self._vaos) + sum(len(lib) for lib in (self.textures, self.shaders, self.meshes, self.materials))
 
     def release(self) -> None:
         for vao in self._vaos.values():

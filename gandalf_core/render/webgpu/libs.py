@@ -23,7 +23,8 @@ import wgpu
 
 from ...resources import CubeTextureData, MaterialData, MeshData, ShaderSource, TextureData
 from ..color import srgb_rgba_to_linear
-from ..errors import ShaderCompileError, missing
+from ..errors import ShaderCompileError
+from ..library import ResourceLib
 from ..shader_files import load_shader
 from ..wgsl_reflect import Binding, ShaderReflection, WGSLReflectError, reflect
 
@@ -40,14 +41,14 @@ class WGPUTexture:
     sampler: Any
 
 
-class TextureLib:
-    def __init__(self, device: Any, stats: Counter[str]) -> None:
-        self.device, self.stats = device, stats
-        self._items: dict[str, WGPUTexture] = {}
+class TextureLib(ResourceLib[WGPUTexture]):
+    kind = "texture"
 
-    def build(self, name: str, data: TextureData | CubeTextureData) -> WGPUTexture:
-        if name in self._items:
-            return self._items[name]
+    def __init__(self, device: Any, stats: Counter[str]) -> None:
+        super().__init__(stats)
+        self.device = device
+
+    def _create(self, name: str, data: TextureData | CubeTextureData) -> WGPUTexture:
         cube = isinstance(data, CubeTextureData)
         chain = data.mip_chain() if data.mipmaps else [data.pixels]
         height, width = chain[0].shape[-3:-1]
@@ -77,19 +78,10 @@ class TextureLib:
             mipmap_filter="linear" if linear else "nearest",
         )
         self.stats["textures_created"] += 1
-        item = self._items[name] = WGPUTexture(texture, view, sampler)
-        return item
+        return WGPUTexture(texture, view, sampler)
 
-    def get(self, name: str) -> WGPUTexture:
-        return self._items[name]
-
-    def __contains__(self, name: str) -> bool:
-        return name in self._items
-
-    def release(self) -> None:
-        for item in self._items.values():
-            item.texture.destroy()
-        self._items.clear()
+    def _release(self, item: WGPUTexture) -> None:
+        item.texture.destroy()
 
 
 # --- shaders --------------------------------------------------------------------------------------
@@ -108,10 +100,12 @@ class WGPUShader:
     material_bindings: list[Binding] = field(default_factory=list)
 
 
-class ShaderLib:
-    def __init__(self, device: Any, stats: Counter[str], frame_layout: Any) -> None:
-        self.device, self.stats, self.frame_layout = device, stats, frame_layout
-        self._items: dict[str, WGPUShader] = {}
+class ShaderLib(ResourceLib[WGPUShader]):
+    kind = "shader"
+
+    def __init__(self, device: Any, stats: Counter[str]) -> None:
+        super().__init__(stats)
+        self.device = device
 
     def build(self, name: str, source: str | Path | ShaderSource, *, vertex_entry: str | None = None,
               fragment_entry: str | None = None, include_dirs: Sequence[str | Path] = ()) -> WGPUShader:
@@ -143,19 +137,8 @@ class ShaderLib:
             )
         shader = WGPUShader(name, module, src, reflection, vs, fs, attributes, layout, material_bindings)
         self._items[name] = shader
+        self._data[name] = src
         return shader
-
-    def get(self, name: str, referrer: str = "a material") -> WGPUShader:
-        try:
-            return self._items[name]
-        except KeyError:
-            raise missing("shader", name, list(self._items), referrer) from None
-
-    def __contains__(self, name: str) -> bool:
-        return name in self._items
-
-    def release(self) -> None:
-        self._items.clear()
 
 
 def _entry(reflection: ShaderReflection, stage: str, wanted: str | None, filename: str) -> str:
@@ -213,22 +196,21 @@ class WGPUMesh:
         return self.data.index_count if self.index_buffer is not None else self.data.vertex_count
 
 
-class MeshLib:
-    def __init__(self, device: Any, stats: Counter[str]) -> None:
-        self.device, self.stats = device, stats
-        self._items: dict[str, WGPUMesh] = {}
+class MeshLib(ResourceLib[WGPUMesh]):
+    kind = "mesh"
 
-    def build(self, name: str, data: MeshData) -> WGPUMesh:
-        if name in self._items:
-            return self._items[name]
+    def __init__(self, device: Any, stats: Counter[str]) -> None:
+        super().__init__(stats)
+        self.device = device
+
+    def _create(self, name: str, data: MeshData) -> WGPUMesh:
         ibo = None
         if data.indices is not None:
             ibo = self.device.create_buffer_with_data(
                 data=np.ascontiguousarray(data.indices, dtype=np.uint32), usage=wgpu.BufferUsage.INDEX
             )
             self.stats["buffers_created"] += 1
-        mesh = self._items[name] = WGPUMesh(name, data, ibo)
-        return mesh
+        return WGPUMesh(name, data, ibo)
 
     def vertex_buffer(self, mesh: WGPUMesh, attributes: tuple[str, ...]) -> tuple[Any, Any]:
         """The interleaved buffer with exactly ``attributes`` and its layout (built once per attribute set)."""
@@ -239,19 +221,11 @@ class MeshLib:
             self.stats["buffers_created"] += 1
         return mesh.vertex_buffers[attributes]
 
-    def get(self, name: str) -> WGPUMesh:
-        return self._items[name]
-
-    def __contains__(self, name: str) -> bool:
-        return name in self._items
-
-    def release(self) -> None:
-        for mesh in self._items.values():
-            for buf, _ in mesh.vertex_buffers.values():
-                buf.destroy()
-            if mesh.index_buffer is not None:
-                mesh.index_buffer.destroy()
-        self._items.clear()
+    def _release(self, item: WGPUMesh) -> None:
+        for buf, _ in item.vertex_buffers.values():
+            buf.destroy()
+        if item.index_buffer is not None:
+            item.index_buffer.destroy()
 
 
 # --- materials ------------------------------------------------------------------------------------
@@ -310,33 +284,20 @@ class WGPUMaterial:
         self.set_values({**{k: v for k, v in self.values.items() if k != "color"}, "color": color})
 
 
-class MaterialLib:
-    def __init__(self, device: Any, shaders: ShaderLib, textures: TextureLib, stats: Counter[str]) -> None:
-        self.device, self.shaders, self.textures, self.stats = device, shaders, textures, stats
-        self._items: dict[str, WGPUMaterial] = {}
+class MaterialLib(ResourceLib[WGPUMaterial]):
+    kind = "material"
 
-    def build(self, name: str, data: MaterialData) -> WGPUMaterial:
-        if name in self._items:
-            return self._items[name]
+    def __init__(self, device: Any, shaders: ShaderLib, textures: TextureLib, stats: Counter[str]) -> None:
+        super().__init__(stats)
+        self.device, self.shaders, self.textures = device, shaders, textures
+
+    def _create(self, name: str, data: MaterialData) -> WGPUMaterial:
         referrer = f"material '{name}'"
         shader = self.shaders.get(data.shader, referrer)
-        textures = []
-        for tex_name in data.textures:
-            if tex_name not in self.textures:
-                raise missing("texture", tex_name, list(self.textures._items), referrer)
-            textures.append(self.textures.get(tex_name))
-        material = self._items[name] = WGPUMaterial(name, data, shader, textures, self.device)
-        return material
+        textures = [self.textures.get(tex, referrer) for tex in data.textures]
+        return WGPUMaterial(name, data, shader, textures, self.device)
 
-    def get(self, name: str) -> WGPUMaterial:
-        return self._items[name]
-
-    def __contains__(self, name: str) -> bool:
-        return name in self._items
-
-    def release(self) -> None:
-        for material in self._items.values():
-            if material.uniform_buffer is not None:
-                material.uniform_buffer.destroy()
-        self._items.clear()
+    def _release(self, item: WGPUMaterial) -> None:
+        if item.uniform_buffer is not None:
+            item.uniform_buffer.destroy()
 

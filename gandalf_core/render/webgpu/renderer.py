@@ -17,7 +17,6 @@ from ...resources import MaterialData
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
 from ..base import Renderer
-from ..errors import missing
 from ..frame import FRAME_FLOATS, INSTANCE_FLOATS, LIGHTS_BYTES, FrameData
 from ..shader_files import SNIPPETS_DIR
 from .device import request_device
@@ -72,7 +71,7 @@ class WebGPURenderer(Renderer):
         ])
         self._sky_materials: dict[str, Any] = {}
         self.textures = TextureLib(self.device, self.stats)
-        self.shaders = ShaderLib(self.device, self.stats, self.frame_layout)
+        self.shaders = ShaderLib(self.device, self.stats)
         self.meshes = MeshLib(self.device, self.stats)
         self.materials = MaterialLib(self.device, self.shaders, self.textures, self.stats)
         self._pipelines: dict[tuple[Any, ...], Any] = {}
@@ -104,8 +103,8 @@ class WebGPURenderer(Renderer):
         # Resolve everything before recording, so a missing resource fails before a pass is open.
         draws = []
         for batch in data.batches:
-            material = self._material(batch.material, assets)
-            mesh = self._mesh(batch.mesh, assets)
+            material = self.resolve_material(batch.material, assets)
+            mesh = self.resolve_mesh(batch.mesh, assets)
             draws.append((batch, material, mesh, self._pipeline(material, mesh, data.reverse_z)))
         sky = self._sky_draw(data.skybox, assets, data.reverse_z) if data.skybox is not None else None
         encoder = self.device.create_command_encoder()
@@ -156,14 +155,10 @@ class WebGPURenderer(Renderer):
 
     def _sky_draw(self, texture_name: str, assets: Assets, reverse_z: bool) -> tuple[Any, Any]:
         """The sky pass's pipeline and bind group, built on first use (only scenes with a skybox pay for it)."""
-        if texture_name not in self.textures:
-            if texture_name not in assets.textures:
-                raise missing("texture", texture_name, list(assets.textures), "a SkyboxComponent")
-            self.textures.build(texture_name, assets.textures[texture_name])
+        texture = self.resolve_texture(texture_name, assets, "a SkyboxComponent")
         shader = self.shaders.build(SKY_SHADER, SNIPPETS_DIR / "skybox.wgsl")
         material = self._sky_materials.get(texture_name)
         if material is None:
-            texture = self.textures.get(texture_name)
             material = self.device.create_bind_group(layout=shader.material_layout, entries=[
                 {"binding": 0, "resource": texture.view}, {"binding": 1, "resource": texture.sampler},
             ])
@@ -229,26 +224,6 @@ class WebGPURenderer(Renderer):
         self.stats["pipelines_created"] += 1
         return pipeline
 
-    # --- resources on first use -------------------------------------------------------------------------
-    def _material(self, name: str, assets: Assets) -> WGPUMaterial:
-        if name in self.materials:
-            return self.materials.get(name)
-        data = assets.materials.get(name)
-        if data is None:
-            raise missing("material", name, list(assets.materials), "a MaterialComponent")
-        for tex in data.textures:
-            if tex not in self.textures and tex in assets.textures:
-                self.textures.build(tex, assets.textures[tex])
-        return self.materials.build(name, data)
-
-    def _mesh(self, name: str, assets: Assets) -> WGPUMesh:
-        if name in self.meshes:
-            return self.meshes.get(name)
-        data = assets.meshes.get(name)
-        if data is None:
-            raise missing("mesh", name, list(assets.meshes), "a MeshComponent")
-        return self.meshes.build(name, data)
-
     # --- read-back, resize, release -------------------------------------------------------------------
     def read_pixels(self) -> np.ndarray:
         data = self.device.queue.read_texture(
@@ -270,9 +245,7 @@ class WebGPURenderer(Renderer):
 
     def live_objects(self) -> int:
         """GPU objects this renderer holds now (for leak tests)."""
-        return len(self._pipelines) + sum(
-            len(lib._items) for lib in (self.textures, self.shaders, self.meshes, self.materials)
-        )
+        return len(self._pipelines) + sum(len(lib) for lib in (self.textures, self.shaders, self.meshes, self.materials))
 
     def release(self) -> None:
         for lib in (self.materials, self.meshes, self.shaders, self.textures):

@@ -1,0 +1,84 @@
+"""The base of every resource library (textures, shaders, meshes, materials) in both backends.
+
+A library builds a GPU object once per name and hands out the cached one afterwards, as in the paper:
+``lib.build(name, data)``. It belongs to one renderer, so a fresh renderer starts with empty libraries.
+:meth:`ResourceLib.resolve` is how the renderers turn the names a scene's components use into GPU
+objects on first use, from the scene's backend-neutral assets.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Mapping
+from typing import Any, Generic, TypeVar
+
+from .errors import MissingResourceError, missing
+
+T = TypeVar("T")
+
+
+class ResourceLib(Generic[T]):
+    """Named GPU objects of one kind, built once; subclasses implement :meth:`_create` and :meth:`_release`."""
+
+    kind = "resource"
+
+    def __init__(self, stats: Counter[str]) -> None:
+        self.stats = stats
+        self._items: dict[str, T] = {}
+        self._data: dict[str, Any] = {}
+
+    def build(self, name: str, data: Any) -> T:
+        """The GPU object for ``name``, created from ``data`` the first time and cached after that."""
+        if name not in self._items:
+            self._items[name] = self._create(name, data)
+            self._data[name] = data
+        return self._items[name]
+
+    def resolve(self, name: str, table: Mapping[str, Any], referrer: str) -> T:
+        """The object for ``name``, built from ``table[name]`` (a scene's assets) on first use.
+
+        Two scenes that use one name for different data would silently share the first one's GPU
+        object; that is an error here, naming the resource.
+        """
+        data = table.get(name)
+        if name in self._items:
+            if data is not None and self._data.get(name) is not data:
+                raise ValueError(
+                    f"{self.kind} '{name}' was already built from other data (another scene's assets?): "
+                    f"give one of them another name"
+                )
+            return self._items[name]
+        if data is None:
+            raise missing(self.kind, name, list(table), referrer)
+        return self.build(name, data)
+
+    def get(self, name: str, referrer: str = "the caller") -> T:
+        try:
+            return self._items[name]
+        except KeyError:
+            raise missing(self.kind, name, list(self._items), referrer) from None
+
+    def names(self) -> list[str]:
+        return list(self._items)
+
+    def __contains__(self, name: object) -> bool:
+        return name in self._items
+
+    def __len__(self) -> int:
+        return len(self._items)
+
+    def release(self) -> None:
+        """Free every object (the renderer calls this when it is released)."""
+        for item in self._items.values():
+            self._release(item)
+        self._items.clear()
+        self._data.clear()
+
+    def _create(self, name: str, data: Any) -> T:
+        raise NotImplementedError
+
+    def _release(self, item: T) -> None:
+        """Free one object's GPU memory; nothing by default."""
+
+
+__all__ = ["MissingResourceError", "ResourceLib"]
