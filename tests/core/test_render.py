@@ -253,6 +253,9 @@ def test_many_frames_create_nothing_new(backend):
 def test_one_name_for_different_data_in_two_scenes_is_an_error(backend):
     """Libraries cache by name; a second scene that reuses a name for other data must not get the first's."""
     first, second = cubes_scene(1), cubes_scene(1)
+    # The same material and texture objects may be shared by name; only the mesh differs.
+    second.assets.material("M", first.assets.materials["M"])
+    second.assets.texture("checker", first.assets.textures["checker"])
     second.assets.mesh("cube", cube(2.0))
     second.name = "cubes-2"
     with make_app(backend) as app:

@@ -7,6 +7,7 @@ shades the hit point with a numpy twin of the step's shaders (``lighting.glsl`` 
 
 from __future__ import annotations
 
+import functools
 import importlib
 from pathlib import Path
 from types import ModuleType
@@ -16,7 +17,7 @@ import numpy as np
 from gandalf_core import Application, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
-from gandalf_core.resources import MaterialData, linear_to_srgb, srgb_to_linear, uv_sphere
+from gandalf_core.resources import MaterialData, MeshData, linear_to_srgb, srgb_to_linear, uv_sphere
 
 REFERENCES = Path(__file__).resolve().parent / "references"
 SIZE = (112, 84)
@@ -31,11 +32,17 @@ def make_app(backend: str, impl: ModuleType, size: tuple[int, int] = SIZE) -> Ap
     return app
 
 
+@functools.cache
+def _sphere() -> MeshData:
+    """One shared sphere: scenes of one app must register the same data under one name."""
+    return uv_sphere(1.0, 96, 48)
+
+
 def sphere_scene(material: MaterialData, lights: list[tuple[LightComponent, TransformComponent]],
                  textures: dict | None = None, light_system=None) -> Scene:
     """A unit sphere at the origin seen from EYE, lit by ``lights``."""
     scene = Scene("sphere")
-    scene.assets.mesh("sphere", uv_sphere(1.0, 96, 48))
+    scene.assets.mesh("sphere", _sphere())
     for name, data in (textures or {}).items():
         scene.assets.texture(name, data)
     scene.assets.material("M", material)
