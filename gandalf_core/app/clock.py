@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import time
 
 
@@ -12,8 +13,8 @@ class Clock:
     MAX_DT = 0.25
 
     def __init__(self, fixed_dt: float | None = None) -> None:
-        if fixed_dt is not None and not fixed_dt > 0:
-            raise ValueError(f"fixed_dt must be positive seconds, got {fixed_dt!r}")
+        if fixed_dt is not None and not (math.isfinite(fixed_dt) and fixed_dt > 0):
+            raise ValueError(f"fixed_dt must be positive seconds (and finite), got {fixed_dt!r}")
         self.fixed_dt = fixed_dt
         self.time = 0.0  # simulated seconds since start
         self.frame = 0
@@ -24,6 +25,8 @@ class Clock:
         now = time.perf_counter()
         if dt is None:
             dt = self.fixed_dt if self.fixed_dt is not None else min(now - self._last, self.MAX_DT)
+        elif not math.isfinite(dt):
+            raise ValueError(f"a frame's dt must be finite, got {dt!r}")
         elif dt < 0:
             raise ValueError(f"a frame's dt cannot be negative, got {dt!r}")
         self._last = now

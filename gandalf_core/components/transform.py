@@ -38,7 +38,10 @@ class TransformComponent(ColumnarComponent):
     ) -> None:
         super().__init__()
         self.translation = translation
-        self.quaternion = quat_normalize(quaternion) if quaternion is not None else quat_from_euler(rotation)
+        if quaternion is not None:
+            self.quaternion = quat_normalize(quaternion)
+        elif any(rotation):  # the default (no rotation) is already in place
+            self.quaternion = quat_from_euler(rotation)
         self.scale = scale
 
     @property

@@ -4,6 +4,9 @@ Most components are ordinary objects. A :class:`ColumnarComponent` keeps its num
 scene-wide numpy columns while it belongs to a scene, so a system can update every instance at once
 (``store.column("translation")`` is an ``(N, 3)`` array) while student code still writes
 ``transform.translation = (0, 1, 0)`` one entity at a time.
+
+Reading a columnar field gives a live view of its row (so ``transform.translation[1] += 1`` works);
+copy it (``.copy()``) to keep a value, since rows move when other entities leave the scene.
 """
 
 from __future__ import annotations
@@ -45,7 +48,7 @@ class _ColumnField:
                 raise ValueError(
                     f"{type(obj).__name__}.{self.name} must have shape {self.shape}, got {np.shape(value)}"
                 ) from None
-        if not np.all(np.isfinite(arr)):
+        if not np.isfinite(arr).all():
             raise ValueError(f"{type(obj).__name__}.{self.name} must be finite, got {value!r}")
         store = obj._store
         if store is None:
@@ -61,19 +64,22 @@ class ColumnarComponent(Component):
     """
 
     columns: ClassVar[dict[str, tuple[tuple[int, ...], Any]]] = {}
+    _defaults: ClassVar[dict[str, np.ndarray]] = {}
 
     def __init_subclass__(cls, **kwargs: Any) -> None:
         super().__init_subclass__(**kwargs)
         for name, (shape, _default) in cls.columns.items():
             setattr(cls, name, _ColumnField(name, tuple(shape)))
+        # Built once per class: creating 100k components then costs a few array copies each.
+        cls._defaults = {
+            name: np.array(np.broadcast_to(np.asarray(default, np.float64), shape))
+            for name, (shape, default) in cls.columns.items()
+        }
 
     def __init__(self) -> None:
         self._store: ColumnStore | None = None
         self._row = -1
-        self._local = {
-            name: np.array(np.broadcast_to(np.asarray(default, np.float64), shape))
-            for name, (shape, default) in self.columns.items()
-        }
+        self._local = {name: default.copy() for name, default in self._defaults.items()}
 
     def __repr__(self) -> str:
         fields = ", ".join(f"{k}={getattr(self, k).tolist()!r}" for k in self.columns)

@@ -152,3 +152,14 @@ def test_explicit_dt_and_negative_dt(fake_time: list[float]) -> None:
 def test_fixed_dt_must_be_positive(bad: float) -> None:
     with pytest.raises(ValueError, match="fixed_dt must be positive seconds"):
         Clock(fixed_dt=bad)
+
+
+@pytest.mark.parametrize("bad", [float("nan"), float("inf"), -1.0])
+def test_clock_rejects_non_finite_or_negative_steps(bad):
+    from gandalf_core.app.clock import Clock
+
+    with pytest.raises(ValueError, match="dt"):
+        Clock().tick(bad)
+    if bad != -1.0:
+        with pytest.raises(ValueError, match="fixed_dt"):
+            Clock(fixed_dt=bad)
