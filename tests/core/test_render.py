@@ -44,8 +44,10 @@ def make_app(backend: str, **kwargs) -> Application:
 
 def add_camera(scene: Scene, eye=(0.0, 1.5, 6.0), **camera) -> None:
     eye = np.array(eye, dtype=float)
-    scene.create_entity(TransformComponent(eye, quaternion=look_at_rotation(eye, (0, 0, 0))),
-                        CameraComponent(**{"fov": 50.0, "near": 0.1, "far": 100.0, **camera}))
+    scene.create_entity(
+        TransformComponent(eye, quaternion=look_at_rotation(eye, (0, 0, 0))),
+        CameraComponent(**{"fov": 50.0, "near": 0.1, "far": 100.0, **camera}),
+    )
 
 
 def cubes_scene(n: int = 5, **camera) -> Scene:
@@ -55,8 +57,9 @@ def cubes_scene(n: int = 5, **camera) -> Scene:
     scene.assets.material("M", MaterialData("unlit", ["checker"], color=(1.0, 0.6, 0.3)))
     scene.create_entity(ClearColorComponent((0.2, 0.3, 0.4)))
     for i in range(n):
-        scene.create_entity(TransformComponent((i * 1.5 - 3.0, 0, 0), (30, 40 * i, 0)),
-                            MeshComponent("cube"), MaterialComponent("M"))
+        scene.create_entity(
+            TransformComponent((i * 1.5 - 3.0, 0, 0), (30, 40 * i, 0)), MeshComponent("cube"), MaterialComponent("M")
+        )
     add_camera(scene, **camera)
     return scene
 
@@ -69,11 +72,16 @@ def lit_scene(lights: int = 1, sky: bool = False, **camera) -> Scene:
         scene.assets.texture("sky", sky_cube(32))
         scene.create_entity(SkyboxComponent("sky"))
     for i in range(3):
-        scene.create_entity(TransformComponent((i * 2.2 - 2.2, 0, 0), scale=(1, 1 + 0.5 * i, 1)),
-                            MeshComponent("sphere"), MaterialComponent("M"))
+        scene.create_entity(
+            TransformComponent((i * 2.2 - 2.2, 0, 0), scale=(1, 1 + 0.5 * i, 1)),
+            MeshComponent("sphere"),
+            MaterialComponent("M"),
+        )
     for i in range(lights):
-        scene.create_entity(TransformComponent(rotation=(-45, 30 + 10 * i, 0)),
-                            LightComponent("directional", (1, 1, 1), 1.0 / max(lights, 1)))
+        scene.create_entity(
+            TransformComponent(rotation=(-45, 30 + 10 * i, 0)),
+            LightComponent("directional", (1, 1, 1), 1.0 / max(lights, 1)),
+        )
     scene.create_entity(TransformComponent(), LightComponent("ambient", (0.2, 0.2, 0.3)))
     add_camera(scene, **camera)
     return scene
@@ -125,8 +133,13 @@ def test_colour_change_rebuilds_nothing(backend):
         app.renderer.materials.get("M").set_color((0.1, 0.9, 0.2))
         app.run(frames=2)
         after = app.capture()
-        for key in ("pipelines_created", "shaders_created", "vertex_arrays_created", "textures_created",
-                    "buffers_created"):
+        for key in (
+            "pipelines_created",
+            "shaders_created",
+            "vertex_arrays_created",
+            "textures_created",
+            "buffers_created",
+        ):
             assert app.renderer.stats[key] == created.get(key, 0), key
     assert np.abs(after.astype(int) - before.astype(int)).max() > 50
 
@@ -138,8 +151,12 @@ def test_runtime_changes_show_up(backend):
         app.add_scene(scene)
         app.step()
         one = app.capture()
-        extra = [scene.create_entity(TransformComponent((x, -1.0, 0.0), scale=0.4), MeshComponent("cube"),
-                                     MaterialComponent("M")) for x in np.linspace(-3, 3, 400)]
+        extra = [
+            scene.create_entity(
+                TransformComponent((x, -1.0, 0.0), scale=0.4), MeshComponent("cube"), MaterialComponent("M")
+            )
+            for x in np.linspace(-3, 3, 400)
+        ]
         app.step()
         many = app.capture()
         for entity in extra:
@@ -150,6 +167,7 @@ def test_runtime_changes_show_up(backend):
 
     def coverage(img: np.ndarray) -> float:
         return (np.abs(img[..., :3].astype(int) - background).max(axis=2) > 3).mean()
+
     assert coverage(many) > coverage(one) + 0.05
     assert np.array_equal(again, one)
 
@@ -223,8 +241,9 @@ def test_zero_scale_and_huge_scale_entities_render_without_errors(backend):
     scene = cubes_scene(0)
     scene.create_entity(TransformComponent(scale=0.0), MeshComponent("cube"), MaterialComponent("M"))
     scene.create_entity(TransformComponent((0, 0, -50), scale=1e-6), MeshComponent("cube"), MaterialComponent("M"))
-    scene.create_entity(TransformComponent((0, 0, -90), scale=(1e3, 1e-3, 1)), MeshComponent("cube"),
-                        MaterialComponent("M"))
+    scene.create_entity(
+        TransformComponent((0, 0, -90), scale=(1e3, 1e-3, 1)), MeshComponent("cube"), MaterialComponent("M")
+    )
     image, app = render(backend, scene)
     app.close()
     assert image.shape == (H, W, 4)
@@ -246,8 +265,9 @@ def test_many_frames_create_nothing_new(backend):
         live, created = app.renderer.live_objects(), dict(app.renderer.stats)
         app.run(frames=50)
         assert app.renderer.live_objects() == live
-        assert {k: v for k, v in app.renderer.stats.items() if k != "draw_calls"} == \
-            {k: v for k, v in created.items() if k != "draw_calls"}
+        assert {k: v for k, v in app.renderer.stats.items() if k != "draw_calls"} == {
+            k: v for k, v in created.items() if k != "draw_calls"
+        }
 
 
 def test_one_name_for_different_data_in_two_scenes_is_an_error(backend):
