@@ -188,7 +188,8 @@ class OpenGLRenderer(Renderer):
 
     def live_objects(self) -> int:
         """GPU objects this renderer holds now (for leak tests)."""
-        return len(self._vaos) + sum(len(lib) for lib in (self.textures, self.shaders, self.meshes, self.materials))
+        libraries = (self.textures, self.shaders, self.meshes, self.materials)
+        return len(self._vaos) + sum(len(lib) for lib in libraries)
 
     def release(self) -> None:
         for vao in self._vaos.values():

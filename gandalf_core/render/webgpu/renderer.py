@@ -245,7 +245,8 @@ class WebGPURenderer(Renderer):
 
     def live_objects(self) -> int:
         """GPU objects this renderer holds now (for leak tests)."""
-        return len(self._pipelines) + sum(len(lib) for lib in (self.textures, self.shaders, self.meshes, self.materials))
+        libraries = (self.textures, self.shaders, self.meshes, self.materials)
+        return len(self._pipelines) + sum(len(lib) for lib in libraries)
 
     def release(self) -> None:
         for lib in (self.materials, self.meshes, self.shaders, self.textures):
