@@ -167,26 +167,14 @@ def build_scene(n: int, rotating: bool, model: str, rotate_mode: str) -> tuple[A
 # Synchronisation: make the GPU finish the frame
 # ------------------------------------------------------------------------------------------------
 def make_sync(app: Any, mode: str) -> tuple[Any, str]:
-    """A callable that waits for the frame, and the mode really used.
-
-    The renderers offer only a full read-back (``read_pixels``); the one-pixel read goes through the
-    renderer's colour target directly, and falls back to the full read if that target is not there.
-    """
+    """A callable that waits for the frame, and the mode used: a 1-pixel or a full read-back, or none."""
     if mode == "none":
         return (lambda: None), "none"
     if mode == "full":
         return app.capture, "full"
     r = app.renderer
     x, y = r.width // 2, r.height // 2
-    if app.backend == "opengl" and hasattr(r, "_fbo"):
-        return (lambda: r._fbo.read(viewport=(x, y, 1, 1), components=4)), "pixel"
-    if app.backend == "webgpu" and hasattr(r, "_color"):
-        def read_one() -> Any:
-            return r.device.queue.read_texture(
-                {"texture": r._color, "origin": (x, y, 0)}, {"bytes_per_row": 256}, (1, 1, 1)
-            )
-        return read_one, "pixel"
-    return app.capture, "full"
+    return (lambda: r.read_pixel(x, y)), "pixel"
 
 
 def renderer_name(app: Any) -> str:

@@ -62,6 +62,13 @@ class Renderer(ABC):
         """The last frame as a ``(height, width, 4)`` uint8 array, top row first, sRGB-encoded."""
 
     @abstractmethod
+    def read_pixel(self, x: int, y: int) -> np.ndarray:
+        """One pixel of the last frame (``x`` from the left, ``y`` from the top) as 4 uint8 values.
+
+        Also the cheapest way to wait until the GPU has finished the frame (benchmarks use it).
+        """
+
+    @abstractmethod
     def resize(self, width: int, height: int) -> None:
         """Recreate the size-dependent targets."""
 

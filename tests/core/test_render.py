@@ -285,3 +285,10 @@ def test_one_name_for_different_data_in_two_scenes_is_an_error(backend):
         app.switch_scene(second)
         with pytest.raises(ValueError, match="mesh 'cube' was already built from other data"):
             app.step()
+
+
+def test_read_pixel_matches_the_full_read_back(backend):
+    image, app = render(backend, cubes_scene(5))
+    for x, y in [(0, 0), (W - 1, 0), (W // 2, H // 2), (10, H - 1)]:
+        assert np.array_equal(app.renderer.read_pixel(x, y), image[y, x])
+    app.close()

@@ -179,6 +179,10 @@ class OpenGLRenderer(Renderer):
         image = np.frombuffer(data, dtype=np.uint8).reshape(self.height, self.width, 4)
         return np.ascontiguousarray(image[::-1])  # GL rows are bottom-up
 
+    def read_pixel(self, x: int, y: int) -> np.ndarray:
+        data = self._fbo.read(viewport=(int(x), self.height - 1 - int(y), 1, 1), components=4)
+        return np.frombuffer(data, dtype=np.uint8).copy()
+
     def resize(self, width: int, height: int) -> None:
         if (width, height) == (self.width, self.height) or width <= 0 or height <= 0:
             return

@@ -233,6 +233,14 @@ class WebGPURenderer(Renderer):
         )
         return np.frombuffer(data, dtype=np.uint8).reshape(self.height, self.width, 4).copy()
 
+    def read_pixel(self, x: int, y: int) -> np.ndarray:
+        data = self.device.queue.read_texture(
+            {"texture": self._color, "origin": (int(x), int(y), 0), "mip_level": 0},
+            {"offset": 0, "bytes_per_row": 4, "rows_per_image": 1},
+            (1, 1, 1),
+        )
+        return np.frombuffer(data, dtype=np.uint8).copy()
+
     def resize(self, width: int, height: int) -> None:
         if (width, height) == (self.width, self.height) or width <= 0 or height <= 0:
             return
