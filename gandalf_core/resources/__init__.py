@@ -13,6 +13,7 @@ from gandalf_core.resources.mesh_data import (
     VertexAttribute,
     VertexLayout,
 )
+from gandalf_core.resources.mesh_loader import MESH_EXTENSIONS, load_mesh, load_meshes
 from gandalf_core.resources.primitives import cube, plane, pyramid, quad, torus, triangle, uv_sphere
 from gandalf_core.resources.procedural import checkerboard, gradient, sky_cube, solid, value_noise
 from gandalf_core.resources.shader_source import (
@@ -34,6 +35,9 @@ from gandalf_core.resources.texture_data import (
 )
 
 __all__ = [
+    "MESH_EXTENSIONS",
+    "load_mesh",
+    "load_meshes",
     "ATTRIBUTE_LOCATIONS",
     "BLEND_MODES",
     "CUBE_FACE_NAMES",

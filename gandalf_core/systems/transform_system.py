@@ -39,12 +39,17 @@ class TransformSystem(System):
             self._levels = self._plan(scene)
             self._plan_key = key
         q = store.column("quaternion")
-        norms = np.linalg.norm(q, axis=1, keepdims=True)
-        # Renormalise drifting quaternions; a zero quaternion (never valid) means "no rotation".
-        ok = norms > _MIN_QUAT_NORM
-        q_unit = np.where(ok, q / np.where(ok, norms, 1.0), np.array([1.0, 0, 0, 0]))
-        local = trs_batch(store.column("translation"), q_unit, store.column("scale"))
+        # trs_batch's rotation is exact for any non-zero quaternion length, so no renormalising pass;
+        # a zero quaternion (never valid) means "no rotation".
+        degenerate = np.einsum("ij,ij->i", q, q) < _MIN_QUAT_NORM**2
+        if degenerate.any():
+            q = q.copy()
+            q[degenerate] = (1.0, 0.0, 0.0, 0.0)
         world = store.column("world")
+        if not self._levels:  # a flat scene: local is world, written in place
+            trs_batch(store.column("translation"), q, store.column("scale"), out=world)
+            return
+        local = trs_batch(store.column("translation"), q, store.column("scale"))
         world[:] = local
         for rows, parent_rows in self._levels:
             world[rows] = world[parent_rows] @ local[rows]
