@@ -16,6 +16,7 @@ from .quaternion import (
     quat_to_matrix3,
 )
 from .transform import (
+    TRSBatch,
     decompose_trs,
     invert_affine,
     look_at,
@@ -56,5 +57,6 @@ __all__ = [
     "scaling",
     "translation",
     "trs",
+    "TRSBatch",
     "trs_batch",
 ]

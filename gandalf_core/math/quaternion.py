@@ -191,12 +191,11 @@ def quat_to_matrix3(q: ArrayLike) -> np.ndarray:
     return m
 
 
-def _write_rotation(q: np.ndarray, dst: np.ndarray, scale: np.ndarray | None = None) -> None:
+def _write_rotation(q: np.ndarray, dst: np.ndarray) -> None:
     """Write the rotation matrices of checked quaternions `q` (..., 4) into `dst` (..., 3, 3).
 
-    With `scale` (..., 3) column j is multiplied by scale[..., j], giving R @ diag(scale). Every step works
-    on whole 1D component arrays and writes straight into `dst`: numpy is slow at broadcasting over tiny
-    trailing axes, and this path builds the model matrices of 100k entities per frame.
+    Every step works on whole 1D component arrays and writes straight into `dst`: numpy is slow at
+    broadcasting over tiny trailing axes. (Per-frame model matrices of many entities: ``TRSBatch``.)
     """
     k = 2.0 / _norm_sq(q, "q")
     w, x, y, z = np.moveaxis(q, -1, 0)
@@ -211,10 +210,7 @@ def _write_rotation(q: np.ndarray, dst: np.ndarray, scale: np.ndarray | None = N
     )
     for i, row in enumerate(entries):
         for j, value in enumerate(row):
-            if scale is None:
-                dst[..., i, j] = value
-            else:
-                np.multiply(value, scale[..., j], out=dst[..., i, j])
+            dst[..., i, j] = value
 
 
 def quat_from_matrix3(m: ArrayLike) -> np.ndarray:

@@ -84,9 +84,13 @@ def pack_frame(
     return data.tobytes()
 
 
-def pack_instances(world: np.ndarray, rows: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
-    """Gather the affine rows of ``world[rows]`` into a ``(len(rows), 12)`` float32 array."""
-    if out is None or out.shape[0] != len(rows):
-        out = np.empty((len(rows), INSTANCE_FLOATS), dtype=np.float32)
+def pack_instances(world: np.ndarray, rows: np.ndarray | slice, out: np.ndarray | None = None) -> np.ndarray:
+    """Gather the affine rows of ``world[rows]`` into a ``(count, 12)`` float32 array.
+
+    ``rows`` is an index array, or a slice when the rows are consecutive (no gathering copy then).
+    """
+    count = len(range(*rows.indices(len(world)))) if isinstance(rows, slice) else len(rows)
+    if out is None or out.shape[0] != count:
+        out = np.empty((count, INSTANCE_FLOATS), dtype=np.float32)
     out.reshape(-1, 3, 4)[:] = world[rows, :3, :]
     return out

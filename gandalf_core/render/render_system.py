@@ -36,7 +36,7 @@ class RenderSystem(System):
         self.renderer = renderer
         self._plan_version = -1
         self.batches: list[DrawBatch] = []
-        self._rows = np.zeros(0, dtype=np.intp)
+        self._rows: np.ndarray | slice = np.zeros(0, dtype=np.intp)
         self._instances: np.ndarray | None = None
 
     def on_create_system(self) -> None:
@@ -88,7 +88,10 @@ class RenderSystem(System):
         ):
             self.batches.append(DrawBatch(mesh, material, np.array(rows, dtype=np.intp), first))
             first += len(rows)
-        self._rows = np.concatenate([b.rows for b in self.batches]) if self.batches else np.zeros(0, np.intp)
+        rows = np.concatenate([b.rows for b in self.batches]) if self.batches else np.zeros(0, np.intp)
+        # Consecutive rows (the common case: entities created together) are read as a slice, no gather.
+        consecutive = len(rows) > 0 and rows[-1] - rows[0] == len(rows) - 1 and np.all(np.diff(rows) == 1)
+        self._rows = slice(int(rows[0]), int(rows[-1]) + 1) if consecutive else rows
         self._plan_version = self.scene.membership_version
 
     def on_update_system(self, ts: float) -> None:

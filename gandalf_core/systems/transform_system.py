@@ -1,6 +1,6 @@
 """The transform system: world matrices for every entity, parents before children, once per frame.
 
-All local matrices are built in one vectorised call (``trs_batch``); the hierarchy is then resolved
+All local matrices are built in one vectorised pass (``TRSBatch``); the hierarchy is then resolved
 level by level (every entity at depth *d* in one batched matrix product), so a child is always
 recomputed after any ancestor moved and 100k entities cost a few numpy calls.
 """
@@ -13,7 +13,7 @@ import numpy as np
 
 from ..components import LinkComponent, TransformComponent
 from ..ecs import Scene, System
-from ..math import decompose_trs, invert_affine, quat_normalize, trs, trs_batch
+from ..math import TRSBatch, decompose_trs, invert_affine, quat_normalize, trs
 
 # Quaternions shorter than this carry no usable rotation and count as the identity.
 _MIN_QUAT_NORM = 1e-12
@@ -26,6 +26,8 @@ class TransformSystem(System):
         super().__init__([TransformComponent])
         self._plan_key: tuple[int, int] | None = None
         self._levels: list[tuple[np.ndarray, np.ndarray]] = []
+        self._trs = TRSBatch()
+        self._local: np.ndarray | None = None
 
     def on_update_system(self, ts: float) -> None:
         scene = self.scene
@@ -39,7 +41,7 @@ class TransformSystem(System):
             self._levels = self._plan(scene)
             self._plan_key = key
         q = store.column("quaternion")
-        # trs_batch's rotation is exact for any non-zero quaternion length, so no renormalising pass;
+        # TRSBatch builds the exact rotation for any non-zero quaternion length, so no renormalising pass;
         # a zero quaternion (never valid) means "no rotation".
         degenerate = np.einsum("ij,ij->i", q, q) < _MIN_QUAT_NORM**2
         if degenerate.any():
@@ -47,9 +49,11 @@ class TransformSystem(System):
             q[degenerate] = (1.0, 0.0, 0.0, 0.0)
         world = store.column("world")
         if not self._levels:  # a flat scene: local is world, written in place
-            trs_batch(store.column("translation"), q, store.column("scale"), out=world)
+            self._trs(store.column("translation"), q, store.column("scale"), out=world)
             return
-        local = trs_batch(store.column("translation"), q, store.column("scale"))
+        if self._local is None or len(self._local) != n:
+            self._local = np.empty((n, 4, 4))
+        local = self._trs(store.column("translation"), q, store.column("scale"), out=self._local)
         world[:] = local
         for rows, parent_rows in self._levels:
             world[rows] = world[parent_rows] @ local[rows]

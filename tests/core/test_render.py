@@ -292,3 +292,11 @@ def test_read_pixel_matches_the_full_read_back(backend):
     for x, y in [(0, 0), (W - 1, 0), (W // 2, H // 2), (10, H - 1)]:
         assert np.array_equal(app.renderer.read_pixel(x, y), image[y, x])
     app.close()
+
+
+def test_instance_rows_read_as_a_slice_or_gathered_agree():
+    from gandalf_core.render.frame import pack_instances
+
+    world = np.random.default_rng(3).normal(size=(50, 4, 4))
+    assert np.array_equal(pack_instances(world, slice(10, 40)), pack_instances(world, np.arange(10, 40)))
+    assert pack_instances(world, slice(10, 40)).dtype == np.float32

@@ -123,6 +123,9 @@ class OpenGLRenderer(Renderer):
             capacity = 1 << max(12, (nbytes - 1).bit_length())  # grow by powers of two
             self._instance_buffer = self.ctx.buffer(reserve=capacity, dynamic=True)
             self.stats["buffers_created"] += 1
+        else:
+            # Fresh storage for this frame's data, so the driver need not wait for last frame's draws.
+            self._instance_buffer.orphan()
         self._instance_buffer.write(instances)
 
     def _apply_state(self, data: MaterialData, reverse_z: bool) -> None:
