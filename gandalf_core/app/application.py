@@ -22,6 +22,10 @@ from .input import Input, ResizeEvent
 from .window import Window, display_available
 
 
+#: Pressing this key closes the window (as closing it with the mouse does).
+CLOSE_KEY = "ESCAPE"
+
+
 class Application:
     """Runs scenes with one backend. ``backend`` is 'opengl' or 'webgpu'."""
 
@@ -97,6 +101,8 @@ class Application:
         for event in self.input.begin_frame():
             if isinstance(event, ResizeEvent):
                 self.renderer.resize(event.width, event.height)
+        if self.window is not None and self.input.pressed(CLOSE_KEY):
+            self.window.request_close()
         ts = self.clock.tick(dt)
         scene.update(ts)
         return ts

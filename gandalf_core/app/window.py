@@ -63,6 +63,9 @@ class Window:
     def should_close(self) -> bool:
         return bool(self._glfw.window_should_close(self.handle))
 
+    def request_close(self) -> None:
+        self._glfw.set_window_should_close(self.handle, True)
+
     def swap_buffers(self) -> None:
         self._glfw.swap_buffers(self.handle)
 

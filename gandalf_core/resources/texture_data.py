@@ -207,11 +207,12 @@ class TextureData:
     """An RGBA8 image (top row first) plus its sampling settings.
 
     ``pixels`` is a read-only, C-contiguous ``uint8`` array of shape (H, W, 4). The constructor takes exactly
-    that; :meth:`from_array` and :meth:`from_file` convert other inputs. Instances are immutable: derive a new
-    one with :func:`dataclasses.replace` to change a setting.
+    that, or an image file's path as in the paper (``TextureData(TEXTURES / "bricks.png")``, the same as
+    :meth:`from_file`); :meth:`from_array` converts other arrays. Instances are immutable: derive a new one
+    with :func:`dataclasses.replace` to change a setting.
     """
 
-    pixels: np.ndarray
+    pixels: np.ndarray  # or, when constructing, an image file's path
     srgb: bool = True
     wrap: str = "repeat"
     filter: str = "linear"
@@ -219,6 +220,11 @@ class TextureData:
     name: str = "texture"
 
     def __post_init__(self) -> None:
+        if isinstance(self.pixels, (str, Path)):
+            path = Path(self.pixels)
+            if self.name == "texture":
+                object.__setattr__(self, "name", path.name)
+            object.__setattr__(self, "pixels", _read_image_rgba8(path, _label("texture", self.name)))
         label = _label("texture", self.name)
         _check_settings(label, self.wrap, self.filter)
         object.__setattr__(self, "pixels", _check_rgba8(label, "pixels", self.pixels))

@@ -615,3 +615,16 @@ def test_include_from_text_uses_base_dir_and_include_dirs(tmp_path: Path) -> Non
     assert src.source_map(3) == ("t", 2)
     with pytest.raises(ResourceError, match=r"shader 't': include: t:1: \"snip.wgsl\" not found"):
         ShaderSource.from_text('#include "snip.wgsl"\n', "wgsl", filename="t")
+
+
+def test_texture_data_takes_a_path_as_in_the_paper(tmp_path):
+    from PIL import Image
+
+    path = tmp_path / "bricks.png"
+    Image.fromarray(np.full((4, 6, 3), (200, 100, 50), np.uint8), "RGB").save(path)
+    texture = TextureData(path, wrap="clamp")
+    assert texture.name == "bricks.png"
+    assert texture.pixels.shape == (4, 6, 4)
+    assert np.array_equal(texture.pixels, TextureData.from_file(path, wrap="clamp").pixels)
+    with pytest.raises(ResourceError, match="missing.png"):
+        TextureData(tmp_path / "missing.png")

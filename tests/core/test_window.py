@@ -41,3 +41,11 @@ def test_window_resize_event_resizes_the_target(backend):
                 break
         assert (app.renderer.width, app.renderer.height) == (200, 100)
         assert app.capture().shape == (100, 200, 4)
+
+
+def test_escape_closes_the_window(backend):
+    with Application(backend, 64, 48, headless=False) as app:
+        app.add_scene(Scene("escape"))
+        app.input.key("ESCAPE")
+        app.run()  # returns because the window now wants to close
+        assert app.window.should_close
