@@ -21,7 +21,6 @@ from .clock import Clock
 from .input import Input, ResizeEvent
 from .window import Window, display_available
 
-
 #: Pressing this key closes the window (as closing it with the mouse does).
 CLOSE_KEY = "ESCAPE"
 
