@@ -10,6 +10,7 @@ from __future__ import annotations
 from abc import ABC, abstractmethod
 from collections import Counter
 from pathlib import Path
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -47,6 +48,10 @@ class Renderer(ABC):
         self.width, self.height = int(width), int(height)
         #: Counters the tests and benchmarks read: draw calls of the last frame, objects created.
         self.stats: Counter[str] = Counter()
+        #: Drawn over each finished frame, in order (a GUI layer such as the editor). OpenGL calls
+        #: ``overlay(renderer)`` with the frame's framebuffer bound; WebGPU calls ``overlay(renderer,
+        #: encoder)`` after the scene's render pass, to record its own pass on ``renderer.color_view``.
+        self.overlays: list[Callable[..., None]] = []
 
     @property
     def aspect(self) -> float:

@@ -300,3 +300,26 @@ def test_instance_rows_read_as_a_slice_or_gathered_agree():
     world = np.random.default_rng(3).normal(size=(50, 4, 4))
     assert np.array_equal(pack_instances(world, slice(10, 40)), pack_instances(world, np.arange(10, 40)))
     assert pack_instances(world, slice(10, 40)).dtype == np.float32
+
+
+def test_overlays_draw_over_the_finished_frame(backend):
+    """The hook a GUI layer uses: called once per frame after the scene, in both backends."""
+    calls = []
+
+    def overlay(renderer, *encoder):
+        calls.append(renderer.backend)
+        if renderer.backend == "opengl":
+            renderer.framebuffer.clear(1.0, 0.0, 0.0, 1.0, viewport=(0, 0, 4, 4))
+        else:
+            (enc,) = encoder
+            rpass = enc.begin_render_pass(color_attachments=[{
+                "view": renderer.color_view, "load_op": "clear", "clear_value": (1, 0, 0, 1), "store_op": "store"}])
+            rpass.end()
+
+    with make_app(backend) as app:
+        app.add_scene(cubes_scene(3))
+        app.renderer.overlays.append(overlay)
+        app.run(frames=2)
+        assert calls == [backend, backend]
+        # OpenGL cleared a corner (its origin is bottom-left), WebGPU the whole target.
+        assert np.array_equal(app.capture()[-1, 0], [255, 0, 0, 255])

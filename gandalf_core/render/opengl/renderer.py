@@ -64,6 +64,11 @@ class OpenGLRenderer(Renderer):
         self._fbo = self.ctx.framebuffer([self._color], self._depth)
     # --8<-- [end:targets]
 
+    @property
+    def framebuffer(self) -> moderngl.Framebuffer:
+        """The offscreen framebuffer frames are drawn into (sRGB colour + depth)."""
+        return self._fbo
+
     def _release_targets(self) -> None:
         for obj in (self._fbo, self._color, self._depth):
             obj.release()
@@ -101,6 +106,9 @@ class OpenGLRenderer(Renderer):
             self.stats["draw_calls"] += 1
         if data.skybox is not None:
             self._draw_sky(data.skybox, assets, data.reverse_z)
+        for overlay in self.overlays:
+            overlay(self)
+            self._state = None  # an overlay may change any GL state
         self._present()
 
     def _draw_sky(self, texture_name: str, assets: Assets, reverse_z: bool) -> None:

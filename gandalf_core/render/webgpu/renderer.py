@@ -145,6 +145,8 @@ class WebGPURenderer(Renderer):
             rpass.draw(3)
             self.stats["draw_calls"] += 1
         rpass.end()
+        for overlay in self.overlays:
+            overlay(self, encoder)
         surface_texture = None
         if self._surface is not None:
             surface_texture = self._surface.get_current_texture()
