@@ -10,6 +10,7 @@ systems in their order — the scene's own systems, then the core ones the app a
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -26,7 +27,8 @@ CLOSE_KEY = "ESCAPE"
 
 
 class Application:
-    """Runs scenes with one backend. ``backend`` is 'opengl' or 'webgpu'."""
+    """Runs scenes with one backend. ``backend`` is 'opengl' or 'webgpu'; ``editor=True`` turns on the
+    ImGui editor (both backends; see :mod:`gandalf_core.editor`)."""
 
     def __init__(
         self,
@@ -37,6 +39,7 @@ class Application:
         title: str = "gandalf",
         headless: bool | None = None,
         fixed_dt: float | None = None,
+        editor: bool = False,
     ) -> None:
         self.backend = check_backend(backend)  # fails before any GPU library is imported
         self.headless = (not display_available()) if headless is None else bool(headless)
@@ -45,11 +48,18 @@ class Application:
         self.scenes = SceneManager()
         self.scenes.on_switch.append(self._on_switch)
         self.window = None if self.headless else Window(width, height, title, self.backend, self.input)
+        if self.window is not None:
+            # On a high-DPI screen the framebuffer has more pixels than the window has points.
+            width, height = self.window.framebuffer_size
         from ..render import create_renderer
 
         self.renderer: Renderer = create_renderer(self.backend, width, height, self.window)
         self._prepared: set[int] = set()
         self.running = False
+        if editor:  # imported only when asked for: ImGui is not needed otherwise
+            from ..editor import enable_editor
+
+            enable_editor(self)
 
     # --- scenes -------------------------------------------------------------------------------
     def add_scene(self, scene: Scene) -> Scene:
@@ -110,6 +120,7 @@ class Application:
     def run(self, frames: int | None = None, seconds: float | None = None) -> None:
         """Run until the window closes, or for ``frames`` frames / ``seconds`` of clock time."""
         self.running = True
+        self.clock.restart()
         start = self.clock.time
         count = 0
         while self.running:
@@ -137,7 +148,11 @@ class Application:
         return self.renderer.save_png(path)
 
     def close(self) -> None:
-        """Tear down every scene's systems, the renderer and the window."""
+        """Tear down the editor (if on), every scene's systems, the renderer and the window."""
+        if "gandalf_core.editor" in sys.modules:
+            from ..editor import disable_editor
+
+            disable_editor(self)
         for scene in self.scenes.scenes:
             scene.teardown()
         self.renderer.release()

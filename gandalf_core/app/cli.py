@@ -23,9 +23,14 @@ def run_variant(create_app: Callable[..., Application], argv: list[str] | None =
     parser.add_argument("--out", default=None, help="save the last frame to this PNG file")
     parser.add_argument("--student", action="store_true", help="run your exercises/ instead of solutions/")
     parser.add_argument("--size", default="640x480", help="WIDTHxHEIGHT (default 640x480)")
+    parser.add_argument("--editor", action="store_true", help="turn on the editor (hierarchy, inspector, USD)")
     args = parser.parse_args(argv)
     width, height = (int(x) for x in args.size.lower().split("x"))
     app = create_app(headless=True if args.headless else None, student=args.student, width=width, height=height)
+    if args.editor:
+        from ..editor import enable_editor
+
+        enable_editor(app)
     frames = args.frames if args.frames is not None else (60 if app.headless else None)
     with app:
         app.run(frames=frames)

@@ -11,6 +11,8 @@ class Clock:
 
     #: Frame times are clamped to this, so a stall (a breakpoint, a dragged window) can't explode physics.
     MAX_DT = 0.25
+    #: The first frame's step in real time: a nominal 60 Hz frame.
+    FIRST_DT = 1 / 60
 
     def __init__(self, fixed_dt: float | None = None) -> None:
         if fixed_dt is not None and not (math.isfinite(fixed_dt) and fixed_dt > 0):
@@ -20,11 +22,20 @@ class Clock:
         self.frame = 0
         self._last = time.perf_counter()
 
+    def restart(self) -> None:
+        """Start measuring the next frame from now (so time spent before a loop starts is not a frame)."""
+        self._last = time.perf_counter()
+
     def tick(self, dt: float | None = None) -> float:
         """Advance one frame and return its time step in seconds."""
         now = time.perf_counter()
         if dt is None:
-            dt = self.fixed_dt if self.fixed_dt is not None else min(now - self._last, self.MAX_DT)
+            if self.fixed_dt is not None:
+                dt = self.fixed_dt
+            elif self.frame == 0:
+                dt = self.FIRST_DT  # the time since start-up (loading, compiling) is not a frame
+            else:
+                dt = min(now - self._last, self.MAX_DT)
         elif not math.isfinite(dt):
             raise ValueError(f"a frame's dt must be finite, got {dt!r}")
         elif dt < 0:

@@ -86,9 +86,14 @@ def _glfw_ready(glfw: object) -> bool:
     return _initialised
 
 
+_KEY_NAMES: dict[int, str] = {}
+
+
 def _special_key_name(glfw: object, key: int) -> str | None:
-    # glfw.get_key_name only names printable keys; the rest come from the KEY_* constants.
-    for attr in dir(glfw):
-        if attr.startswith("KEY_") and getattr(glfw, attr) == key:
-            return attr[4:]
-    return None
+    # glfw.get_key_name only names printable keys; the rest come from the KEY_* constants (KEY_LAST and
+    # KEY_UNKNOWN are aliases, not keys).
+    if not _KEY_NAMES:
+        for attr in sorted(dir(glfw), reverse=True):
+            if attr.startswith("KEY_") and attr not in ("KEY_LAST", "KEY_UNKNOWN"):
+                _KEY_NAMES[getattr(glfw, attr)] = attr[4:]
+    return _KEY_NAMES.get(key)

@@ -63,6 +63,8 @@ class CameraComponent(Component):
 
     def _projection(self, depth_range: str, target_aspect: float) -> np.ndarray:
         aspect = target_aspect if self.aspect is None else self.aspect
+        if not (isinstance(aspect, (int, float)) and math.isfinite(aspect) and aspect > 0):
+            raise ValueError(f"aspect must be finite and > 0, got {aspect!r}")
         if self.projection == "perspective":
             return perspective(self.fov, aspect, self.near, self.far, depth_range=depth_range, reverse_z=self.reverse_z)
         if self.projection == "orthographic":

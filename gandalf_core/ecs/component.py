@@ -97,6 +97,8 @@ class ColumnStore:
             name: np.zeros((self.capacity, *shape)) for name, (shape, _) in component_type.columns.items()
         }
         self.owners: list[ColumnarComponent] = []
+        #: Bumped when a row moves (a removal swaps the last row in): caches of row indices compare it.
+        self.layout_version = 0
 
     def attach(self, component: ColumnarComponent) -> None:
         if self.count == self.capacity:
@@ -120,6 +122,7 @@ class ColumnStore:
         self.owners.pop()
         component._store, component._row = None, -1
         self.count -= 1
+        self.layout_version += 1
 
     def column(self, name: str) -> np.ndarray:
         """A view of the live rows of column ``name`` (shape ``(count, *field_shape)``)."""

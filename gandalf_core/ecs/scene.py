@@ -99,8 +99,11 @@ class Scene:
             raise ValueError(
                 f"cannot add this {component_type.__name__} to {self.describe(entity)}: it already belongs to an entity"
             )
+        kept_children: list[uuid.UUID] = []
         if component_type is LinkComponent:
             self._check_parent(entity, component.parent)
+            if LinkComponent in comps:  # a new Link replaces the parent, not the entity's children
+                kept_children = list(comps[LinkComponent].children)
         if component_type in comps:
             self.remove_component(entity, component_type)
         if isinstance(component, ColumnarComponent):
@@ -108,6 +111,9 @@ class Scene:
         comps[component_type] = component
         if component_type is LinkComponent:
             self._attach_link(entity, component)
+            for child in kept_children:
+                self._entities[child][LinkComponent]._parent = entity
+                component.children.append(child)
         self.membership_version += 1
         for system in self._systems_by_type.get(component_type, ()):
             if system.matches(comps):

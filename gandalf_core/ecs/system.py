@@ -43,6 +43,8 @@ class System:
         self.enabled = True
         self._members: dict[uuid.UUID, tuple[Any, ...]] = {}
         self._lists: tuple[list[uuid.UUID], list[tuple[Any, ...]]] | None = None
+        #: Bumped whenever an entity starts or stops matching: caches built from the members compare it.
+        self.version = 0
 
     # --- hooks -----------------------------------------------------------------------------
     def on_create_system(self) -> None:
@@ -95,11 +97,13 @@ class System:
     def _add_member(self, entity: uuid.UUID, components: tuple[Any, ...]) -> None:
         self._members[entity] = components
         self._lists = None
+        self.version += 1
         self.on_create_entity(entity, components)
 
     def _remove_member(self, entity: uuid.UUID) -> None:
         components = self._members.pop(entity)
         self._lists = None
+        self.version += 1
         self.on_remove_entity(entity, components)
 
     def _cached_lists(self) -> tuple[list[uuid.UUID], list[tuple[Any, ...]]]:

@@ -4,10 +4,9 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from ..resources import ATTRIBUTE_LOCATIONS
+from ..resources import ATTRIBUTE_LOCATIONS, INSTANCE_LOCATIONS
 from .errors import ShaderCompileError
 
-INSTANCE_LOCATIONS = (5, 6, 7)
 _BY_LOCATION = {loc: name for name, loc in ATTRIBUTE_LOCATIONS.items()}
 
 

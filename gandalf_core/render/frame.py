@@ -16,12 +16,21 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..resources import MaterialData
+
 INSTANCE_FLOATS = 12
+INSTANCE_STRIDE = INSTANCE_FLOATS * 4
 # view, projection, camera_position, time, clip_to_direction, depth
 FRAME_FLOATS = 16 + 16 + 4 + 4 + 16 + 4
 MAX_LIGHTS = 64
 # count (ivec4), ambient, position[MAX_LIGHTS], color[MAX_LIGHTS]
 LIGHTS_BYTES = 16 + 16 + 16 * MAX_LIGHTS * 2
+
+
+#: The sky pass's shader name (core shaders ``render/shaders/skybox.*``) and fixed state: it is drawn
+#: where nothing else is, at the far plane, with no depth writes and no culling.
+SKY_SHADER = "gandalf.skybox"
+SKY_STATE = MaterialData(SKY_SHADER, cull="none", depth_write=False, name="sky")
 
 
 @dataclass
@@ -31,9 +40,9 @@ class FrameData:
     clear_color: np.ndarray  # linear RGBA
     frame: bytes  # the frame uniform block
     lights: bytes  # the lights uniform block
-    batches: list[DrawBatch]
+    batches: list[DrawBatch]  # opaque ones first, then the transparent ones back to front
     instances: np.ndarray | None  # (total instances, 12) float32
-    skybox: str | None = None  # cube texture name, or None for no sky pass
+    skybox: str | None = None  # cube texture name, or None for no sky pass (drawn after the opaque batches)
     reverse_z: bool = False
 
 
@@ -45,6 +54,8 @@ class DrawBatch:
     material: str
     rows: np.ndarray  # rows of the TransformComponent store
     first_instance: int = 0
+    transparent: bool = False  # blended: drawn after the opaque batches and the sky, back to front
+    farthest: float = 0.0  # squared distance of its farthest instance (transparent batches, this frame)
 
     @property
     def count(self) -> int:
@@ -82,6 +93,11 @@ def pack_frame(
     data[56] = depth_ends[0]
     data[57] = depth_ends[1]
     return data.tobytes()
+
+
+def instance_capacity(nbytes: int) -> int:
+    """Bytes to allocate for ``nbytes`` of instance data: powers of two from 4 KiB, so growth is rare."""
+    return 1 << max(12, (nbytes - 1).bit_length())
 
 
 def pack_instances(world: np.ndarray, rows: np.ndarray | slice, out: np.ndarray | None = None) -> np.ndarray:

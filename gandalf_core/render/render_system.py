@@ -19,6 +19,7 @@ from ..components import (
 )
 from ..ecs import System
 from ..math import depth_range, invert_affine
+from ..resources import MaterialData
 from ..systems.light_system import LightSystem, pack_lights
 from .base import Renderer
 from .color import srgb_rgba_to_linear
@@ -34,7 +35,7 @@ class RenderSystem(System):
     def __init__(self, renderer: Renderer) -> None:
         super().__init__([TransformComponent, MeshComponent, MaterialComponent])
         self.renderer = renderer
-        self._plan_version = -1
+        self._plan_key: tuple[int, int] = (-1, -1)
         self.batches: list[DrawBatch] = []
         self._rows: np.ndarray | slice = np.zeros(0, dtype=np.intp)
         self._instances: np.ndarray | None = None
@@ -76,23 +77,59 @@ class RenderSystem(System):
         return view, projection, world[:3, 3].copy(), camera.reverse_z
 
     def plan(self) -> None:
-        """Group entities by (material, mesh); sorted so that batches sharing a shader are adjacent."""
+        """Group entities by (material, mesh): opaque batches first, sorted so that batches sharing a
+        shader are adjacent, then the blended (transparent) ones, which are re-sorted every frame."""
         groups: dict[tuple[str, str], list[int]] = {}
         for transform, mesh, material in self.components:
             groups.setdefault((material.material, mesh.mesh), []).append(transform._row)
-        materials = self.scene.assets.materials
+
+        def order(item: tuple[tuple[str, str], list[int]]) -> tuple[bool, str, str, str]:
+            (material, mesh), _rows = item
+            data = self._material_data(material)
+            return (data is not None and data.blend != "opaque", getattr(data, "shader", ""), material, mesh)
+
         self.batches = []
-        first = 0
-        for (material, mesh), rows in sorted(
-            groups.items(), key=lambda kv: (getattr(materials.get(kv[0][0]), "shader", ""), kv[0])
-        ):
-            self.batches.append(DrawBatch(mesh, material, np.array(rows, dtype=np.intp), first))
-            first += len(rows)
+        for (material, mesh), rows in sorted(groups.items(), key=order):
+            data = self._material_data(material)
+            transparent = data is not None and data.blend != "opaque"
+            self.batches.append(DrawBatch(mesh, material, np.array(rows, dtype=np.intp), transparent=transparent))
+        self._number_batches()
         rows = np.concatenate([b.rows for b in self.batches]) if self.batches else np.zeros(0, np.intp)
         # Consecutive rows (the common case: entities created together) are read as a slice, no gather.
         consecutive = len(rows) > 0 and rows[-1] - rows[0] == len(rows) - 1 and np.all(np.diff(rows) == 1)
         self._rows = slice(int(rows[0]), int(rows[-1]) + 1) if consecutive else rows
-        self._plan_version = self.scene.membership_version
+        self._plan_key = self._current_plan_key()
+
+    def _material_data(self, name: str) -> MaterialData | None:
+        data = self.scene.assets.materials.get(name)
+        if data is None and name in self.renderer.materials:
+            data = self.renderer.materials.get(name).data
+        return data
+
+    def _number_batches(self) -> None:
+        first = 0
+        for batch in self.batches:
+            batch.first_instance = first
+            first += batch.count
+
+    def _sort_transparent(self, world: np.ndarray, eye: np.ndarray) -> None:
+        """Blended batches draw back to front: their instances by distance, the batches by their farthest."""
+        transparent = [b for b in self.batches if b.transparent]
+        if not transparent:
+            return
+        for batch in transparent:
+            distance = np.einsum("ij,ij->i", world[batch.rows, :3, 3] - eye, world[batch.rows, :3, 3] - eye)
+            order = np.argsort(-distance, kind="stable")
+            batch.rows = batch.rows[order]
+            batch.farthest = float(distance[order[0]])
+        transparent.sort(key=lambda b: -b.farthest)
+        self.batches = [b for b in self.batches if not b.transparent] + transparent
+        self._number_batches()
+        self._rows = np.concatenate([b.rows for b in self.batches])
+
+    def _current_plan_key(self) -> tuple[int, int]:
+        # Batches change when this system's entities change, and row indices when any transform row moves.
+        return (self.version, self.scene.store(TransformComponent).layout_version)
 
     def on_update_system(self, ts: float) -> None:
         self.renderer.render(self.frame_data(ts), self.scene.assets)
@@ -100,7 +137,7 @@ class RenderSystem(System):
     def frame_data(self, ts: float) -> FrameData:
         """Collect this frame's uniforms and instance data."""
         scene = self.scene
-        if self._plan_version != scene.membership_version:
+        if self._plan_key != self._current_plan_key():
             self.plan()
         view, projection, eye, reverse_z = self.camera()
         lo, hi = depth_range(self.renderer.depth_range)
@@ -109,6 +146,7 @@ class RenderSystem(System):
         frame = pack_frame(view, projection, eye, app.clock.time if app is not None else 0.0, ts, depth_ends)
         if self.batches:
             world = scene.store(TransformComponent).columns["world"]
+            self._sort_transparent(world, eye)
             self._instances = pack_instances(world, self._rows, self._instances)
         light_systems = [s for s in scene.systems if isinstance(s, LightSystem)]
         lights = light_systems[0].data if light_systems else _NO_LIGHTS

@@ -517,6 +517,13 @@ class StructLayout:
         """Byte offset of member ``name``."""
         return self.field(name).offset
 
+    def shape_of(self, name: str) -> tuple[int, ...] | None:
+        """The numpy shape :meth:`pack` expects for a scalar, vector or matrix member (None for others)."""
+        for f, layout in zip(self.fields, self._members):
+            if f.name == name:
+                return layout.shape if isinstance(layout, _Leaf) else None
+        raise KeyError(f"struct {self.name} has no field '{name}'")
+
     def pack(self, values: Mapping[str, Any]) -> bytes:
         """The struct's bytes, every member taken from ``values`` (padding is zero).
 

@@ -7,7 +7,7 @@ vertex-buffer description.
 
 Attribute locations are fixed for the whole engine (:data:`ATTRIBUTE_LOCATIONS`), so any shader can be used with
 any mesh: ``layout(location = 2) in vec2 uv`` in GLSL and ``@location(2) uv: vec2f`` in WGSL always mean the
-UV set. Per-instance data (the model matrix, normal matrix, colour, ...) uses locations 5..11
+UV set. Per-instance data (the three affine rows of the model matrix) uses locations 5, 6 and 7
 (:data:`INSTANCE_LOCATIONS`).
 
 Tangent convention (the glTF one): ``tangent.xyz`` points along +u; the bitangent
@@ -26,7 +26,7 @@ import numpy as np
 from gandalf_core.resources.errors import ResourceError
 
 ATTRIBUTE_LOCATIONS: dict[str, int] = {"position": 0, "normal": 1, "uv": 2, "tangent": 3, "color": 4}
-INSTANCE_LOCATIONS = range(5, 12)
+INSTANCE_LOCATIONS = (5, 6, 7)
 
 # attribute name -> (MeshData field, components)
 _ATTRIBUTES: dict[str, tuple[str, int]] = {

@@ -44,15 +44,15 @@ def pack_lights(components: list[tuple[Any, Any]]) -> bytes:
     ambient = block[4:8]
     positions = block[8 : 8 + 4 * MAX_LIGHTS].reshape(MAX_LIGHTS, 4)
     colors = block[8 + 4 * MAX_LIGHTS :].reshape(MAX_LIGHTS, 4)
-    n = 0
+    n = dropped = 0
     for light, transform in components:
         linear = srgb_rgba_to_linear((*light.color, 1.0))[:3] * light.intensity
         if light.kind == "ambient":
             ambient[:3] += linear
             continue
         if n == MAX_LIGHTS:
-            warnings.warn(f"more than {MAX_LIGHTS} lights: the rest are ignored", stacklevel=2)
-            break
+            dropped += 1  # ambient lights further on still count
+            continue
         world = transform.world
         if light.kind == "point":
             positions[n] = (*world[:3, 3], 1.0)
@@ -64,4 +64,7 @@ def pack_lights(components: list[tuple[Any, Any]]) -> bytes:
         colors[n] = (*linear, light.range)
         n += 1
     count[0] = n
+    if dropped:
+        warnings.warn(f"{n + dropped} point and directional lights; only the first {MAX_LIGHTS} are used",
+                      stacklevel=2)
     return block.tobytes()

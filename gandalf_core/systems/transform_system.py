@@ -24,7 +24,7 @@ class TransformSystem(System):
 
     def __init__(self) -> None:
         super().__init__([TransformComponent])
-        self._plan_key: tuple[int, int] | None = None
+        self._plan_key: tuple[int, int, int] | None = None
         self._levels: list[tuple[np.ndarray, np.ndarray]] = []
         self._trs = TRSBatch()
         self._local: np.ndarray | None = None
@@ -36,10 +36,14 @@ class TransformSystem(System):
         n = store.count
         if n == 0:
             return
-        key = (scene.hierarchy_version, scene.membership_version)
+        key = (scene.hierarchy_version, self.version, store.layout_version)
         if key != self._plan_key:
             self._levels = self._plan(scene)
             self._plan_key = key
+        for field in ("translation", "quaternion", "scale"):
+            column = store.column(field)
+            if not np.isfinite(column).all():  # NaN can come in through a field's live view
+                self._report_non_finite(field, column)
         q = store.column("quaternion")
         # TRSBatch builds the exact rotation for any non-zero quaternion length, so no renormalising pass;
         # a zero quaternion (never valid) means "no rotation".
@@ -57,6 +61,13 @@ class TransformSystem(System):
         world[:] = local
         for rows, parent_rows in self._levels:
             world[rows] = world[parent_rows] @ local[rows]
+
+    def _report_non_finite(self, field: str, column: np.ndarray) -> None:
+        row = int(np.flatnonzero(~np.isfinite(column.reshape(len(column), -1)).all(axis=1))[0])
+        entity = next(e for e, (t,) in zip(self.entities, self.components) if t._row == row)
+        raise ValueError(
+            f"{self.scene.describe(entity)}: TransformComponent.{field} is not finite: {column[row].tolist()}"
+        )
 
     def _plan(self, scene: Scene) -> list[tuple[np.ndarray, np.ndarray]]:
         """Group transform rows by hierarchy depth (depth ≥ 1 only; roots need no product)."""

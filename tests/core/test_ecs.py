@@ -175,10 +175,15 @@ class SceneMachine(RuleBasedStateMachine):
                     scene.add_component(entity, LinkComponent(parent))
                 return
             link = scene.add_component(entity, LinkComponent(parent))
+            kept: set[uuid.UUID] = set()
             if LinkComponent in model.comps[entity]:
+                # A new Link changes the parent; the entity keeps its children.
+                kept = model.children_of(entity)
                 model.drop_link(entity)
             model.comps[entity][LinkComponent] = link
             model.link_to(entity, parent)
+            for child in kept:
+                model.parents[child] = entity
             return
         if kind == "info":
             self.names += 1
@@ -683,3 +688,16 @@ def test_column_store_grows_and_keeps_values() -> None:
     np.testing.assert_array_equal(
         np.sort(store.column("translation")[:, 0]), [i for i in range(100) if i % 3]
     )
+
+
+def test_replacing_a_link_changes_the_parent_and_keeps_the_children() -> None:
+    scene = Scene("relink")
+    a, b, c = (scene.create_entity(InfoComponent(n)) for n in "abc")
+    scene.add_component(b, LinkComponent(None))
+    scene.add_component(c, LinkComponent(b))
+    scene.add_component(b, LinkComponent(a))
+    assert scene.parent_of(b) == a
+    assert scene.parent_of(c) == b
+    assert scene.get_component(b, LinkComponent).children == [c]
+    with pytest.raises(HierarchyCycleError):
+        scene.add_component(b, LinkComponent(c))  # c is b's child: still a cycle

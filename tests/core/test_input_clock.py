@@ -121,22 +121,30 @@ def test_fixed_dt_advances_exactly(fake_time: list[float]) -> None:
     assert clock.time == pytest.approx(1.0, abs=1e-12)
 
 
+def test_first_frame_does_not_count_start_up_time(fake_time: list[float]) -> None:
+    clock = Clock()
+    fake_time[0] += 3.0  # loading assets, compiling shaders
+    assert clock.tick() == Clock.FIRST_DT
+
+
 def test_real_frame_time_is_measured(fake_time: list[float]) -> None:
     clock = Clock()
+    clock.tick()
     fake_time[0] += 0.016
     assert clock.tick() == pytest.approx(0.016, abs=1e-9)
     fake_time[0] += 0.040
     assert clock.tick() == pytest.approx(0.040, abs=1e-9)
-    assert clock.time == pytest.approx(0.056, abs=1e-9) and clock.frame == 2
+    assert clock.time == pytest.approx(Clock.FIRST_DT + 0.056, abs=1e-9) and clock.frame == 3
 
 
 def test_huge_real_frame_times_are_clamped(fake_time: list[float]) -> None:
     clock = Clock()
+    clock.tick()
     fake_time[0] += 30.0  # a breakpoint or a dragged window
     assert clock.tick() == Clock.MAX_DT
     fake_time[0] += 0.01
     assert clock.tick() == pytest.approx(0.01, abs=1e-9)  # the next frame measures from the stall's end
-    assert clock.time == pytest.approx(Clock.MAX_DT + 0.01, abs=1e-9)
+    assert clock.time == pytest.approx(Clock.FIRST_DT + Clock.MAX_DT + 0.01, abs=1e-9)
 
 
 def test_explicit_dt_and_negative_dt(fake_time: list[float]) -> None:

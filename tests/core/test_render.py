@@ -323,3 +323,136 @@ def test_overlays_draw_over_the_finished_frame(backend):
         assert calls == [backend, backend]
         # OpenGL cleared a corner (its origin is bottom-left), WebGPU the whole target.
         assert np.array_equal(app.capture()[-1, 0], [255, 0, 0, 255])
+
+
+# --- blending, depth and material values: the same in both backends -------------------------------------
+FLAT_WGSL = """
+#include "frame.wgsl"
+#include "instance.wgsl"
+struct Material { color: vec4<f32>, tint: vec4<f32>, m: mat4x4<f32> };
+@group(1) @binding(0) var<uniform> material: Material;
+@vertex fn vs_main(@location(0) position: vec3<f32>, inst: Instance) -> @builtin(position) vec4<f32> {
+    return frame.projection * frame.view * instance_model(inst) * vec4<f32>(position, 1.0);
+}
+@fragment fn fs_main() -> @location(0) vec4<f32> {
+    return vec4<f32>(material.color.rgb * material.tint.rgb + vec3<f32>(0.0, 0.0, material.m[1].x),
+                     material.color.a);
+}
+"""
+FLAT_VERT = """#version 330 core
+#include "frame.glsl"
+#include "instance.glsl"
+layout(location = 0) in vec3 a_position;
+void main() { gl_Position = u_projection * u_view * instance_model() * vec4(a_position, 1.0); }
+"""
+FLAT_FRAG = """#version 330 core
+uniform vec4 u_color; uniform vec4 u_tint; uniform mat4 u_m;
+out vec4 f_color;
+void main() { f_color = vec4(u_color.rgb * u_tint.rgb + vec3(0.0, 0.0, u_m[1].x), u_color.a); }
+"""
+
+
+def flat_app(backend: str) -> Application:
+    app = Application(backend, 32, 32, headless=True, fixed_dt=1 / 60)
+    if backend == "opengl":
+        app.renderer.shaders.build("flat", FLAT_VERT, FLAT_FRAG)
+    else:
+        app.renderer.shaders.build("flat", FLAT_WGSL)
+    return app
+
+
+def quads_scene(*quads: tuple[str, float, dict], sky: bool = False) -> Scene:
+    """Full-screen quads at depth z (further is more negative), each with its own material."""
+    from gandalf_core.resources import quad
+
+    scene = Scene("quads")
+    scene.assets.mesh("quad", quad(10.0))
+    scene.create_entity(ClearColorComponent((0.0, 0.0, 1.0)))
+    if sky:
+        scene.assets.texture("sky", sky_cube(8))
+        scene.create_entity(SkyboxComponent("sky"))
+    for name, z, material in quads:
+        scene.assets.material(name, MaterialData("flat", **{"params": {"tint": (1, 1, 1, 1)}, **material}))
+        scene.create_entity(TransformComponent((0, 0, z)), MeshComponent("quad"), MaterialComponent(name))
+    add_camera(scene, eye=(0, 0, 2), far=50.0)
+    return scene
+
+
+def centre(backend: str, scene: Scene) -> np.ndarray:
+    with flat_app(backend) as app:
+        app.add_scene(scene)
+        app.run(frames=1)
+        return app.capture()[16, 16].astype(int)
+
+
+def test_transparent_surfaces_are_drawn_after_opaque_ones_and_the_sky(backend):
+    glass = {"color": (1, 0, 0, 0.5), "blend": "alpha", "depth_write": False}
+    # The glass's material sorts first by name, and it is nearer: it must still blend over the wall.
+    pixel = centre(backend, quads_scene(("a_glass", -1.0, glass), ("b_wall", -5.0, {"color": (0, 1, 0)})))
+    assert pixel[0] > 150 and pixel[1] > 150 and pixel[3] == 255  # red over green, and an opaque target
+    with_sky = centre(backend, quads_scene(("a_glass", -1.0, glass), sky=True))
+    assert with_sky[0] > 150 and with_sky[1] > 80  # red over the sky, not the sky drawn over the glass
+
+
+def test_depth_test_off_still_writes_depth_in_both_backends(backend):
+    near = {"color": (1, 0, 0), "depth_test": False, "depth_write": True}
+    # Drawn first (name order), the red quad without a depth test still hides the green one behind it.
+    pixel = centre(backend, quads_scene(("a_near", -1.0, near), ("b_far", -5.0, {"color": (0, 1, 0)})))
+    assert pixel[:3].tolist() == [255, 0, 0]
+
+
+def test_matrix_params_and_missing_members_reach_the_shader_alike(backend):
+    m = np.eye(4)
+    m[0, 1] = 1.0  # row 0, column 1: GLSL's u_m[1].x and WGSL's material.m[1].x
+    material = {"color": (1, 0, 0), "params": {"tint": (1, 1, 1, 1), "m": m.ravel()}}
+    pixel = centre(backend, quads_scene(("a", -1.0, material)))
+    assert pixel[:3].tolist() == [255, 0, 255]
+    untinted = centre(backend, quads_scene(("a", -1.0, {"color": (1, 0, 0), "params": {}})))
+    assert untinted[:3].tolist() == [0, 0, 0]  # a member with no value is zero in both
+
+
+def test_a_material_with_the_wrong_number_of_textures_is_named(backend):
+    from gandalf_core.resources import ResourceError
+
+    scene = cubes_scene(1)
+    scene.assets.material("M", MaterialData("unlit"))  # unlit samples one texture
+    with make_app(backend) as app:
+        app.add_scene(scene)
+        with pytest.raises(ResourceError, match="material 'M': textures: 0 texture"):
+            app.step()
+
+
+def test_material_values_must_be_finite(backend):
+    from gandalf_core.resources import ResourceError
+
+    with make_app(backend) as app:
+        app.add_scene(cubes_scene(1))
+        app.step()
+        with pytest.raises(ResourceError, match="material 'M': color"):
+            app.renderer.materials.get("M").set_color((float("nan"), 0, 0))
+
+
+def test_ambient_lights_count_even_past_the_light_limit():
+    from gandalf_core.render.frame import MAX_LIGHTS
+    from gandalf_core.systems import pack_lights
+
+    pairs = [(LightComponent("point"), TransformComponent()) for _ in range(MAX_LIGHTS + 1)]
+    pairs.append((LightComponent("ambient", (1, 1, 1), 0.5), TransformComponent()))
+    with pytest.warns(UserWarning, match=f"only the first {MAX_LIGHTS}"):
+        block = np.frombuffer(pack_lights(pairs), np.float32)
+    assert block[:4].view(np.int32)[0] == MAX_LIGHTS
+    assert np.allclose(block[4:7], 0.5)
+
+
+@pytest.mark.parametrize("aspect", [-1.0, 0.0, float("nan")])
+def test_orthographic_camera_rejects_a_bad_aspect(aspect):
+    with pytest.raises(ValueError, match="CameraComponent.aspect"):
+        CameraComponent(projection="orthographic", aspect=aspect)
+
+
+def test_light_fields_are_checked_when_set_later():
+    light = LightComponent("point")
+    for field, value in [("intensity", float("nan")), ("color", (1, float("inf"), 0)), ("kind", "spot"),
+                         ("range", -1.0)]:
+        with pytest.raises(ValueError, match=f"LightComponent.{field}"):
+            setattr(light, field, value)

@@ -249,3 +249,13 @@ def test_hundred_thousand_entities_update() -> None:
         np.testing.assert_allclose(
             scene.get_component(entity, TransformComponent).world, world_matrix(scene, entity), atol=1e-9
         )
+
+
+def test_a_non_finite_value_written_through_a_view_names_the_entity() -> None:
+    scene = Scene("nan")
+    scene.create_entity(InfoComponent("fine"), TransformComponent())
+    broken = scene.create_entity(InfoComponent("broken"), TransformComponent())
+    system = scene.add_system(TransformSystem())
+    scene.get_component(broken, TransformComponent).translation[1] = float("nan")
+    with pytest.raises(ValueError, match=r"entity 'broken'.*TransformComponent.translation is not finite"):
+        system.on_update_system(0.0)

@@ -18,13 +18,15 @@ from typing import Any
 import moderngl
 import numpy as np
 
-from ...resources import CubeTextureData, MaterialData, MeshData, ShaderSource, TextureData
-from ..color import srgb_rgba_to_linear
+from ...resources import CubeTextureData, MaterialData, MeshData, ResourceError, ShaderSource, TextureData
 from ..errors import ShaderCompileError
 from ..library import ResourceLib
+from ..material_values import MaterialValues
 from ..shader_files import load_shader
 
 GL_SRGB8_ALPHA8 = 0x8C43
+# GL_FLOAT_MAT2, _MAT3, _MAT4 -> size
+_GL_MATRIX_SIZES = {0x8B5A: 2, 0x8B5B: 3, 0x8B5C: 4}
 # The engine's uniform blocks and their binding points (the same numbers as WGSL's @group(0) bindings).
 UNIFORM_BLOCKS = {"Frame": 0, "Lights": 1}
 GL_RGBA8 = 0x8058
@@ -76,7 +78,7 @@ class GLShader:
     name: str
     program: moderngl.Program
     attributes: dict[int, str]  # location -> attribute name in the shader
-    samplers: list[str]  # sampler uniforms in declaration order
+    samplers: list[str]  # sampler uniforms in declaration order (texture unit = index)
     uniforms: set[str] = field(default_factory=set)
 
 
@@ -129,10 +131,12 @@ class ShaderLib(ResourceLib[GLShader]):
                 uniforms.add(member)
             elif isinstance(obj, moderngl.UniformBlock) and member in UNIFORM_BLOCKS:
                 obj.binding = UNIFORM_BLOCKS[member]
-        declared = [name for src in stages.values() for name in _declared_samplers(src.text)]
-        samplers = [s for s in dict.fromkeys(declared) if s in uniforms]
+        # Texture unit i belongs to the i-th sampler declared (also one the compiler dropped as unused, so
+        # a material's textures line up with the source the student reads, as with WGSL bindings).
+        samplers = list(dict.fromkeys(name for src in stages.values() for name in _declared_samplers(src.text)))
         for unit, sampler in enumerate(samplers):
-            program[sampler].value = unit
+            if sampler in uniforms:
+                program[sampler].value = unit
         shader = GLShader(name, program, attributes, samplers, uniforms)
         self._items[name] = shader
         self._data[name] = stages
@@ -216,28 +220,39 @@ class MeshLib(ResourceLib[GLMesh]):
 
 
 # --- materials ------------------------------------------------------------------------------------
-class GLMaterial:
-    """A material instance: its shader, textures and uniform values (changeable without rebuilding)."""
+class GLMaterial(MaterialValues):
+    """A material instance: its shader, textures and uniform values (changeable without rebuilding).
+
+    A value reaches the uniform ``u_<name>`` when the program has one (unused uniforms are optimised away);
+    a matrix given as 9 or 16 row-major floats is transposed into GL's column-major order.
+    """
 
     def __init__(self, name: str, data: MaterialData, shader: GLShader, textures: list[Any]) -> None:
+        if len(textures) != len(shader.samplers):
+            raise ResourceError(
+                f"material '{name}'", "textures",
+                f"{len(textures)} texture(s) given but shader '{shader.name}' samples {len(shader.samplers)} "
+                f"({', '.join(shader.samplers) or 'none'})",
+            )
         self.name, self.data, self.shader, self.textures = name, data, shader, textures
         self.set_values(data.uniform_values())
 
-    def set_values(self, values: dict[str, Any]) -> None:
-        """Update uniform values; ``color`` is sRGB and stored linear, as in the WebGPU backend."""
-        self.values = {k: np.asarray(v, dtype=np.float64) for k, v in values.items()}
-        if "color" in self.values:
-            self.values["color"] = srgb_rgba_to_linear(self.values["color"])
-
-    def set_color(self, color: Any) -> None:
-        self.set_values({**{k: v for k, v in self.values.items() if k != "color"}, "color": color})
-
-    def apply(self) -> None:
+    def _upload(self) -> None:
+        self._uniforms = []
         program = self.shader.program
         for key, value in self.values.items():
-            uniform = f"u_{key}"
-            if uniform in self.shader.uniforms:
-                program[uniform].value = tuple(value.ravel()) if value.size > 1 else float(value)
+            uniform_name = f"u_{key}"
+            if uniform_name not in self.shader.uniforms:
+                continue
+            uniform = program[uniform_name]
+            if uniform.gl_type in _GL_MATRIX_SIZES:
+                n = _GL_MATRIX_SIZES[uniform.gl_type]
+                value = value.reshape(n, n).T
+            self._uniforms.append((uniform, tuple(value.ravel()) if value.size > 1 else float(value)))
+
+    def apply(self) -> None:
+        for uniform, value in self._uniforms:
+            uniform.value = value
         for unit, texture in enumerate(self.textures):
             texture.use(location=unit)
 

@@ -15,16 +15,20 @@ from ...resources import MaterialData
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
 from ..base import Renderer
-from ..frame import FRAME_FLOATS, INSTANCE_FLOATS, LIGHTS_BYTES, FrameData
+from ..frame import (
+    FRAME_FLOATS,
+    INSTANCE_STRIDE,
+    LIGHTS_BYTES,
+    SKY_SHADER,
+    SKY_STATE,
+    FrameData,
+    instance_capacity,
+)
 from ..shader_files import SNIPPETS_DIR
-from .libs import GLMesh, GLShader, MaterialLib, MeshLib, ShaderLib, TextureLib
+from .libs import GL_SRGB8_ALPHA8, GLMesh, GLShader, MaterialLib, MeshLib, ShaderLib, TextureLib
 
 GL_FRAMEBUFFER_SRGB = 0x8DB9
-GL_SRGB8_ALPHA8 = 0x8C43
-INSTANCE_STRIDE = INSTANCE_FLOATS * 4
-SKY_SHADER = "gandalf.skybox"
-# The sky is drawn where nothing else is: depth test at the far plane, no depth writes, no culling.
-SKY_STATE = MaterialData(SKY_SHADER, cull="none", depth_write=False, name="sky")
+GL_TEXTURE_CUBE_MAP_SEAMLESS = 0x884F
 
 
 class OpenGLRenderer(Renderer):
@@ -51,6 +55,8 @@ class OpenGLRenderer(Renderer):
         self._vaos: dict[tuple[str, str], moderngl.VertexArray] = {}
         self._state: tuple[Any, ...] | None = None
         self._fbo: moderngl.Framebuffer | None = None
+        # Filter across cube faces, as WebGPU always does (no seams in skyboxes and reflections).
+        self.ctx.enable_direct(GL_TEXTURE_CUBE_MAP_SEAMLESS)
         self._create_targets()
 
     # --- targets ----------------------------------------------------------------------------------
@@ -91,7 +97,11 @@ class OpenGLRenderer(Renderer):
         if data.batches:
             self._upload_instances(data.instances)
         self._state = None
+        sky_drawn = data.skybox is None
         for batch in data.batches:
+            if batch.transparent and not sky_drawn:
+                self._draw_sky(data.skybox, assets, data.reverse_z)
+                sky_drawn = True
             material = self.resolve_material(batch.material, assets)
             mesh = self.resolve_mesh(batch.mesh, assets)
             self._apply_state(material.data, data.reverse_z)
@@ -104,7 +114,7 @@ class OpenGLRenderer(Renderer):
                              stride=INSTANCE_STRIDE, divisor=1)
             vao.render(moderngl.TRIANGLES, vertices=mesh.count, instances=batch.count)
             self.stats["draw_calls"] += 1
-        if data.skybox is not None:
+        if not sky_drawn:
             self._draw_sky(data.skybox, assets, data.reverse_z)
         for overlay in self.overlays:
             overlay(self)
@@ -128,7 +138,7 @@ class OpenGLRenderer(Renderer):
         if self._instance_buffer is None or self._instance_buffer.size < nbytes:
             if self._instance_buffer is not None:
                 self._instance_buffer.release()
-            capacity = 1 << max(12, (nbytes - 1).bit_length())  # grow by powers of two
+            capacity = instance_capacity(nbytes)
             self._instance_buffer = self.ctx.buffer(reserve=capacity, dynamic=True)
             self.stats["buffers_created"] += 1
         else:
@@ -146,19 +156,20 @@ class OpenGLRenderer(Renderer):
         else:
             ctx.enable(moderngl.CULL_FACE)
             ctx.cull_face = data.cull
-        if data.depth_test:
-            ctx.enable(moderngl.DEPTH_TEST)
-            ctx.depth_func = ">=" if reverse_z else "<="
-        else:
-            ctx.disable(moderngl.DEPTH_TEST)
+        # The depth test stays on even when "off" (it then always passes): disabling GL_DEPTH_TEST would also
+        # stop depth writes, which WebGPU's compare "always" keeps.
+        ctx.enable(moderngl.DEPTH_TEST)
+        ctx.depth_func = (">=" if reverse_z else "<=") if data.depth_test else "1"
         self._fbo.depth_mask = data.depth_write
         if data.blend == "opaque":
             ctx.disable(moderngl.BLEND)
         else:
             ctx.enable(moderngl.BLEND)
+            # Separate alpha factors, as WebGPU's blend states: the target's alpha stays a coverage value.
             ctx.blend_func = (
-                (moderngl.SRC_ALPHA, moderngl.ONE_MINUS_SRC_ALPHA) if data.blend == "alpha"
-                else (moderngl.SRC_ALPHA, moderngl.ONE)
+                (moderngl.SRC_ALPHA, moderngl.ONE_MINUS_SRC_ALPHA, moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA)
+                if data.blend == "alpha"
+                else (moderngl.SRC_ALPHA, moderngl.ONE, moderngl.ONE, moderngl.ONE)
             )
         self._state = state
 
@@ -204,12 +215,15 @@ class OpenGLRenderer(Renderer):
     def live_objects(self) -> int:
         """GPU objects this renderer holds now (for leak tests)."""
         libraries = (self.textures, self.shaders, self.meshes, self.materials)
-        return len(self._vaos) + sum(len(lib) for lib in libraries)
+        return len(self._vaos) + (self._sky is not None) + sum(len(lib) for lib in libraries)
 
     def release(self) -> None:
         for vao in self._vaos.values():
             vao.release()
         self._vaos.clear()
+        if self._sky is not None:
+            self._sky[1].release()
+            self._sky = None
         for lib in (self.materials, self.meshes, self.shaders, self.textures):
             lib.release()
         if self._instance_buffer is not None:

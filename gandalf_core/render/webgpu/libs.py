@@ -21,10 +21,10 @@ from typing import Any
 import numpy as np
 import wgpu
 
-from ...resources import CubeTextureData, MaterialData, MeshData, ShaderSource, TextureData
-from ..color import srgb_rgba_to_linear
+from ...resources import CubeTextureData, MaterialData, MeshData, ResourceError, ShaderSource, TextureData
 from ..errors import ShaderCompileError
 from ..library import ResourceLib
+from ..material_values import MaterialValues
 from ..shader_files import load_shader
 from ..wgsl_reflect import Binding, ShaderReflection, WGSLReflectError, reflect
 
@@ -229,8 +229,12 @@ class MeshLib(ResourceLib[WGPUMesh]):
 
 
 # --- materials ------------------------------------------------------------------------------------
-class WGPUMaterial:
-    """A material instance: uniform buffer + bind group; values change without touching any pipeline."""
+class WGPUMaterial(MaterialValues):
+    """A material instance: uniform buffer + bind group; values change without touching any pipeline.
+
+    The uniform struct's members are filled by name from the material's colour and params (a member
+    without a value is zero; a matrix may be given as 9 or 16 row-major floats).
+    """
 
     def __init__(self, name: str, data: MaterialData, shader: WGPUShader, textures: list[WGPUTexture],
                  device: Any) -> None:
@@ -240,9 +244,10 @@ class WGPUMaterial:
         entries = []
         texture_slots = [b for b in shader.material_bindings if b.kind == "texture"]
         if len(texture_slots) != len(textures):
-            raise ShaderCompileError(
-                f"material '{name}' has {len(textures)} texture(s) but shader '{shader.name}' "
-                f"({shader.source.filename}) declares {len(texture_slots)} in @group(1)"
+            raise ResourceError(
+                f"material '{name}'", "textures",
+                f"{len(textures)} texture(s) given but shader '{shader.name}' ({shader.source.filename}) declares "
+                f"{len(texture_slots)} in @group(1) ({', '.join(b.name for b in texture_slots) or 'none'})",
             )
         next_texture = iter(textures)
         current: WGPUTexture | None = None
@@ -269,19 +274,27 @@ class WGPUMaterial:
         )
         self.set_values(data.uniform_values())
 
-    def set_values(self, values: dict[str, Any]) -> None:
-        """Write uniform values; ``color`` is sRGB and stored linear, as in the OpenGL backend."""
-        self.values = {k: np.asarray(v, dtype=np.float64) for k, v in values.items()}
-        if "color" in self.values:
-            self.values["color"] = srgb_rgba_to_linear(self.values["color"])
-        if self._struct is not None:
-            names = {f.name for f in self._struct.fields}
-            packed = self._struct.pack({k: v for k, v in self.values.items() if k in names}
-                                       | {f: 0.0 for f in names - set(self.values)})
-            self.device.queue.write_buffer(self.uniform_buffer, 0, packed)
-
-    def set_color(self, color: Any) -> None:
-        self.set_values({**{k: v for k, v in self.values.items() if k != "color"}, "color": color})
+    def _upload(self) -> None:
+        struct = self._struct
+        if struct is None:
+            return
+        members = {}
+        for f in struct.fields:
+            shape = struct.shape_of(f.name)
+            value = self.values.get(f.name)
+            if shape is None:
+                raise ResourceError(f"material '{self.name}'", f.name,
+                                    f"member of type {f.type} in struct {struct.name}: materials fill numbers only")
+            if value is None:
+                value = np.zeros(shape)
+            elif value.shape != shape and value.size == int(np.prod(shape)):
+                value = value.reshape(shape)  # e.g. a matrix given as flat row-major floats
+            members[f.name] = value
+        try:
+            packed = struct.pack(members)
+        except (KeyError, ValueError) as exc:
+            raise ResourceError(f"material '{self.name}'", "params", str(exc)) from None
+        self.device.queue.write_buffer(self.uniform_buffer, 0, packed)
 
 
 class MaterialLib(ResourceLib[WGPUMaterial]):

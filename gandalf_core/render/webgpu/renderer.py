@@ -17,17 +17,21 @@ from ...resources import MaterialData
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
 from ..base import Renderer
-from ..frame import FRAME_FLOATS, INSTANCE_FLOATS, LIGHTS_BYTES, FrameData
+from ..frame import (
+    FRAME_FLOATS,
+    INSTANCE_STRIDE,
+    LIGHTS_BYTES,
+    SKY_SHADER,
+    SKY_STATE,
+    FrameData,
+    instance_capacity,
+)
 from ..shader_files import SNIPPETS_DIR
 from .device import request_device
 from .libs import MaterialLib, MeshLib, ShaderLib, TextureLib, WGPUMaterial, WGPUMesh, WGPUShader
 
 COLOR_FORMAT = "rgba8unorm-srgb"
 DEPTH_FORMAT = "depth32float"
-INSTANCE_STRIDE = INSTANCE_FLOATS * 4
-SKY_SHADER = "gandalf.skybox"
-# The sky is drawn where nothing else is: depth test at the far plane, no depth writes, no culling.
-SKY_STATE = MaterialData(SKY_SHADER, cull="none", depth_write=False, name="sky")
 _BLEND = {
     "alpha": {"color": {"src_factor": "src-alpha", "dst_factor": "one-minus-src-alpha", "operation": "add"},
               "alpha": {"src_factor": "one", "dst_factor": "one-minus-src-alpha", "operation": "add"}},
@@ -52,8 +56,14 @@ class WebGPURenderer(Renderer):
             self._surface = wgpu.gpu.get_canvas_context(get_glfw_present_info(window.handle, vsync=False))
         self.adapter, self.device = request_device(self._surface)
         if self._surface is not None:
-            self._surface_format = self._surface.get_preferred_format(self.adapter)
-            self._surface.configure(device=self.device, format=self._surface_format)
+            # The blit samples the sRGB frame as linear light; an -srgb surface encodes it back unchanged.
+            preferred = self._surface.get_preferred_format(self.adapter)
+            self._surface_format = preferred if preferred.endswith("-srgb") else f"{preferred}-srgb"
+            try:
+                self._surface.configure(device=self.device, format=self._surface_format)
+            except ValueError:  # this surface offers no sRGB variant
+                self._surface_format = preferred
+                self._surface.configure(device=self.device, format=self._surface_format)
             self._surface.set_physical_size(*window.framebuffer_size)
             self._present = _PresentBlit(self.device, self._surface_format)
         # Group 0 is the engine's, shared by every pipeline: frame uniforms (0) and lights (1).
@@ -121,7 +131,18 @@ class WebGPURenderer(Renderer):
         )
         rpass.set_bind_group(0, self._frame_group)
         # --8<-- [end:clear]
+
+        def draw_sky() -> None:
+            pipeline, bind_group = sky
+            rpass.set_pipeline(pipeline)
+            rpass.set_bind_group(1, bind_group)
+            rpass.draw(3)
+            self.stats["draw_calls"] += 1
+
         for batch, material, mesh, (pipeline, attributes) in draws:
+            if batch.transparent and sky is not None:  # the sky goes behind blended surfaces
+                draw_sky()
+                sky = None
             rpass.set_pipeline(pipeline)
             if material.bind_group is not None:
                 rpass.set_bind_group(1, material.bind_group)
@@ -139,11 +160,7 @@ class WebGPURenderer(Renderer):
                 rpass.draw(mesh.count, batch.count)
             self.stats["draw_calls"] += 1
         if sky is not None:
-            pipeline, bind_group = sky
-            rpass.set_pipeline(pipeline)
-            rpass.set_bind_group(1, bind_group)
-            rpass.draw(3)
-            self.stats["draw_calls"] += 1
+            draw_sky()
         rpass.end()
         for overlay in self.overlays:
             overlay(self, encoder)
@@ -176,7 +193,7 @@ class WebGPURenderer(Renderer):
         if self._instance_buffer is None or self._instance_buffer.size < nbytes:
             if self._instance_buffer is not None:
                 self._instance_buffer.destroy()
-            capacity = 1 << max(12, (nbytes - 1).bit_length())  # grow by powers of two
+            capacity = instance_capacity(nbytes)
             self._instance_buffer = self.device.create_buffer(
                 size=capacity, usage=wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.COPY_DST
             )
@@ -187,7 +204,7 @@ class WebGPURenderer(Renderer):
         shader = material.shader
         attributes = mesh_attributes(shader.name, shader.attributes)
         data = material.data
-        key = (shader.name, attributes, data.cull, data.depth_test, data.depth_write, data.blend, reverse_z)
+        key = (*data.pipeline_key(), attributes, reverse_z)
         pipeline = self._pipelines.get(key)
         if pipeline is None:
             buffers = []
@@ -256,12 +273,13 @@ class WebGPURenderer(Renderer):
     def live_objects(self) -> int:
         """GPU objects this renderer holds now (for leak tests)."""
         libraries = (self.textures, self.shaders, self.meshes, self.materials)
-        return len(self._pipelines) + sum(len(lib) for lib in libraries)
+        return len(self._pipelines) + len(self._sky_materials) + sum(len(lib) for lib in libraries)
 
     def release(self) -> None:
         for lib in (self.materials, self.meshes, self.shaders, self.textures):
             lib.release()
         self._pipelines.clear()
+        self._sky_materials.clear()
         if self._instance_buffer is not None:
             self._instance_buffer.destroy()
         self._frame_buffer.destroy()

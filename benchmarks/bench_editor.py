@@ -1,0 +1,98 @@
+"""What the editor costs: frames per second with and without it, per backend.
+
+The scene is ``bench_scenes.py``'s scene5 (100 lit rotating cubes); the editor shows its four
+panels with a cube selected, so the inspector draws its widgets too. Both modes run in the same
+process, alternating in rounds so that drift of a shared machine hits both alike; every frame ends with a
+1-pixel read-back so the GPU has finished it. One JSON line per backend and mode, then the ratio.
+
+Run by hand, never in CI::
+
+    python benchmarks/bench_editor.py                        # both backends, 1280x720, 300 frames
+    python benchmarks/bench_editor.py --size 640x480 --frames 200 --backends opengl
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import statistics
+import sys
+import time
+from pathlib import Path
+from typing import Any
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+sys.path.insert(0, str(HERE.parent))
+
+from bench_scenes import build_scene, renderer_name  # noqa: E402
+
+SHADERS = HERE / "shaders"
+
+
+def make_app(backend: str, width: int, height: int) -> Any:
+    """A headless app running scene5 with the benchmark's lit shader."""
+    from gandalf_core import Application
+
+    app = Application(backend, width, height, headless=True)
+    if backend == "opengl":
+        app.renderer.shaders.build("lit", SHADERS / "lit.vert", SHADERS / "lit.frag")
+    else:
+        app.renderer.shaders.build("lit", SHADERS / "lit.wgsl")
+    scene, _mesh = build_scene(100, True, "cube", "batch")
+    app.add_scene(scene)
+    return app
+
+
+def timed_frames(app: Any, frames: int) -> float:
+    """Seconds for ``frames`` frames, each waited for with a 1-pixel read-back."""
+    r = app.renderer
+    start = time.perf_counter()
+    for _ in range(frames):
+        app.step()
+        r.read_pixel(r.width // 2, r.height // 2)
+    return time.perf_counter() - start
+
+
+def measure(backend: str, width: int, height: int, frames: int, rounds: int) -> dict[str, Any]:
+    from gandalf_core.components import MeshComponent
+    from gandalf_core.editor import disable_editor, enable_editor
+
+    app = make_app(backend, width, height)
+    app.run(frames=20)  # build pipelines and resources before timing
+    cube = next(e for e, _ in app.scene.view(MeshComponent))
+    times: dict[str, list[float]] = {"off": [], "on": []}
+    for _ in range(rounds):
+        times["off"].append(timed_frames(app, frames))
+        editor = enable_editor(app)
+        editor.selected = cube
+        app.run(frames=10)  # the GUI's font atlas and buffers, before timing
+        times["on"].append(timed_frames(app, frames))
+        disable_editor(app)
+    result = {"backend": backend, "renderer": renderer_name(app), "size": f"{width}x{height}", "frames": frames}
+    for mode, seconds in times.items():
+        best = min(seconds)  # the least disturbed round
+        result[f"fps_{mode}"] = round(frames / best, 1)
+        result[f"ms_{mode}"] = round(1000.0 * best / frames, 3)
+        result[f"fps_{mode}_median"] = round(frames / statistics.median(seconds), 1)
+    result["cost_percent"] = round(100.0 * (1.0 - result["fps_on"] / result["fps_off"]), 1)
+    result["added_ms"] = round(result["ms_on"] - result["ms_off"], 3)
+    app.close()
+    return result
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--backends", default="opengl,webgpu")
+    parser.add_argument("--size", default="1280x720", help="WIDTHxHEIGHT")
+    parser.add_argument("--frames", type=int, default=300)
+    parser.add_argument("--rounds", type=int, default=3)
+    args = parser.parse_args(argv)
+    width, height = (int(v) for v in args.size.lower().split("x"))
+    for backend in args.backends.split(","):
+        print(json.dumps(measure(backend.strip(), width, height, args.frames, args.rounds)), flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

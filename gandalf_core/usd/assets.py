@@ -1,0 +1,202 @@
+"""Scene assets in USD: meshes (UsdGeom.Mesh), materials (UsdShade.Material) and textures (PNG files).
+
+Mesh attribute data is float32 in both gandalf and USD, so it round-trips exactly. gandalf's UVs have v = 0 at
+the top of the image; USD's ``st`` has t = 0 at the bottom, so ``t = 1 - v`` both ways (computed in float64;
+stored as texCoord2f when that is exact for every vertex, else as texCoord2d).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+from pxr import Sdf, Usd, UsdGeom, UsdShade, Vt
+
+from ..resources import CubeTextureData, MaterialData, MeshData, ResourceError, TextureData
+from .attributes import FileContext, numeric_array, read, read_floats, write
+from .mapping import CUBE_FACE_SUFFIXES
+
+T = Sdf.ValueTypeNames
+_MAX_INDEX = 2**31 - 1  # faceVertexIndices is int[]
+
+
+# --- meshes -------------------------------------------------------------------------------------------
+def write_mesh(stage: Usd.Stage, path: str, name: str, mesh: MeshData) -> None:
+    usd = UsdGeom.Mesh.Define(stage, path)
+    prim = usd.GetPrim()
+    write(prim, "gandalf:name", T.String, name)
+    write(prim, "gandalf:meshName", T.String, mesh.name)
+    write(prim, "gandalf:indexed", T.Bool, mesh.indices is not None)
+    usd.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
+    usd.CreatePointsAttr(Vt.Vec3fArray.FromNumpy(mesh.positions))
+    tri = mesh.triangles()
+    if tri.size and int(tri.max()) > _MAX_INDEX:
+        raise ValueError(f"mesh '{name}' has indices beyond USD's int range")
+    usd.CreateFaceVertexCountsAttr(Vt.IntArray.FromNumpy(np.full(len(tri), 3, dtype=np.int32)))
+    usd.CreateFaceVertexIndicesAttr(Vt.IntArray.FromNumpy(tri.reshape(-1).astype(np.int32)))
+    primvars = UsdGeom.PrimvarsAPI(usd)
+    if mesh.normals is not None:
+        usd.CreateNormalsAttr(Vt.Vec3fArray.FromNumpy(mesh.normals))
+        usd.SetNormalsInterpolation(UsdGeom.Tokens.vertex)
+    if mesh.uvs is not None:
+        st = mesh.uvs.astype(np.float64)
+        st[:, 1] = 1.0 - st[:, 1]
+        st32 = st.astype(np.float32)
+        back = st32.astype(np.float64)
+        back[:, 1] = 1.0 - back[:, 1]
+        if np.array_equal(back.astype(np.float32), mesh.uvs):
+            primvars.CreatePrimvar("st", T.TexCoord2fArray, UsdGeom.Tokens.vertex).Set(Vt.Vec2fArray.FromNumpy(st32))
+        else:
+            primvars.CreatePrimvar("st", T.TexCoord2dArray, UsdGeom.Tokens.vertex).Set(Vt.Vec2dArray.FromNumpy(st))
+    if mesh.tangents is not None:
+        primvars.CreatePrimvar("tangents", T.Float4Array, UsdGeom.Tokens.vertex).Set(
+            Vt.Vec4fArray.FromNumpy(mesh.tangents)
+        )
+    if mesh.colors is not None:
+        rgb = np.ascontiguousarray(mesh.colors[:, :3])
+        alpha = np.ascontiguousarray(mesh.colors[:, 3])
+        usd.CreateDisplayColorPrimvar(UsdGeom.Tokens.vertex).Set(Vt.Vec3fArray.FromNumpy(rgb))
+        usd.CreateDisplayOpacityPrimvar(UsdGeom.Tokens.vertex).Set(Vt.FloatArray.FromNumpy(alpha))
+
+
+def read_mesh(ctx: FileContext, prim: Usd.Prim) -> tuple[str, MeshData]:
+    name = read(ctx, prim, "gandalf:name", "string", prim.GetName())
+    positions = numeric_array(ctx, prim, "points", ("point3f[]", "float3[]"), np.float32, 3)
+    counts = numeric_array(ctx, prim, "faceVertexCounts", "int[]", np.int64, None)
+    indices = numeric_array(ctx, prim, "faceVertexIndices", "int[]", np.int64, None)
+    if (counts != 3).any():
+        raise ctx.fail(prim, "faceVertexCounts", "only triangle meshes are supported (every count must be 3)")
+    if indices.size != counts.size * 3:
+        raise ctx.fail(prim, "faceVertexIndices", f"has {indices.size} indices for {counts.size} triangles")
+    fields: dict[str, object] = {"positions": positions}
+    fields["normals"] = numeric_array(ctx, prim, "normals", ("normal3f[]", "float3[]"), np.float32, 3, None)
+    st = numeric_array(ctx, prim, "primvars:st", ("texCoord2f[]", "texCoord2d[]", "float2[]"), np.float64, 2, None)
+    if st is not None:
+        st[:, 1] = 1.0 - st[:, 1]
+        fields["uvs"] = st.astype(np.float32)
+    fields["tangents"] = numeric_array(ctx, prim, "primvars:tangents", "float4[]", np.float32, 4, None)
+    rgb = numeric_array(ctx, prim, "primvars:displayColor", ("color3f[]", "float3[]"), np.float32, 3, None)
+    if rgb is not None:
+        alpha = numeric_array(ctx, prim, "primvars:displayOpacity", "float[]", np.float32, None, None)
+        alpha = np.ones(len(rgb), np.float32) if alpha is None else alpha
+        if alpha.shape != (len(rgb),):
+            raise ctx.fail(prim, "primvars:displayOpacity", f"has {alpha.size} values for {len(rgb)} colours")
+        fields["colors"] = np.concatenate([rgb, alpha[:, None]], axis=1)
+    if read(ctx, prim, "gandalf:indexed", "bool", True):
+        fields["indices"] = indices.astype(np.int64)
+    elif not np.array_equal(indices, np.arange(len(positions))):
+        raise ctx.fail(prim, "faceVertexIndices", "a mesh saved without indices must list 0, 1, 2, ... in order")
+    try:
+        return name, MeshData(**fields, name=read(ctx, prim, "gandalf:meshName", "string", name))
+    except ResourceError as exc:
+        raise ctx.fail(prim, exc.field, exc.detail) from None
+
+
+# --- materials ----------------------------------------------------------------------------------------
+_PARAMS = "inputs:gandalf:params:"
+
+
+def write_material(stage: Usd.Stage, path: str, name: str, material: MaterialData) -> None:
+    usd = UsdShade.Material.Define(stage, path)
+    prim = usd.GetPrim()
+    write(prim, "gandalf:name", T.String, name)
+    inputs = {
+        "shader": (T.String, material.shader),
+        "materialName": (T.String, material.name),
+        "textures": (T.StringArray, list(material.textures)),
+        "color": (T.Double4, material.color),
+        "cull": (T.String, material.cull),
+        "depthTest": (T.Bool, material.depth_test),
+        "depthWrite": (T.Bool, material.depth_write),
+        "blend": (T.String, material.blend),
+    }
+    for key, (type_name, value) in inputs.items():
+        usd.CreateInput(f"gandalf:{key}", type_name).Set(value)
+    for key, value in material.params.items():
+        # A float stays a double, a sequence a double[] (even of length 1), so the type round-trips too.
+        if isinstance(value, float):
+            usd.CreateInput(f"gandalf:params:{key}", T.Double).Set(value)
+        else:
+            usd.CreateInput(f"gandalf:params:{key}", T.DoubleArray).Set(Vt.DoubleArray(list(value)))
+
+
+def read_material(ctx: FileContext, prim: Usd.Prim) -> tuple[str, MaterialData]:
+    name = read(ctx, prim, "gandalf:name", "string", prim.GetName())
+    params: dict[str, object] = {}
+    for attr in prim.GetAuthoredAttributes():
+        attr_name = attr.GetName()
+        if attr_name.startswith(_PARAMS):
+            if str(attr.GetTypeName()) == "double[]":
+                params[attr_name[len(_PARAMS):]] = tuple(read_floats(ctx, prim, attr_name, ("double[]",), None))
+            else:
+                params[attr_name[len(_PARAMS):]] = float(read(ctx, prim, attr_name, "double"))
+    g = "inputs:gandalf:"
+    try:
+        return name, MaterialData(
+            shader=read(ctx, prim, g + "shader", "string"),
+            textures=list(read(ctx, prim, g + "textures", "string[]", [])),
+            color=tuple(read_floats(ctx, prim, g + "color", ("double4",), 4)),
+            params=params,
+            cull=read(ctx, prim, g + "cull", "string", "back"),
+            depth_test=read(ctx, prim, g + "depthTest", "bool", True),
+            depth_write=read(ctx, prim, g + "depthWrite", "bool", True),
+            blend=read(ctx, prim, g + "blend", "string", "opaque"),
+            name=read(ctx, prim, g + "materialName", "string", ""),
+        )
+    except ResourceError as exc:
+        raise ctx.fail(prim, g + exc.field, exc.detail) from None
+
+
+# --- textures -----------------------------------------------------------------------------------------
+def texture_files(file_stem: str, texture: TextureData | CubeTextureData) -> list[str]:
+    """The PNG file names (inside the textures folder) that hold ``texture``."""
+    if isinstance(texture, CubeTextureData):
+        return [f"{file_stem}_{suffix}.png" for suffix in CUBE_FACE_SUFFIXES]
+    return [f"{file_stem}.png"]
+
+
+def texture_images(texture: TextureData | CubeTextureData) -> list[np.ndarray]:
+    """The images to write, in the order of :func:`texture_files`."""
+    return list(texture.faces) if isinstance(texture, CubeTextureData) else [texture.pixels]
+
+
+def write_texture(stage: Usd.Stage, path: str, name: str, texture: TextureData | CubeTextureData,
+                  relative_files: list[str]) -> None:
+    prim = stage.DefinePrim(path, "Scope")
+    cube = isinstance(texture, CubeTextureData)
+    write(prim, "gandalf:name", T.String, name)
+    write(prim, "gandalf:textureName", T.String, texture.name)
+    write(prim, "gandalf:kind", T.String, "cube" if cube else "2d")
+    write(prim, "gandalf:files", T.AssetArray, Sdf.AssetPathArray([Sdf.AssetPath(f) for f in relative_files]))
+    write(prim, "gandalf:srgb", T.Bool, texture.srgb)
+    write(prim, "gandalf:filter", T.String, texture.filter)
+    write(prim, "gandalf:mipmaps", T.Bool, texture.mipmaps)
+    if not cube:
+        write(prim, "gandalf:wrap", T.String, texture.wrap)
+
+
+def read_texture(ctx: FileContext, prim: Usd.Prim, folder: Path) -> tuple[str, TextureData | CubeTextureData]:
+    name = read(ctx, prim, "gandalf:name", "string", prim.GetName())
+    kind = read(ctx, prim, "gandalf:kind", "string")
+    files = [Path(a.path) for a in read(ctx, prim, "gandalf:files", "asset[]")]
+    expected = 6 if kind == "cube" else 1
+    if kind not in ("cube", "2d") or len(files) != expected:
+        raise ctx.fail(prim, "gandalf:files", f"a '{kind}' texture needs {expected} file(s), got {len(files)}")
+    paths = [f if f.is_absolute() else folder / f for f in files]
+    for f in paths:
+        if f.suffix.lower() != ".png" or not f.is_file():
+            raise ctx.fail(prim, "gandalf:files", f"texture file {str(f)!r} is missing or not a .png")
+    settings = {
+        "srgb": read(ctx, prim, "gandalf:srgb", "bool", True),
+        "filter": read(ctx, prim, "gandalf:filter", "string", "linear"),
+        "mipmaps": read(ctx, prim, "gandalf:mipmaps", "bool", True),
+        "name": read(ctx, prim, "gandalf:textureName", "string", name),
+    }
+    try:
+        if kind == "cube":
+            return name, CubeTextureData.from_files(paths, **settings)
+        return name, TextureData.from_file(paths[0], wrap=read(ctx, prim, "gandalf:wrap", "string", "repeat"),
+                                           **settings)
+    except ResourceError as exc:
+        raise ctx.fail(prim, "gandalf:" + exc.field, exc.detail) from None
+

@@ -1,0 +1,61 @@
+"""The names the USD mapping uses, shared by the writer and the reader (no USD import here).
+
+Layout of a saved scene::
+
+    /Scene                  Xform, the default prim: gandalf:sceneName, gandalf:version, clear colour, skybox
+        /<entity>           one prim per entity (Xform, Camera or a UsdLux light), nested like the Links
+    /Assets                 Scope (invisible)
+        /Meshes/<mesh>      UsdGeom.Mesh
+        /Materials/<mat>    UsdShade.Material with inputs:gandalf:* values
+        /Textures/<tex>     Scope with gandalf:file (a PNG next to the USD file)
+"""
+
+from __future__ import annotations
+
+from ..components import (
+    CameraComponent,
+    ClearColorComponent,
+    InfoComponent,
+    LightComponent,
+    LinkComponent,
+    MaterialComponent,
+    MeshComponent,
+    SkyboxComponent,
+    TransformComponent,
+)
+
+FORMAT_VERSION = 1
+EXTENSIONS = {".usda": "usda", ".usdc": "usdc"}
+
+ROOT = "/Scene"
+ASSETS = "/Assets"
+MESHES = "/Assets/Meshes"
+MATERIALS = "/Assets/Materials"
+TEXTURES = "/Assets/Textures"
+
+BUILTIN_TYPES = (
+    InfoComponent,
+    LinkComponent,
+    TransformComponent,
+    CameraComponent,
+    LightComponent,
+    MeshComponent,
+    MaterialComponent,
+    ClearColorComponent,
+    SkyboxComponent,
+)
+
+# LightComponent.kind <-> UsdLux prim type.
+LIGHT_TYPES = {"point": "SphereLight", "directional": "DistantLight", "ambient": "DomeLight"}
+LIGHT_KINDS = {v: k for k, v in LIGHT_TYPES.items()}
+
+# Camera film back used to express the field of view as focal length / aperture (mm, USD's units for them).
+VERTICAL_APERTURE_MM = 24.0
+DEFAULT_ASPECT = 4.0 / 3.0  # only for the horizontal aperture of cameras whose aspect follows the target
+
+CUBE_FACE_SUFFIXES = ("px", "nx", "py", "ny", "pz", "nz")  # +X, -X, +Y, -Y, +Z, -Z
+
+
+def texture_folder_name(stem: str) -> str:
+    """The folder next to ``<stem>.usda`` that holds its textures."""
+    return f"{stem}_textures"

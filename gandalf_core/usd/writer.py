@@ -1,0 +1,276 @@
+"""Saving a Scene as a USD stage (see :mod:`gandalf_core.usd.mapping` for the layout)."""
+
+from __future__ import annotations
+
+import math
+import uuid
+import warnings
+from pathlib import Path
+
+import numpy as np
+from pxr import Gf, Sdf, Usd, UsdGeom, UsdLux, UsdShade
+
+from ..components import (
+    CameraComponent,
+    ClearColorComponent,
+    InfoComponent,
+    LightComponent,
+    LinkComponent,
+    MaterialComponent,
+    MeshComponent,
+    SkyboxComponent,
+    TransformComponent,
+)
+from ..ecs import Component, Scene
+from ..resources import srgb_to_linear
+from . import assets as asset_prims
+from .atomic import StagedFiles
+from .attributes import simple_value, write
+from .errors import USDSceneError, USDSceneWarning
+from .mapping import (
+    ASSETS,
+    BUILTIN_TYPES,
+    DEFAULT_ASPECT,
+    EXTENSIONS,
+    FORMAT_VERSION,
+    LIGHT_TYPES,
+    MATERIALS,
+    MESHES,
+    ROOT,
+    TEXTURES,
+    VERTICAL_APERTURE_MM,
+    texture_folder_name,
+)
+from .names import UniqueNames
+from .registry import registration_for
+
+T = Sdf.ValueTypeNames
+
+
+def file_format(path: Path) -> str:
+    """'usda' or 'usdc' from the file extension; USDSceneError for anything else."""
+    fmt = EXTENSIONS.get(path.suffix.lower())
+    if fmt is None:
+        raise USDSceneError(path, f"unsupported extension {path.suffix!r}: use .usda (text) or .usdc (binary)")
+    return fmt
+
+
+def save_scene(scene: Scene, path: str | Path, *, assets: bool = True) -> Path:
+    """Write ``scene`` to ``path`` (.usda text or .usdc binary, chosen by the extension); return the path.
+
+    With ``assets=True`` every texture is written as PNG into ``<stem>_textures/`` next to the file and
+    referenced by a relative path; ``assets=False`` leaves textures out (meshes and materials are always
+    saved). All files are written to temporary files and moved into place only when everything succeeded, so a
+    failed save leaves the previous files as they were. Components without a USD mapping are reported in one
+    :class:`USDSceneWarning`. Raises :class:`USDSceneError` naming the file (and entity/field) on failure.
+    """
+    path = Path(path)
+    file_format(path)
+    if not path.parent.is_dir():
+        raise USDSceneError(path, f"the folder {str(path.parent)!r} does not exist")
+    stage = Usd.Stage.CreateInMemory()
+    writer = _Writer(scene, stage, path, assets)
+    writer.write()
+    try:
+        with StagedFiles() as staged:
+            for target, pixels in writer.images:
+                _write_png(pixels, staged.temp_for(target))
+            temp = staged.temp_for(path)
+            if not stage.GetRootLayer().Export(str(temp)):
+                raise OSError(f"USD could not write {temp}")
+            staged.commit()
+    except USDSceneError:
+        raise
+    except Exception as exc:  # OSError, or a Tf.ErrorException from USD's writer
+        raise USDSceneError(path, f"cannot write the file: {exc}") from exc
+    return path
+
+
+def _write_png(pixels: np.ndarray, path: Path) -> None:
+    from PIL import Image
+
+    Image.fromarray(np.ascontiguousarray(pixels), mode="RGBA").save(path, format="PNG")
+
+
+class _Writer:
+    def __init__(self, scene: Scene, stage: Usd.Stage, path: Path, assets: bool) -> None:
+        self.scene = scene
+        self.stage = stage
+        self.path = path
+        self.assets = assets
+        self.images: list[tuple[Path, np.ndarray]] = []
+        self.mesh_paths: dict[str, str] = {}
+        self.material_paths: dict[str, str] = {}
+        self.unsaved: list[str] = []
+        self.prim_of: dict[uuid.UUID, str] = {}
+
+    def fail(self, entity: uuid.UUID, detail: str, prim: str | None = None) -> USDSceneError:
+        return USDSceneError(self.path, f"{self.scene.describe(entity)}: {detail}", prim=prim)
+
+    # --- whole scene --------------------------------------------------------------------------------
+    def write(self) -> None:
+        stage = self.stage
+        UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.y)
+        UsdGeom.SetStageMetersPerUnit(stage, 1.0)
+        root = UsdGeom.Xform.Define(stage, ROOT).GetPrim()
+        stage.SetDefaultPrim(root)
+        write(root, "gandalf:sceneName", T.String, self.scene.name)
+        write(root, "gandalf:version", T.Int, FORMAT_VERSION)
+        self.write_assets()
+        names: dict[str, UniqueNames] = {}
+        for entity in self.ordered_entities():
+            parent = self.scene.parent_of(entity)
+            parent_path = self.prim_of[parent] if parent is not None else ROOT
+            scope = names.setdefault(parent_path, UniqueNames())
+            info = self.scene.try_component(entity, InfoComponent)
+            prim_path = f"{parent_path}/{scope.take(info.name if info else 'entity')}"
+            self.prim_of[entity] = prim_path
+            self.write_entity(entity, prim_path, root)
+        if self.unsaved:
+            warnings.warn(
+                f"{self.path}: components with no USD mapping were not saved (register them with "
+                f"gandalf_core.usd.register_component): {'; '.join(self.unsaved)}",
+                USDSceneWarning,
+                stacklevel=3,
+            )
+
+    def ordered_entities(self) -> list[uuid.UUID]:
+        """Every entity, parents before children (roots in scene order, children in Link order)."""
+        scene = self.scene
+        order = [e for e in scene.entities if scene.parent_of(e) is None]
+        for entity in order:  # grows while iterating: a breadth-first walk without recursion
+            link = scene.try_component(entity, LinkComponent)
+            if link is not None:
+                order.extend(link.children)
+        return order
+
+    def write_assets(self) -> None:
+        stage, scene = self.stage, self.scene
+        UsdGeom.Scope.Define(stage, ASSETS).MakeInvisible()  # asset meshes are data, not part of the picture
+        for folder, table, write_one, paths in (
+            (MESHES, scene.assets.meshes, asset_prims.write_mesh, self.mesh_paths),
+            (MATERIALS, scene.assets.materials, asset_prims.write_material, self.material_paths),
+        ):
+            UsdGeom.Scope.Define(stage, folder)
+            unique = UniqueNames()
+            for name, data in table.items():
+                paths[name] = f"{folder}/{unique.take(name, 'asset')}"
+                try:
+                    write_one(stage, paths[name], name, data)
+                except (ValueError, TypeError) as exc:
+                    raise USDSceneError(self.path, str(exc), prim=paths[name]) from exc
+        if not self.assets:
+            return
+        UsdGeom.Scope.Define(stage, TEXTURES)
+        unique = UniqueNames()
+        folder_name = texture_folder_name(self.path.stem)
+        for name, texture in scene.assets.textures.items():
+            stem = unique.take(name, "texture")
+            files = asset_prims.texture_files(stem, texture)
+            relative = [f"./{folder_name}/{f}" for f in files]
+            asset_prims.write_texture(stage, f"{TEXTURES}/{stem}", name, texture, relative)
+            for f, pixels in zip(files, asset_prims.texture_images(texture)):
+                self.images.append((self.path.parent / folder_name / f, pixels))
+
+    # --- one entity ---------------------------------------------------------------------------------
+    def write_entity(self, entity: uuid.UUID, path: str, root: Usd.Prim) -> None:
+        comps = {type(c): c for c in self.scene.components_of(entity)}
+        camera, light = comps.get(CameraComponent), comps.get(LightComponent)
+        type_name = "Camera" if camera else LIGHT_TYPES[light.kind] if light else "Xform"
+        prim = self.stage.DefinePrim(path, type_name)
+        info = comps.get(InfoComponent)
+        if info is not None:
+            write(prim, "gandalf:name", T.String, info.name)
+            write(prim, "gandalf:tag", T.String, info.tag)
+        if LinkComponent in comps:
+            write(prim, "gandalf:link", T.Bool, True)
+        if TransformComponent in comps:
+            self.write_transform(prim, comps[TransformComponent])
+        if camera is not None:
+            self.write_camera(prim, camera)
+        if light is not None:
+            self.write_light(prim, light, schema=type_name != "Camera")
+        if MeshComponent in comps:
+            name = comps[MeshComponent].mesh
+            write(prim, "gandalf:mesh", T.String, name)
+            if name in self.mesh_paths:
+                prim.CreateRelationship("gandalf:meshAsset", custom=True).SetTargets([self.mesh_paths[name]])
+        if MaterialComponent in comps:
+            name = comps[MaterialComponent].material
+            write(prim, "gandalf:material", T.String, name)
+            if name in self.material_paths:  # the standard binding too, so other USD tools see it
+                material = UsdShade.Material(self.stage.GetPrimAtPath(self.material_paths[name]))
+                UsdShade.MaterialBindingAPI.Apply(prim).Bind(material)
+        for component_type, attr, type_name_, value in (
+            (ClearColorComponent, "gandalf:clearColor", T.Double4, lambda c: Gf.Vec4d(*map(float, c.color))),
+            (SkyboxComponent, "gandalf:skybox", T.String, lambda c: c.texture),
+        ):
+            if component_type in comps:
+                rel = root.GetRelationship(attr + "Entity")
+                if rel:
+                    extra = f"{component_type.__name__} (a scene saves only the first)"
+                    self.unsaved.append(f"{self.scene.describe(entity)}: {extra}")
+                    continue
+                write(root, attr, type_name_, value(comps[component_type]))
+                root.CreateRelationship(attr + "Entity", custom=True).SetTargets([path])
+        self.write_registered(entity, prim, comps)
+
+    def write_transform(self, prim: Usd.Prim, t: TransformComponent) -> None:
+        xform = UsdGeom.Xformable(prim)
+        w, x, y, z = (float(v) for v in t.quaternion)  # gandalf stores (w, x, y, z); Gf.Quatd takes real first
+        xform.AddTranslateOp(UsdGeom.XformOp.PrecisionDouble).Set(Gf.Vec3d(*map(float, t.translation)))
+        xform.AddOrientOp(UsdGeom.XformOp.PrecisionDouble).Set(Gf.Quatd(w, Gf.Vec3d(x, y, z)))
+        xform.AddScaleOp(UsdGeom.XformOp.PrecisionDouble).Set(Gf.Vec3d(*map(float, t.scale)))
+
+    def write_camera(self, prim: Usd.Prim, c: CameraComponent) -> None:
+        usd = UsdGeom.Camera(prim)
+        aspect = DEFAULT_ASPECT if c.aspect is None else c.aspect
+        usd.CreateProjectionAttr(c.projection)
+        usd.CreateClippingRangeAttr(Gf.Vec2f(c.near, c.far))
+        if c.projection == "orthographic":
+            # USD gives orthographic apertures in tenths of a scene unit.
+            usd.CreateVerticalApertureAttr(c.height * 10.0)
+            usd.CreateHorizontalApertureAttr(c.height * 10.0 * aspect)
+        else:
+            usd.CreateVerticalApertureAttr(VERTICAL_APERTURE_MM)
+            usd.CreateHorizontalApertureAttr(VERTICAL_APERTURE_MM * aspect)
+            usd.CreateFocalLengthAttr(VERTICAL_APERTURE_MM / (2.0 * math.tan(math.radians(c.fov) / 2.0)))
+        # USD's float attributes would round these; the exact values travel as doubles.
+        for name, value in (("fov", c.fov), ("near", c.near), ("far", c.far), ("height", c.height)):
+            write(prim, f"gandalf:{name}", T.Double, float(value))
+        if c.aspect is not None:
+            write(prim, "gandalf:aspect", T.Double, float(c.aspect))
+        write(prim, "gandalf:primary", T.Bool, bool(c.primary))
+        write(prim, "gandalf:reverseZ", T.Bool, bool(c.reverse_z))
+
+    def write_light(self, prim: Usd.Prim, light: LightComponent, schema: bool) -> None:
+        if schema:  # the standard UsdLux inputs (linear colour), for other USD tools
+            api = UsdLux.LightAPI(prim)
+            api.CreateColorAttr(Gf.Vec3f(*map(float, srgb_to_linear(light.color))))
+            api.CreateIntensityAttr(light.intensity)
+            if light.kind == "point":
+                UsdLux.SphereLight(prim).CreateTreatAsPointAttr(True)
+        write(prim, "gandalf:lightKind", T.String, light.kind)
+        write(prim, "gandalf:lightColor", T.Double3, Gf.Vec3d(*map(float, light.color)))
+        write(prim, "gandalf:intensity", T.Double, light.intensity)
+        write(prim, "gandalf:range", T.Double, light.range)
+
+    def write_registered(self, entity: uuid.UUID, prim: Usd.Prim, comps: dict[type, Component]) -> None:
+        saved: list[str] = []
+        for component_type, component in comps.items():
+            if component_type in BUILTIN_TYPES:
+                continue
+            reg = registration_for(component_type)
+            if reg is None:
+                self.unsaved.append(f"{self.scene.describe(entity)}: {component_type.__name__}")
+                continue
+            name = component_type.__name__
+            for field in reg.fields:
+                try:
+                    type_name, value = simple_value(getattr(component, field))
+                except (AttributeError, TypeError, ValueError) as exc:
+                    raise self.fail(entity, f"{name}.{field}: {exc}", str(prim.GetPath())) from None
+                write(prim, f"gandalf:{name}:{field}", type_name, value)
+            saved.append(name)
+        if saved:
+            write(prim, "gandalf:components", T.StringArray, saved)

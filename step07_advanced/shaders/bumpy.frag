@@ -1,0 +1,35 @@
+#version 330 core
+// PBR with an albedo texture, a tangent-space normal map and parallax occlusion mapping from a height map.
+#include "pbr_lighting.glsl"
+#include "normal_map.glsl"
+#include "parallax.glsl"
+in vec3 v_world;
+in vec3 v_normal;
+in vec2 v_uv;
+in vec4 v_tangent;
+uniform vec4 u_color;
+uniform float u_metallic;
+uniform float u_roughness;
+uniform float u_env_strength;
+uniform float u_height_scale;  // parallax depth in UV units (0: normal mapping only)
+uniform float u_uv_scale;      // texture repeats across the surface
+uniform sampler2D u_albedo;
+uniform sampler2D u_normal_map;
+uniform sampler2D u_height_map;
+uniform samplerCube u_env;
+out vec4 f_color;
+void main() {
+    vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
+    vec3 v = safe_normalize(u_camera_position.xyz - v_world, n);
+    vec2 uv = v_uv * u_uv_scale;
+    vec2 dx = dFdx(uv);
+    vec2 dy = dFdy(uv);
+    vec3 t, b;
+    tangent_basis(n, v_tangent, t, b);
+    uv = parallax_uv(u_height_map, uv, vec3(dot(v, t), dot(v, b), dot(v, n)), u_height_scale, dx, dy);
+    vec3 base = u_color.rgb * textureGrad(u_albedo, uv, dx, dy).rgb;
+    vec3 shading = perturb_normal(n, v_tangent, textureGrad(u_normal_map, uv, dx, dy).rgb);
+    vec3 color = pbr_direct(v_world, shading, v, base, u_metallic, u_roughness);
+    color += u_env_strength * pbr_environment(u_env, shading, v, base, u_metallic, u_roughness);
+    f_color = vec4(color, 1.0);
+}

@@ -1,0 +1,20 @@
+#version 330 core
+// Metallic-roughness PBR: base colour, metallic and roughness per material, lights plus the sky as environment.
+#include "pbr_lighting.glsl"
+in vec3 v_world;
+in vec3 v_normal;
+in vec2 v_uv;
+in vec4 v_tangent;
+uniform vec4 u_color;
+uniform float u_metallic;
+uniform float u_roughness;
+uniform float u_env_strength;
+uniform samplerCube u_env;
+out vec4 f_color;
+void main() {
+    vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
+    vec3 v = safe_normalize(u_camera_position.xyz - v_world, n);
+    vec3 color = pbr_direct(v_world, n, v, u_color.rgb, u_metallic, u_roughness);
+    color += u_env_strength * pbr_environment(u_env, n, v, u_color.rgb, u_metallic, u_roughness);
+    f_color = vec4(color, 1.0);
+}

@@ -1,0 +1,75 @@
+// Metallic-roughness shading with every light of the scene, plus an environment term from a sky cube map.
+// ggx_specular() and fresnel_schlick() come from brdf.wgsl, found in exercises/ or solutions/.
+#include "frame.wgsl"
+#include "brdf.wgsl"
+
+const PI: f32 = 3.14159265358979;
+// Perceptual roughness below this makes the GGX lobe narrower than a pixel (and D overflow float16 GPUs).
+const MIN_ROUGHNESS: f32 = 0.045;
+
+// A unit vector from a possibly unnormalised (or zero) one: interpolated normals can cancel out.
+fn safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let len = length(v);
+    return select(fallback, v / max(len, 1e-12), len > 1e-12);
+}
+
+struct LightSample {
+    l: vec3<f32>,
+    radiance: vec3<f32>,
+};
+
+// Unit direction towards light i and its radiance at p (as in step 06: windowed inverse square).
+fn light_at(i: i32, p: vec3<f32>, n: vec3<f32>) -> LightSample {
+    let position = lights.position[i];
+    let color = lights.color[i];
+    if (position.w < 0.5) {
+        return LightSample(position.xyz, color.rgb);
+    }
+    let d = position.xyz - p;
+    let distance = length(d);
+    let l = select(n, d / max(distance, 1e-6), distance > 1e-6);
+    var radiance = color.rgb;
+    if (color.a > 0.0) {
+        let x = distance / color.a;
+        let window = clamp(1.0 - x * x * x * x, 0.0, 1.0);
+        radiance *= window * window / max(distance * distance, 1e-4);
+    }
+    return LightSample(l, radiance);
+}
+
+// Direct light: sum over the lights of (k_d · base/π + specular BRDF) · radiance · n·l, plus the lights
+// block's ambient. k_d = (1 - F)(1 - metallic): what the surface reflects specularly it cannot also scatter.
+fn pbr_direct(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>, metallic: f32, roughness: f32) -> vec3<f32> {
+    let r = clamp(roughness, MIN_ROUGHNESS, 1.0);
+    let f0 = mix(vec3<f32>(0.04), base, metallic);
+    let diffuse = base * (1.0 - metallic);
+    var color = lights.ambient.rgb * (diffuse + f0);
+    let count = min(lights.count.x, i32(MAX_LIGHTS));
+    for (var i = 0; i < count; i++) {
+        let s = light_at(i, p, n);
+        let n_dot_l = dot(n, s.l);
+        if (n_dot_l <= 0.0) {
+            continue;
+        }
+        let h = safe_normalize(s.l + v, n);
+        let k_d = (1.0 - fresnel_schlick(max(dot(h, v), 0.0), f0)) * (1.0 - metallic);
+        color += (k_d * base / PI + ggx_specular(n, v, s.l, r, f0)) * s.radiance * n_dot_l;
+    }
+    return color;
+}
+
+// Image-based light from a (mip-mapped) cube map: blurrier mips stand in for rougher lobes (split sum with
+// Karis' analytic fit of the pre-integrated BRDF); the diffuse part reads a nearly fully blurred level.
+fn pbr_environment(env: texture_cube<f32>, env_sampler: sampler, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>,
+                   metallic: f32, roughness: f32) -> vec3<f32> {
+    let r = clamp(roughness, MIN_ROUGHNESS, 1.0);
+    let f0 = mix(vec3<f32>(0.04), base, metallic);
+    let n_dot_v = clamp(dot(n, v), 1e-4, 1.0);
+    let max_lod = log2(f32(textureDimensions(env).x));
+    let specular_light = textureSampleLevel(env, env_sampler, reflect(-v, n), r * max_lod).rgb;
+    let diffuse_light = textureSampleLevel(env, env_sampler, n, max_lod - 1.5).rgb;
+    let c = r * vec4<f32>(-1.0, -0.0275, -0.572, 0.022) + vec4<f32>(1.0, 0.0425, 1.04, -0.04);
+    let a004 = min(c.x * c.x, exp2(-9.28 * n_dot_v)) * c.x + c.y;
+    let ab = vec2<f32>(-1.04, 1.04) * a004 + c.zw;
+    return base * (1.0 - metallic) * diffuse_light + specular_light * (f0 * ab.x + ab.y);
+}

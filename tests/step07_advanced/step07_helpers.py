@@ -1,0 +1,213 @@
+"""Shared helpers of the step 07 tests: headless apps with the step's shaders, small test scenes, and numpy
+references (a ray-sphere PBR renderer and a normal-mapped quad), all in float64 and linear light, encoded to
+8-bit sRGB like the framebuffer.
+"""
+
+from __future__ import annotations
+
+import functools
+import importlib
+from pathlib import Path
+from types import ModuleType
+
+import numpy as np
+
+from gandalf_core import Application, Scene, TransformComponent
+from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
+from gandalf_core.math import look_at_rotation
+from gandalf_core.resources import (
+    MaterialData,
+    MeshData,
+    TextureData,
+    linear_to_srgb,
+    sky_cube,
+    srgb_to_linear,
+    uv_sphere,
+)
+
+REFERENCES = Path(__file__).resolve().parent / "references"
+SIZE = (112, 84)
+EYE = np.array([0.0, 0.0, 3.2])
+FOV = 45.0
+
+
+def make_app(backend: str, impl: ModuleType, size: tuple[int, int] = SIZE) -> Application:
+    """A headless app of ``backend`` with the step's render shaders built from ``impl``'s includes."""
+    app = Application(backend, *size, headless=True, fixed_dt=1 / 60)
+    importlib.import_module(f"step07_advanced.{backend}").register_shaders(app, impl)
+    return app
+
+
+def render(backend: str, impl: ModuleType, scene: Scene, size: tuple[int, int] = SIZE) -> np.ndarray:
+    with make_app(backend, impl, size) as app:
+        app.add_scene(scene)
+        app.run(frames=1)
+        return app.capture()
+
+
+@functools.cache
+def _sphere() -> MeshData:
+    return uv_sphere(1.0, 128, 64)
+
+
+@functools.cache
+def small_sky():
+    return sky_cube(8)
+
+
+def directional(towards, color=(1.0, 1.0, 1.0), intensity=1.0):
+    t = np.asarray(towards, dtype=np.float64)
+    transform = TransformComponent(t, quaternion=look_at_rotation(t, (0, 0, 0)))
+    return LightComponent("directional", color, intensity), transform
+
+
+def point(position, color=(1.0, 1.0, 1.0), intensity=1.0, range=0.0):
+    return LightComponent("point", color, intensity, range), TransformComponent(position)
+
+
+def ambient(color):
+    return LightComponent("ambient", color), TransformComponent()
+
+
+def add_lights(scene: Scene, lights) -> None:
+    for light, transform in lights:
+        scene.create_entity(TransformComponent(transform.translation, quaternion=transform.quaternion),
+                            LightComponent(light.kind, light.color, light.intensity, light.range))
+
+
+def pbr_material(color, metallic: float, roughness: float, env_strength: float = 0.0) -> MaterialData:
+    return MaterialData("pbr", ["sky"], color=color,
+                        params={"metallic": metallic, "roughness": roughness, "env_strength": env_strength})
+
+
+def sphere_scene(material: MaterialData, lights) -> Scene:
+    """A unit sphere at the origin seen from EYE, lit by ``lights`` (the sky is bound, used by env_strength)."""
+    scene = Scene("sphere")
+    scene.assets.mesh("sphere", _sphere())
+    scene.assets.texture("sky", small_sky())
+    scene.assets.material("M", material)
+    scene.create_entity(TransformComponent(), MeshComponent("sphere"), MaterialComponent("M"))
+    add_lights(scene, lights)
+    scene.create_entity(TransformComponent(EYE, quaternion=look_at_rotation(EYE, (0, 0, 0))),
+                        CameraComponent(FOV, 0.1, 20.0))
+    return scene
+
+
+# --- numpy references -------------------------------------------------------------------------------
+def sphere_hits(size: tuple[int, int] = SIZE) -> tuple[np.ndarray, np.ndarray]:
+    """(hit mask (H, W), hit points (H, W, 3)) of the unit sphere, one ray per pixel centre."""
+    w, h = size
+    x = (np.arange(w) + 0.5) / w * 2.0 - 1.0
+    y = 1.0 - (np.arange(h) + 0.5) / h * 2.0
+    tan = np.tan(np.radians(FOV) / 2)
+    d = np.stack(np.broadcast_arrays(x[None, :] * tan * w / h, y[:, None] * tan, -np.ones((h, w))), -1)
+    d /= np.linalg.norm(d, axis=-1, keepdims=True)
+    b = np.sum(d * EYE, axis=-1)
+    disc = b * b - (EYE @ EYE - 1.0)
+    t = -b - np.sqrt(np.maximum(disc, 0.0))
+    return disc > 0.0, EYE + t[..., None] * d
+
+
+def inner(mask: np.ndarray, pixels: int = 2) -> np.ndarray:
+    """``mask`` eroded by ``pixels`` (silhouette pixels are partly covered)."""
+    out = mask.copy()
+    for _ in range(pixels):
+        out[1:] &= out[:-1]
+        out[:-1] &= out[1:]
+        out[:, 1:] &= out[:, :-1]
+        out[:, :-1] &= out[:, 1:]
+    return out
+
+
+def _dot(a, b):
+    return np.sum(a * b, axis=-1, keepdims=True)
+
+
+def fresnel_np(cos_theta, f0):
+    return f0 + (1.0 - f0) * np.clip(1.0 - cos_theta, 0.0, 1.0) ** 5
+
+
+def ggx_specular_np(n, v, to_light, roughness, f0):
+    """Numpy twin of the reference ``ggx_specular`` (arrays (..., 3))."""
+    n_dot_v = np.maximum(_dot(n, v), 1e-4)
+    n_dot_l = np.maximum(_dot(n, to_light), 1e-4)
+    s = to_light + v
+    length = np.linalg.norm(s, axis=-1, keepdims=True)
+    h = np.where(length > 1e-6, s / np.maximum(length, 1e-6), n)
+    n_dot_h = np.clip(_dot(n, h), 0.0, 1.0)
+    alpha2 = roughness**4
+    d = alpha2 / (np.pi * (n_dot_h**2 * (alpha2 - 1.0) + 1.0) ** 2)
+    k = (roughness + 1.0) ** 2 / 8.0
+    g = n_dot_v / (n_dot_v * (1 - k) + k) * n_dot_l / (n_dot_l * (1 - k) + k)
+    return d * g * fresnel_np(np.clip(_dot(v, h), 0.0, 1.0), f0) / (4.0 * n_dot_v * n_dot_l)
+
+
+def pbr_direct_np(p, n, v, base_srgb, metallic, roughness, lights):
+    """Numpy twin of ``pbr_direct`` in pbr_lighting.glsl; ``lights`` as (LightComponent, TransformComponent)."""
+    base = srgb_to_linear(np.asarray(base_srgb, dtype=np.float64))
+    r = float(np.clip(roughness, 0.045, 1.0))
+    f0 = 0.04 + (base - 0.04) * metallic
+    color = np.zeros(p.shape)
+    for light, transform in lights:
+        radiance = srgb_to_linear(np.asarray(light.color, dtype=np.float64)) * light.intensity
+        if light.kind == "ambient":
+            color = color + radiance * (base * (1.0 - metallic) + f0)
+            continue
+        if light.kind == "directional":
+            t = np.asarray(transform.translation, dtype=np.float64)
+            to_light = np.broadcast_to(t / np.linalg.norm(t), p.shape)
+            rad = radiance
+        else:
+            d = np.asarray(transform.translation, dtype=np.float64) - p
+            dist = np.linalg.norm(d, axis=-1, keepdims=True)
+            to_light = d / np.maximum(dist, 1e-6)
+            rad = radiance
+            if light.range > 0:
+                window = np.clip(1.0 - (dist / light.range) ** 4, 0.0, 1.0)
+                rad = radiance * window * window / np.maximum(dist * dist, 1e-4)
+        n_dot_l = _dot(n, to_light)
+        h = to_light + v
+        h = h / np.maximum(np.linalg.norm(h, axis=-1, keepdims=True), 1e-12)
+        k_d = (1.0 - fresnel_np(np.maximum(_dot(h, v), 0.0), f0)) * (1.0 - metallic)
+        lit = (k_d * base / np.pi + ggx_specular_np(n, v, to_light, r, f0)) * rad * n_dot_l
+        color = color + np.where(n_dot_l > 0.0, lit, 0.0)
+    return color
+
+
+def to_srgb8(linear: np.ndarray) -> np.ndarray:
+    return np.round(linear_to_srgb(np.clip(linear, 0.0, 1.0)) * 255.0)
+
+
+def reference_sphere(material: MaterialData, lights, size: tuple[int, int] = SIZE) -> tuple[np.ndarray, np.ndarray]:
+    """(expected 8-bit RGB (H, W, 3), hit mask) of the PBR sphere without environment light."""
+    hit, p = sphere_hits(size)
+    n = p / np.linalg.norm(p, axis=-1, keepdims=True)
+    v = EYE - p
+    v /= np.linalg.norm(v, axis=-1, keepdims=True)
+    params = material.params
+    color = pbr_direct_np(p, n, v, material.color[:3], float(params["metallic"]), float(params["roughness"]), lights)
+    return to_srgb8(color), hit
+
+
+def pixel_errors(image: np.ndarray, expected: np.ndarray, mask: np.ndarray) -> tuple[float, float]:
+    """(mean, 99th percentile) absolute channel error in 8-bit steps over ``mask``."""
+    diff = np.abs(image[..., :3].astype(np.float64) - expected)[mask]
+    return float(diff.mean()), float(np.percentile(diff, 99))
+
+
+def sample_bilinear(texture: TextureData, uv: np.ndarray) -> np.ndarray:
+    """Bilinear lookup (repeat wrap, level 0, values in [0, 1]) of ``texture`` at ``uv`` (..., 2)."""
+    pixels = texture.pixels[..., :3].astype(np.float64) / 255.0
+    h, w = pixels.shape[:2]
+    x = uv[..., 0] * w - 0.5
+    y = uv[..., 1] * h - 0.5
+    x0, y0 = np.floor(x), np.floor(y)
+    fx, fy = (x - x0)[..., None], (y - y0)[..., None]
+    x0, y0 = x0.astype(int), y0.astype(int)
+
+    def at(yy, xx):
+        return pixels[np.mod(yy, h), np.mod(xx, w)]
+
+    top = at(y0, x0) * (1 - fx) + at(y0, x0 + 1) * fx
+    bottom = at(y0 + 1, x0) * (1 - fx) + at(y0 + 1, x0 + 1) * fx
+    return top * (1 - fy) + bottom * fy
