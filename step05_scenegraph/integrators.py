@@ -9,7 +9,9 @@ returns the acceleration. One step advances the state by ``dt`` seconds:
 * implicit (backward) Euler for the linear damped spring: first order, stable for every k, m, c and dt,
   solved in closed form (no iteration) because the force is linear.
 
-``damped_spring_exact`` is the exact solution the study measures every integrator against.
+``damped_spring_exact`` is the exact solution the study measures every integrator against. The
+semi-implicit Euler and RK4 steps are the exercise (``exercises/integrators.py``); the step's systems and
+study use the reference answers in ``solutions/integrators.py``.
 """
 
 from __future__ import annotations
@@ -52,28 +54,11 @@ def spring_energy(x: np.ndarray, v: np.ndarray, k: float, m: float, rest: float 
     return e.sum(axis=-1) if e.ndim else e
 
 
+
 def explicit_euler_step(x: np.ndarray, v: np.ndarray, accel: Acceleration, dt: float) -> State:
     """Forward Euler: both updates use the old state (``x += v dt``, ``v += a(x, v) dt``)."""
     a = accel(x, v)
     return x + v * dt, v + a * dt
-
-
-def semi_implicit_euler_step(x: np.ndarray, v: np.ndarray, accel: Acceleration, dt: float) -> State:
-    """Symplectic Euler: the velocity first (``v += a(x, v) dt``), then the position with the NEW velocity."""
-    v_new = v + accel(x, v) * dt
-    return x + v_new * dt, v_new
-
-
-def rk4_step(x: np.ndarray, v: np.ndarray, accel: Acceleration, dt: float) -> State:
-    """Classical fourth-order Runge-Kutta on the first-order system ``x' = v, v' = a(x, v)``."""
-    k1x, k1v = v, accel(x, v)
-    k2x, k2v = v + 0.5 * dt * k1v, accel(x + 0.5 * dt * k1x, v + 0.5 * dt * k1v)
-    k3x, k3v = v + 0.5 * dt * k2v, accel(x + 0.5 * dt * k2x, v + 0.5 * dt * k2v)
-    k4x, k4v = v + dt * k3v, accel(x + dt * k3x, v + dt * k3v)
-    return (
-        x + dt / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x),
-        v + dt / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v),
-    )
 
 
 def implicit_euler_spring_step(

@@ -1,4 +1,4 @@
-"""The integrator study: ``python -m step05_scenegraph.study [--out docs/images]``.
+"""The integrator study: ``python -m step05_scenegraph.study [--out DIR]`` (plots go to ``out/`` by default).
 
 (a) Accuracy against cost: each integrator follows a damped oscillator (k = 10, m = 1, c = 0.4, x0 = 1,
     v0 = 0) for 10 seconds at several time steps; the largest position error against the exact solution is
@@ -21,9 +21,8 @@ from .integrators import (
     damped_spring_exact,
     explicit_euler_step,
     implicit_euler_spring_step,
-    rk4_step,
-    semi_implicit_euler_step,
 )
+from .solutions.integrators import rk4_step, semi_implicit_euler_step
 
 INTEGRATOR_NAMES = ("explicit_euler", "semi_implicit_euler", "rk4", "implicit_euler")
 ERROR_CASE = {"k": 10.0, "m": 1.0, "c": 0.4, "x0": 1.0, "v0": 0.0, "duration": 10.0}
@@ -181,8 +180,8 @@ def plot_sweep(ratios: Sequence[float], sweep: dict[str, np.ndarray], path: Path
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    default_out = Path(__file__).resolve().parent.parent / "docs" / "images"
-    parser.add_argument("--out", type=Path, default=default_out, help="folder for the two plots")
+    parser.add_argument("--out", type=Path, default=Path("out"),
+                        help="folder for the two plots (default: out; the course site's are in docs/images)")
     parser.add_argument("--no-plots", action="store_true", help="print the tables only")
     args = parser.parse_args(argv)
     rows = error_study()

@@ -20,10 +20,9 @@ from .fixed_step import FixedStep
 from .integrators import (
     explicit_euler_step,
     implicit_euler_spring_step,
-    rk4_step,
-    semi_implicit_euler_step,
     spring_acceleration,
 )
+from .solutions.integrators import rk4_step, semi_implicit_euler_step
 
 __all__ = [
     "GravitySystem",

@@ -1,23 +1,26 @@
-"""``python -m gandalf_core.grading tests/step01_window [--json out.json]``: grade your exercises.
+"""``python -m gandalf_core.grading [TESTS ...] [--json FILE]``: grade your exercises.
 
-A thin front end over ``pytest --student``; extra arguments go to pytest.
+A thin front end over ``pytest --student`` that prints one line per failed test and the score table
+(``pytest --student`` itself shows full tracebacks). Other arguments go to pytest.
 """
 
 from __future__ import annotations
 
+import argparse
 import sys
 
 import pytest
 
 
 def main(argv: list[str]) -> int:
-    args = ["--student", "-q", "-p", "no:cacheprovider"]
-    rest = list(argv)
-    if "--json" in rest:
-        i = rest.index("--json")
-        args += ["--grade-json", rest[i + 1]]
-        del rest[i : i + 2]
-    code = pytest.main(args + (rest or ["tests"]))
+    parser = argparse.ArgumentParser(prog="python -m gandalf_core.grading", description=__doc__.splitlines()[0])
+    parser.add_argument("tests", nargs="*", default=["tests"], help="test folders or files (default: tests)")
+    parser.add_argument("--json", metavar="FILE", help="also write the score as JSON to FILE")
+    args, extra = parser.parse_known_args(argv)
+    options = ["--student", "-q", "-p", "no:cacheprovider", "--tb=line", "-rN"]
+    if args.json:
+        options += ["--grade-json", args.json]
+    code = pytest.main(options + extra + args.tests)
     # 1 = some tests failed: that's a grade, not an error of the grader.
     return 0 if code in (pytest.ExitCode.OK, pytest.ExitCode.TESTS_FAILED) else int(code)
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike
 
-from gandalf_core.resources import VertexLayout
+from gandalf_core.resources import VertexAttribute, VertexLayout  # noqa: F401  (you build both)
 
 
 def interleave(positions: ArrayLike, colors: ArrayLike) -> tuple[np.ndarray, VertexLayout]:

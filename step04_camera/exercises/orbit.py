@@ -27,4 +27,6 @@ class OrbitCameraSystem(System):
         super().__init__([OrbitCameraComponent, TransformComponent])
 
     def on_update_system(self, ts: float) -> None:
+        # The matching entities' components, in the order given to __init__:
+        #     for orbit, transform in self.components: ...
         raise NotImplementedError("exercise: OrbitCameraSystem.on_update_system")

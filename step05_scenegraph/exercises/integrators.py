@@ -1,4 +1,6 @@
-"""Exercise: two integrators for ``x' = v, v' = accel(x, v)`` (see ``step05_scenegraph/integrators.py``).
+"""Exercise: two integrators for ``x' = v, v' = accel(x, v)``.
+
+The lesson's other integrators (explicit and implicit Euler) are in ``step05_scenegraph/integrators.py``.
 
 Both take the position ``x``, the velocity ``v`` (floats or numpy arrays), the acceleration function
 ``accel(x, v)`` and the time step ``dt``, and return the new ``(x, v)``. They are graded numerically:
