@@ -24,6 +24,11 @@ class CameraComponent(Component):
 
     ``aspect=None`` follows the render target (and so the window when it is resized). Validation runs
     on construction and again whenever a projection is built, so a bad value names its field.
+
+    ``reverse_z`` maps near to the far end of the depth range and far (which may be ``math.inf``) to the
+    near end. With WebGPU's [0, 1] range and a float depth buffer that spreads precision evenly over huge
+    depth ranges; OpenGL draws the same picture but, with its [-1, 1] range and 24-bit depth, gains no
+    precision from it.
     """
 
     def __init__(

@@ -85,6 +85,11 @@ def pack_frame(
     data[37] = dt
     rotation_only = np.eye(4)
     rotation_only[:3, :3] = view[:3, :3]
+    if projection[3, 3] != 0.0 and projection[3, 2] == 0.0:
+        # Orthographic: every pixel would look the same way. Give the sky a 90° perspective of the same
+        # aspect instead, so it still shows a view of the surroundings.
+        aspect = abs(projection[1, 1] / projection[0, 0]) if projection[0, 0] else 1.0
+        projection = np.array([[1 / aspect, 0, 0, 0], [0, 1, 0, 0], [0, 0, -1, -0.2], [0, 0, -1, 0]])
     try:
         clip_to_direction = np.linalg.inv(projection @ rotation_only)
     except np.linalg.LinAlgError:

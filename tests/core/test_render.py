@@ -456,3 +456,11 @@ def test_light_fields_are_checked_when_set_later():
                          ("range", -1.0)]:
         with pytest.raises(ValueError, match=f"LightComponent.{field}"):
             setattr(light, field, value)
+
+
+def test_the_sky_shows_a_view_with_an_orthographic_camera(backend):
+    scene = lit_scene(0, sky=True, projection="orthographic", height=20.0)
+    image, app = render(backend, scene)
+    app.close()
+    top_rows = image[:10, :, :3].astype(int)
+    assert top_rows.std(axis=(0, 1)).max() > 1.0 or np.abs(top_rows[0] - top_rows[-1]).max() > 2
