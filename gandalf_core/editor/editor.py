@@ -10,6 +10,7 @@ switches to: four panel entities (:class:`EditorPanelComponent`) and the systems
 
 from __future__ import annotations
 
+import time
 import uuid
 import weakref
 from pathlib import Path
@@ -64,6 +65,10 @@ class Editor:
 
             self._gui = WGPUGuiRenderer(renderer.device, renderer.color_view.texture.format)
         self._last_time = app.clock.time
+        #: Wall-clock seconds per frame (smoothed), for the stats panel; the GUI's own time step follows
+        #: the app's clock, which may be a fixed step.
+        self.frame_seconds = 0.0
+        self._last_wall: float | None = None
         self.enabled = True
         renderer.overlays.append(self._overlay)
         app.scenes.on_switch.append(self._on_switch)
@@ -111,6 +116,11 @@ class Editor:
         imgui.set_current_context(self._context)
         io = imgui.get_io()
         io.display_size = imgui.ImVec2(renderer.width, renderer.height)
+        wall = time.perf_counter()
+        if self._last_wall is not None:
+            elapsed = wall - self._last_wall
+            self.frame_seconds = elapsed if self.frame_seconds == 0.0 else 0.9 * self.frame_seconds + 0.1 * elapsed
+        self._last_wall = wall
         now = self.app.clock.time
         dt, self._last_time = now - self._last_time, now
         io.delta_time = dt if dt > 0.0 else 1.0 / 60.0  # ImGui rejects a zero time step

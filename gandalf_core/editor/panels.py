@@ -184,11 +184,15 @@ class StatsPanelSystem(PanelSystem):
 
     def draw(self, panel: EditorPanelComponent) -> None:
         io = imgui.get_io()
-        renderer = self.editor.app.renderer
+        app = self.editor.app
+        renderer = app.renderer
         scene = self.scene
         entities = sum(1 for e in scene.entities if not is_editor_entity(scene, e))
-        imgui.text(f"fps       {io.framerate:8.1f}")
-        imgui.text(f"frame     {1000.0 / max(io.framerate, 1e-6):8.3f} ms")
+        # In a window: the wall clock, whatever the app's time step. Headless (captures, tests): the app's
+        # own time step, so that a picture does not depend on how fast the machine was.
+        seconds = self.editor.frame_seconds if app.window is not None else io.delta_time
+        imgui.text(f"fps       {1.0 / seconds if seconds else 0.0:8.1f}")
+        imgui.text(f"frame     {1000.0 * seconds:8.3f} ms")
         imgui.text(f"draws     {renderer.stats['draw_calls']:8d}")
         imgui.text(f"entities  {entities:8d}")
         imgui.text(f"backend   {renderer.backend:>8}")
