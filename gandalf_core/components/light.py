@@ -4,6 +4,11 @@
 axis, like a camera looks) or "ambient" (adds to the scene's ambient light). ``color`` is sRGB like
 every colour a scene sets; ``intensity`` scales it in linear light. A point light with ``range > 0``
 fades smoothly to zero at that distance (windowed inverse-square); ``range = 0`` means no falloff.
+
+A directional light may cast shadows (``cast_shadows=True``): the renderer then draws the scene's depth
+from the light into a shadow map, over an orthographic box centred on the light's world position,
+``2 · shadow_extent`` wide and high across the light's direction and ``shadow_depth`` long along it.
+Put the light above the middle of what it should shadow; the box only needs to enclose it.
 """
 
 from __future__ import annotations
@@ -22,11 +27,16 @@ class LightComponent(Component):
     """A point, directional or ambient light; every field is checked whenever it is set."""
 
     def __init__(self, kind: str = "point", color: Sequence[float] = (1.0, 1.0, 1.0), intensity: float = 1.0,
-                 range: float = 0.0) -> None:
+                 range: float = 0.0, cast_shadows: bool = False, shadow_extent: float = 10.0,
+                 shadow_depth: float = 50.0) -> None:
+        self._cast_shadows = False  # so that the kind check below can consult it
         self.kind = kind
         self.color = color
         self.intensity = intensity
         self.range = range
+        self.cast_shadows = cast_shadows
+        self.shadow_extent = shadow_extent
+        self.shadow_depth = shadow_depth
 
     @property
     def kind(self) -> str:
@@ -36,6 +46,9 @@ class LightComponent(Component):
     def kind(self, value: str) -> None:
         if value not in LIGHT_KINDS:
             raise ValueError(f"LightComponent.kind must be one of {LIGHT_KINDS}, got {value!r}")
+        if self._cast_shadows and value != "directional":
+            raise ValueError(f"LightComponent.kind: a {value!r} light cannot cast shadows (cast_shadows=True); "
+                             "only a directional light can")
         self._kind = value
 
     @property
@@ -69,6 +82,43 @@ class LightComponent(Component):
             raise ValueError(f"LightComponent.range must be a non-negative number (0 = no falloff), got {value!r}")
         self._range = float(value)
 
+    @property
+    def cast_shadows(self) -> bool:
+        return self._cast_shadows
+
+    @cast_shadows.setter
+    def cast_shadows(self, value: bool) -> None:
+        if not isinstance(value, (bool, np.bool_)):
+            raise TypeError(f"LightComponent.cast_shadows must be True or False, got {value!r}")
+        if value and self.kind != "directional":
+            raise ValueError(f"LightComponent.cast_shadows: only a directional light can cast shadows, "
+                             f"this one is {self.kind!r}")
+        self._cast_shadows = bool(value)
+
+    @property
+    def shadow_extent(self) -> float:
+        return self._shadow_extent
+
+    @shadow_extent.setter
+    def shadow_extent(self, value: float) -> None:
+        if not (math.isfinite(value) and value > 0):
+            raise ValueError(f"LightComponent.shadow_extent must be a positive number (half the shadow box's "
+                             f"width), got {value!r}")
+        self._shadow_extent = float(value)
+
+    @property
+    def shadow_depth(self) -> float:
+        return self._shadow_depth
+
+    @shadow_depth.setter
+    def shadow_depth(self, value: float) -> None:
+        if not (math.isfinite(value) and value > 0):
+            raise ValueError(f"LightComponent.shadow_depth must be a positive number (the shadow box's length "
+                             f"along the light), got {value!r}")
+        self._shadow_depth = float(value)
+
     def __repr__(self) -> str:
+        shadows = (f", cast_shadows=True, shadow_extent={self.shadow_extent}, shadow_depth={self.shadow_depth}"
+                   if self.cast_shadows else "")
         return (f"LightComponent({self.kind!r}, color={self.color.tolist()}, intensity={self.intensity}, "
-                f"range={self.range})")
+                f"range={self.range}{shadows})")

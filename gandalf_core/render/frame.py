@@ -23,14 +23,23 @@ INSTANCE_STRIDE = INSTANCE_FLOATS * 4
 # view, projection, camera_position, time, clip_to_direction, depth
 FRAME_FLOATS = 16 + 16 + 4 + 4 + 16 + 4
 MAX_LIGHTS = 64
-# count (ivec4), ambient, position[MAX_LIGHTS], color[MAX_LIGHTS]
+# count (ivec4), ambient, position[MAX_LIGHTS], color[MAX_LIGHTS]: what LightSystem.pack() returns
 LIGHTS_BYTES = 16 + 16 + 16 * MAX_LIGHTS * 2
+# light_view_projection (mat4), shadow (vec4): the shadow part at the block's end (LightSystem.shadow())
+SHADOW_BYTES = 64 + 16
+#: The whole lights uniform block as the shaders declare it.
+LIGHTS_BLOCK_BYTES = LIGHTS_BYTES + SHADOW_BYTES
+#: Side of the square shadow map in texels.
+SHADOW_MAP_SIZE = 2048
 
 
 #: The sky pass's shader name (core shaders ``render/shaders/skybox.*``) and fixed state: it is drawn
 #: where nothing else is, at the far plane, with no depth writes and no culling.
 SKY_SHADER = "gandalf.skybox"
 SKY_STATE = MaterialData(SKY_SHADER, cull="none", depth_write=False, name="sky")
+#: The shadow pass's shader name (core shaders ``render/shaders/shadow_depth.*``): positions and instance
+#: rows only, depth only.
+SHADOW_SHADER = "gandalf.shadow_depth"
 
 
 @dataclass
@@ -39,11 +48,12 @@ class FrameData:
 
     clear_color: np.ndarray  # linear RGBA
     frame: bytes  # the frame uniform block
-    lights: bytes  # the lights uniform block
+    lights: bytes  # the lights uniform block (LIGHTS_BLOCK_BYTES)
     batches: list[DrawBatch]  # opaque ones first, then the transparent ones back to front
     instances: np.ndarray | None  # (total instances, 12) float32
     skybox: str | None = None  # cube texture name, or None for no sky pass (drawn after the opaque batches)
     reverse_z: bool = False
+    shadows: bool = False  # a shadow-casting light is on: draw the shadow map before the main pass
 
 
 @dataclass

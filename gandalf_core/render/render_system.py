@@ -20,13 +20,15 @@ from ..components import (
 from ..ecs import System
 from ..math import depth_range, invert_affine
 from ..resources import MaterialData
-from ..systems.light_system import LightSystem, pack_lights
+from ..systems.light_system import LightSystem, pack_lights, pack_shadow
 from .base import Renderer
 from .color import srgb_rgba_to_linear
-from .frame import DrawBatch, FrameData, pack_frame, pack_instances
+from .frame import LIGHTS_BYTES, DrawBatch, FrameData, pack_frame, pack_instances
 
 DEFAULT_CLEAR = (0.0, 0.0, 0.0, 1.0)
-_NO_LIGHTS = pack_lights([])
+_NO_LIGHTS = pack_lights([]) + pack_shadow([])
+# Offset of shadow.x in the lights block: after the lights part and the light's view-projection matrix.
+_SHADOW_ON_OFFSET = LIGHTS_BYTES + 64
 
 
 class RenderSystem(System):
@@ -149,7 +151,10 @@ class RenderSystem(System):
             self._sort_transparent(world, eye)
             self._instances = pack_instances(world, self._rows, self._instances)
         light_systems = [s for s in scene.systems if isinstance(s, LightSystem)]
-        lights = light_systems[0].data if light_systems else _NO_LIGHTS
+        # The light system knows the lights, the renderer the depth range their shadow projection needs.
+        lights = (light_systems[0].data + light_systems[0].shadow(self.renderer.depth_range)
+                  if light_systems else _NO_LIGHTS)
+        shadows = bool(np.frombuffer(lights, np.float32, count=1, offset=_SHADOW_ON_OFFSET)[0] == 1.0)
         skyboxes = self._skyboxes.components
         return FrameData(
             clear_color=self.clear_color(),
@@ -159,4 +164,5 @@ class RenderSystem(System):
             instances=self._instances if self.batches else None,
             skybox=skyboxes[0][0].texture if skyboxes else None,
             reverse_z=reverse_z,
+            shadows=shadows,
         )

@@ -5,7 +5,11 @@ The block has the same bytes in GLSL (std140) and WGSL (see ``render/shaders/fra
     count: ivec4 (x = lights used), ambient: vec4 (rgb, linear),
     position[64]: vec4 (xyz position with w = 1, or direction towards the light with w = 0),
     color[64]: vec4 (rgb linear colour × intensity, a = range; 0 means no falloff)
+    light_view_projection: mat4 (world -> the shadow-casting light's clip space)
+    shadow: vec4 (x = 1 when a shadow map is on, y = depth bias, z = 1 / map size, w = the light's index)
 
+:meth:`LightSystem.pack` makes the lights part (``LIGHTS_BYTES``); :meth:`LightSystem.shadow` the shadow
+part at the end (``SHADOW_BYTES``), for the renderer's depth range, which the render system passes in.
 Subclass it and override :meth:`LightSystem.pack` to change how lights are collected (step 06's exercise).
 """
 
@@ -19,8 +23,9 @@ import numpy as np
 from ..components import TransformComponent
 from ..components.light import LightComponent
 from ..ecs import System
+from ..math import orthographic
 from ..render.color import srgb_rgba_to_linear
-from ..render.frame import LIGHTS_BYTES, MAX_LIGHTS
+from ..render.frame import LIGHTS_BYTES, MAX_LIGHTS, SHADOW_BYTES, SHADOW_MAP_SIZE
 
 
 class LightSystem(System):
@@ -35,6 +40,10 @@ class LightSystem(System):
 
     def pack(self, components: list[tuple[LightComponent, TransformComponent]]) -> bytes:
         return pack_lights(components)
+
+    def shadow(self, depth_range: str | tuple[float, float]) -> bytes:
+        """The shadow part of the block for this frame's lights, projected for ``depth_range``."""
+        return pack_shadow(self.components, depth_range)
 
 
 def pack_lights(components: list[tuple[Any, Any]]) -> bytes:
@@ -68,3 +77,55 @@ def pack_lights(components: list[tuple[Any, Any]]) -> bytes:
         warnings.warn(f"{n + dropped} point and directional lights; only the first {MAX_LIGHTS} are used",
                       stacklevel=2)
     return block.tobytes()
+
+
+# --8<-- [start:pack_shadow]
+def pack_shadow(components: list[tuple[Any, Any]], depth_range: str | tuple[float, float] = "opengl") -> bytes:
+    """The shadow part of the lights block: the first shadow-casting directional light's view-projection
+    and shadow parameters (all zero, so ``shadow.x == 0``, when no light casts shadows).
+
+    The light looks along its -Z axis from its world position, the centre of an orthographic box
+    ``2 · shadow_extent`` wide and high and ``shadow_depth`` long; ``depth_range`` is the API's NDC depth
+    range, as for a camera.
+    """
+    block = np.zeros(SHADOW_BYTES // 4, dtype=np.float32)
+    index = 0  # the light's slot in position[] and color[], counted as pack_lights() does
+    for light, transform in components:
+        if light.kind == "ambient":
+            continue
+        if index == MAX_LIGHTS:
+            break
+        if light.cast_shadows:
+            extent, depth = light.shadow_extent, light.shadow_depth
+            view = light_view(transform.world)
+            projection = orthographic(-extent, extent, -extent, extent, -depth / 2, depth / 2,
+                                      depth_range=depth_range)
+            block[0:16] = (projection @ view).T.ravel()
+            texel = 2.0 * extent / SHADOW_MAP_SIZE
+            # Depth is stored in [0, 1] over the box's length in both APIs: one texel's width in those units.
+            block[16:20] = (1.0, texel / depth, 1.0 / SHADOW_MAP_SIZE, float(index))
+            break
+        index += 1
+    return block.tobytes()
+# --8<-- [end:pack_shadow]
+
+
+def light_view(world: np.ndarray) -> np.ndarray:
+    """The view matrix of a light placed by ``world``: its rotation (scale and shear removed) and position.
+
+    A zero -Z axis makes the light look straight down, as :func:`pack_lights` treats it.
+    """
+    z = world[:3, 2]
+    length = np.linalg.norm(z)
+    z = z / length if length > 0 else np.array([0.0, 1.0, 0.0])
+    x = world[:3, 0] - np.dot(world[:3, 0], z) * z
+    if np.linalg.norm(x) < 1e-9 * max(1.0, np.linalg.norm(world[:3, 0])):
+        # No usable X axis: any direction across the light will do for a square box.
+        helper = np.array([1.0, 0.0, 0.0]) if abs(z[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+        x = helper - np.dot(helper, z) * z
+    x = x / np.linalg.norm(x)
+    y = np.cross(z, x)
+    view = np.eye(4)
+    view[0, :3], view[1, :3], view[2, :3] = x, y, z
+    view[:3, 3] = -view[:3, :3] @ world[:3, 3]
+    return view

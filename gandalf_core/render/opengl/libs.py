@@ -29,6 +29,8 @@ GL_SRGB8_ALPHA8 = 0x8C43
 _GL_MATRIX_SIZES = {0x8B5A: 2, 0x8B5B: 3, 0x8B5C: 4}
 # The engine's uniform blocks and their binding points (the same numbers as WGSL's @group(0) bindings).
 UNIFORM_BLOCKS = {"Frame": 0, "Lights": 1}
+# The engine's samplers and their reserved texture units (materials use the units from 0 up).
+ENGINE_SAMPLERS = {"u_shadow_map": 15}
 GL_RGBA8 = 0x8058
 # Mesa: "0:12(5): error: ..."; NVIDIA: "0(12) : error ..."; others: "ERROR: 0:12: ..."
 _GL_LINE = re.compile(r"^\s*(?:ERROR:\s*)?\d+[:(](\d+)\)?")
@@ -133,8 +135,11 @@ class ShaderLib(ResourceLib[GLShader]):
                 obj.binding = UNIFORM_BLOCKS[member]
         # Texture unit i belongs to the i-th sampler declared (also one the compiler dropped as unused, so
         # a material's textures line up with the source the student reads, as with WGSL bindings).
-        samplers = list(dict.fromkeys(name for src in stages.values() for name in _declared_samplers(src.text)))
-        for unit, sampler in enumerate(samplers):
+        # The engine's own samplers (the shadow map) keep their reserved units and are no material texture.
+        declared = (name for src in stages.values() for name in _declared_samplers(src.text))
+        samplers = list(dict.fromkeys(name for name in declared if name not in ENGINE_SAMPLERS))
+        units = {**{sampler: unit for unit, sampler in enumerate(samplers)}, **ENGINE_SAMPLERS}
+        for sampler, unit in units.items():
             if sampler in uniforms:
                 program[sampler].value = unit
         shader = GLShader(name, program, attributes, samplers, uniforms)

@@ -1,7 +1,8 @@
 """The OpenGL renderer: a moderngl context (EGL offscreen, or a glfw window) and an sRGB offscreen target.
 
 Each frame: one write of the frame uniform block, one write of all instance data, then one instanced
-draw call per (material, mesh) batch.
+draw call per (material, mesh) batch. With a shadow-casting light, a depth-only pass from the light
+draws the opaque batches into the shadow map first.
 """
 
 from __future__ import annotations
@@ -18,14 +19,17 @@ from ..base import Renderer
 from ..frame import (
     FRAME_FLOATS,
     INSTANCE_STRIDE,
-    LIGHTS_BYTES,
+    LIGHTS_BLOCK_BYTES,
+    SHADOW_MAP_SIZE,
+    SHADOW_SHADER,
     SKY_SHADER,
     SKY_STATE,
+    DrawBatch,
     FrameData,
     instance_capacity,
 )
 from ..shader_files import SNIPPETS_DIR
-from .libs import GL_SRGB8_ALPHA8, GLMesh, GLShader, MaterialLib, MeshLib, ShaderLib, TextureLib
+from .libs import ENGINE_SAMPLERS, GL_SRGB8_ALPHA8, GLMesh, GLShader, MaterialLib, MeshLib, ShaderLib, TextureLib
 
 GL_FRAMEBUFFER_SRGB = 0x8DB9
 GL_TEXTURE_CUBE_MAP_SEAMLESS = 0x884F
@@ -49,8 +53,9 @@ class OpenGLRenderer(Renderer):
         self.meshes = MeshLib(self.ctx, self.stats)
         self.materials = MaterialLib(self.shaders, self.textures, self.stats)
         self._frame_ubo = self.ctx.buffer(reserve=FRAME_FLOATS * 4)
-        self._lights_ubo = self.ctx.buffer(reserve=LIGHTS_BYTES)
+        self._lights_ubo = self.ctx.buffer(reserve=LIGHTS_BLOCK_BYTES)
         self._sky: tuple[GLShader, moderngl.VertexArray] | None = None
+        self._shadow: tuple[moderngl.Texture, moderngl.Framebuffer] | None = None
         self._instance_buffer: moderngl.Buffer | None = None
         self._vaos: dict[tuple[str, str], moderngl.VertexArray] = {}
         self._state: tuple[Any, ...] | None = None
@@ -82,6 +87,14 @@ class OpenGLRenderer(Renderer):
     # --- a frame ------------------------------------------------------------------------------------
     def render(self, data: FrameData, assets: Assets) -> None:
         self.stats["draw_calls"] = 0
+        self._frame_ubo.write(data.frame)
+        self._frame_ubo.bind_to_uniform_block(0)
+        self._lights_ubo.write(data.lights)
+        self._lights_ubo.bind_to_uniform_block(1)
+        if data.batches:
+            self._upload_instances(data.instances)
+        if data.shadows:
+            self._draw_shadow_map(data, assets)
         # --8<-- [start:clear]
         fbo = self._fbo
         fbo.use()
@@ -90,12 +103,6 @@ class OpenGLRenderer(Renderer):
         r, g, b, a = (float(x) for x in data.clear_color)
         fbo.clear(r, g, b, a, depth=0.0 if data.reverse_z else 1.0)
         # --8<-- [end:clear]
-        self._frame_ubo.write(data.frame)
-        self._frame_ubo.bind_to_uniform_block(0)
-        self._lights_ubo.write(data.lights)
-        self._lights_ubo.bind_to_uniform_block(1)
-        if data.batches:
-            self._upload_instances(data.instances)
         self._state = None
         sky_drawn = data.skybox is None
         for batch in data.batches:
@@ -106,20 +113,55 @@ class OpenGLRenderer(Renderer):
             mesh = self.resolve_mesh(batch.mesh, assets)
             self._apply_state(material.data, data.reverse_z)
             material.apply()
-            vao = self._vertex_array(material.shader, mesh)
-            offset = batch.first_instance * INSTANCE_STRIDE
-            for i, location in enumerate(INSTANCE_LOCATIONS):
-                if location in material.shader.attributes:
-                    vao.bind(location, "f", self._instance_buffer, "4f", offset=offset + 16 * i,
-                             stride=INSTANCE_STRIDE, divisor=1)
-            vao.render(moderngl.TRIANGLES, vertices=mesh.count, instances=batch.count)
-            self.stats["draw_calls"] += 1
+            self._draw_batch(material.shader, mesh, batch)
         if not sky_drawn:
             self._draw_sky(data.skybox, assets, data.reverse_z)
         for overlay in self.overlays:
             overlay(self)
             self._state = None  # an overlay may change any GL state
         self._present()
+
+    def _draw_batch(self, shader: GLShader, mesh: GLMesh, batch: DrawBatch) -> None:
+        """One instanced draw of ``batch`` with ``shader``, its instance rows bound from the shared buffer."""
+        vao = self._vertex_array(shader, mesh)
+        offset = batch.first_instance * INSTANCE_STRIDE
+        for i, location in enumerate(INSTANCE_LOCATIONS):
+            if location in shader.attributes:
+                vao.bind(location, "f", self._instance_buffer, "4f", offset=offset + 16 * i,
+                         stride=INSTANCE_STRIDE, divisor=1)
+        vao.render(moderngl.TRIANGLES, vertices=mesh.count, instances=batch.count)
+        self.stats["draw_calls"] += 1
+
+    # --8<-- [start:shadow_pass]
+    def _draw_shadow_map(self, data: FrameData, assets: Assets) -> None:
+        """The shadow pass: every opaque batch, depth only, from the light into the shadow map; then the
+        map is bound for the main pass. The map, its framebuffer and the shader are built on first use."""
+        if self._shadow is None:
+            size = (SHADOW_MAP_SIZE, SHADOW_MAP_SIZE)
+            texture = self.ctx.depth_texture(size)
+            # A comparing sampler (sampler2DShadow): texture() returns lit (1) or not (0) per texel, and
+            # linear filtering blends four such results.
+            texture.compare_func = "<="
+            texture.filter = (moderngl.LINEAR, moderngl.LINEAR)
+            texture.repeat_x = texture.repeat_y = False
+            self._shadow = (texture, self.ctx.framebuffer(depth_attachment=texture))
+            self.stats["shadow_maps_created"] += 1
+        texture, framebuffer = self._shadow
+        shader = self.shaders.build(SHADOW_SHADER, SNIPPETS_DIR / "shadow_depth.vert",
+                                    SNIPPETS_DIR / "shadow_depth.frag")
+        framebuffer.use()
+        framebuffer.depth_mask = True
+        framebuffer.clear(depth=1.0)
+        ctx = self.ctx
+        ctx.disable(moderngl.BLEND | moderngl.CULL_FACE)  # both faces cast: open meshes and planes too
+        ctx.enable(moderngl.DEPTH_TEST)
+        ctx.depth_func = "<="
+        for batch in data.batches:
+            if not batch.transparent:
+                self._draw_batch(shader, self.resolve_mesh(batch.mesh, assets), batch)
+        texture.use(location=ENGINE_SAMPLERS["u_shadow_map"])
+        self.stats["shadow_passes"] += 1
+    # --8<-- [end:shadow_pass]
 
     def _draw_sky(self, texture_name: str, assets: Assets, reverse_z: bool) -> None:
         """The sky pass, built on first use: a full-screen triangle at the far plane, after opaque geometry."""
@@ -215,7 +257,8 @@ class OpenGLRenderer(Renderer):
     def live_objects(self) -> int:
         """GPU objects this renderer holds now (for leak tests)."""
         libraries = (self.textures, self.shaders, self.meshes, self.materials)
-        return len(self._vaos) + (self._sky is not None) + sum(len(lib) for lib in libraries)
+        return (len(self._vaos) + (self._sky is not None) + (self._shadow is not None)
+                + sum(len(lib) for lib in libraries))
 
     def release(self) -> None:
         for vao in self._vaos.values():
@@ -224,6 +267,10 @@ class OpenGLRenderer(Renderer):
         if self._sky is not None:
             self._sky[1].release()
             self._sky = None
+        if self._shadow is not None:
+            for obj in reversed(self._shadow):
+                obj.release()
+            self._shadow = None
         for lib in (self.materials, self.meshes, self.shaders, self.textures):
             lib.release()
         if self._instance_buffer is not None:

@@ -15,4 +15,6 @@ layout(std140) uniform Lights {
     vec4 u_ambient;                     // rgb: ambient light (linear)
     vec4 u_light_position[MAX_LIGHTS];  // xyz: position (w = 1) or direction towards the light (w = 0)
     vec4 u_light_color[MAX_LIGHTS];     // rgb: linear colour × intensity, a: range (0 = no falloff)
+    mat4 u_light_view_projection;       // world -> clip space of the shadow-casting light
+    vec4 u_shadow;                      // x: 1 = shadow map on, y: depth bias, z: 1 / map size, w: light index
 };

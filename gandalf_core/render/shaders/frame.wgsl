@@ -16,5 +16,7 @@ struct Lights {
     ambient: vec4<f32>,                        // rgb: ambient light (linear)
     position: array<vec4<f32>, MAX_LIGHTS>,    // xyz: position (w = 1) or direction towards the light (w = 0)
     color: array<vec4<f32>, MAX_LIGHTS>,       // rgb: linear colour × intensity, a: range (0 = no falloff)
+    light_view_projection: mat4x4<f32>,        // world -> clip space of the shadow-casting light
+    shadow: vec4<f32>,                         // x: 1 = shadow map on, y: depth bias, z: 1 / map size, w: light index
 };
 @group(0) @binding(1) var<uniform> lights: Lights;

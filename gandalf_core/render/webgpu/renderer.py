@@ -1,8 +1,9 @@
 """The WebGPU renderer: a wgpu device, an ``rgba8unorm-srgb`` offscreen target, optional window surface.
 
 Each frame: one write of the frame uniforms, one write of all instance data, one render pass with one
-instanced draw per (material, mesh) batch. Pipelines are cached by what really selects them (shader,
-vertex layout, cull/depth/blend state): changing a material's colour never builds one.
+instanced draw per (material, mesh) batch, after a depth-only shadow pass when a light casts shadows.
+Pipelines are cached by what really selects them (shader, vertex layout, cull/depth/blend state):
+changing a material's colour never builds one.
 """
 
 from __future__ import annotations
@@ -20,9 +21,12 @@ from ..base import Renderer
 from ..frame import (
     FRAME_FLOATS,
     INSTANCE_STRIDE,
-    LIGHTS_BYTES,
+    LIGHTS_BLOCK_BYTES,
+    SHADOW_MAP_SIZE,
+    SHADOW_SHADER,
     SKY_SHADER,
     SKY_STATE,
+    DrawBatch,
     FrameData,
     instance_capacity,
 )
@@ -66,19 +70,29 @@ class WebGPURenderer(Renderer):
                 self._surface.configure(device=self.device, format=self._surface_format)
             self._surface.set_physical_size(*window.framebuffer_size)
             self._present = _PresentBlit(self.device, self._surface_format)
-        # Group 0 is the engine's, shared by every pipeline: frame uniforms (0) and lights (1).
+        # Group 0 is the engine's, shared by every pipeline: frame uniforms (0), lights (1), and the shadow
+        # map (2) with its comparison sampler (3), which shaders declare by including shadow.wgsl.
         visible = wgpu.ShaderStage.VERTEX | wgpu.ShaderStage.FRAGMENT
         self.frame_layout = self.device.create_bind_group_layout(entries=[
             {"binding": 0, "visibility": visible, "buffer": {"type": "uniform"}},
             {"binding": 1, "visibility": visible, "buffer": {"type": "uniform"}},
+            {"binding": 2, "visibility": wgpu.ShaderStage.FRAGMENT,
+             "texture": {"sample_type": "depth", "view_dimension": "2d"}},
+            {"binding": 3, "visibility": wgpu.ShaderStage.FRAGMENT, "sampler": {"type": "comparison"}},
         ], label="frame")
         uniform = wgpu.BufferUsage.UNIFORM | wgpu.BufferUsage.COPY_DST
         self._frame_buffer = self.device.create_buffer(size=FRAME_FLOATS * 4, usage=uniform)
-        self._lights_buffer = self.device.create_buffer(size=LIGHTS_BYTES, usage=uniform)
-        self._frame_group = self.device.create_bind_group(layout=self.frame_layout, entries=[
-            {"binding": 0, "resource": {"buffer": self._frame_buffer}},
-            {"binding": 1, "resource": {"buffer": self._lights_buffer}},
-        ])
+        self._lights_buffer = self.device.create_buffer(size=LIGHTS_BLOCK_BYTES, usage=uniform)
+        self._shadow_sampler = self.device.create_sampler(
+            compare="less-equal", mag_filter="linear", min_filter="linear",
+            address_mode_u="clamp-to-edge", address_mode_v="clamp-to-edge",
+        )
+        # Without a shadow-casting light the group holds a 1x1 stand-in map: no pass, no real map.
+        self._no_shadow_map = self.device.create_texture(
+            size=(1, 1, 1), format=DEPTH_FORMAT, usage=wgpu.TextureUsage.TEXTURE_BINDING, label="no shadow map"
+        )
+        self._frame_group = self._create_frame_group(self._no_shadow_map.create_view())
+        self._shadow: tuple[Any, Any, Any] | None = None  # the map, its view, the frame group that binds it
         self._sky_materials: dict[str, Any] = {}
         self.textures = TextureLib(self.device, self.stats)
         self.shaders = ShaderLib(self.device, self.stats)
@@ -87,6 +101,14 @@ class WebGPURenderer(Renderer):
         self._pipelines: dict[tuple[Any, ...], Any] = {}
         self._instance_buffer: Any = None
         self._create_targets()
+
+    def _create_frame_group(self, shadow_view: Any) -> Any:
+        return self.device.create_bind_group(layout=self.frame_layout, entries=[
+            {"binding": 0, "resource": {"buffer": self._frame_buffer}},
+            {"binding": 1, "resource": {"buffer": self._lights_buffer}},
+            {"binding": 2, "resource": shadow_view},
+            {"binding": 3, "resource": self._shadow_sampler},
+        ])
 
     # --8<-- [start:targets]
     def _create_targets(self) -> None:
@@ -118,6 +140,9 @@ class WebGPURenderer(Renderer):
             draws.append((batch, material, mesh, self._pipeline(material, mesh, data.reverse_z)))
         sky = self._sky_draw(data.skybox, assets, data.reverse_z) if data.skybox is not None else None
         encoder = self.device.create_command_encoder()
+        frame_group = self._frame_group
+        if data.shadows:
+            frame_group = self._draw_shadow_map(encoder, draws)
         # --8<-- [start:clear]
         rpass = encoder.begin_render_pass(
             color_attachments=[{
@@ -129,7 +154,7 @@ class WebGPURenderer(Renderer):
                 "depth_load_op": "clear", "depth_store_op": "store",
             },
         )
-        rpass.set_bind_group(0, self._frame_group)
+        rpass.set_bind_group(0, frame_group)
         # --8<-- [end:clear]
 
         def draw_sky() -> None:
@@ -146,19 +171,7 @@ class WebGPURenderer(Renderer):
             rpass.set_pipeline(pipeline)
             if material.bind_group is not None:
                 rpass.set_bind_group(1, material.bind_group)
-            slot = 0
-            if attributes:
-                vbo, _layout = self.meshes.vertex_buffer(mesh, attributes)
-                rpass.set_vertex_buffer(slot, vbo)
-                slot += 1
-            if any(loc in material.shader.attributes for loc in INSTANCE_LOCATIONS):
-                rpass.set_vertex_buffer(slot, self._instance_buffer, batch.first_instance * INSTANCE_STRIDE)
-            if mesh.index_buffer is not None:
-                rpass.set_index_buffer(mesh.index_buffer, "uint32")
-                rpass.draw_indexed(mesh.count, batch.count)
-            else:
-                rpass.draw(mesh.count, batch.count)
-            self.stats["draw_calls"] += 1
+            self._draw_batch(rpass, material.shader, mesh, attributes, batch)
         if sky is not None:
             draw_sky()
         rpass.end()
@@ -171,6 +184,73 @@ class WebGPURenderer(Renderer):
         queue.submit([encoder.finish()])
         if surface_texture is not None:
             self._surface.present()
+
+    def _draw_batch(self, rpass: Any, shader: WGPUShader, mesh: WGPUMesh, attributes: tuple[str, ...],
+                    batch: DrawBatch) -> None:
+        """One instanced draw of ``batch``: the mesh's buffer with ``attributes``, then the instance rows."""
+        slot = 0
+        if attributes:
+            vbo, _layout = self.meshes.vertex_buffer(mesh, attributes)
+            rpass.set_vertex_buffer(slot, vbo)
+            slot += 1
+        if any(loc in shader.attributes for loc in INSTANCE_LOCATIONS):
+            rpass.set_vertex_buffer(slot, self._instance_buffer, batch.first_instance * INSTANCE_STRIDE)
+        if mesh.index_buffer is not None:
+            rpass.set_index_buffer(mesh.index_buffer, "uint32")
+            rpass.draw_indexed(mesh.count, batch.count)
+        else:
+            rpass.draw(mesh.count, batch.count)
+        self.stats["draw_calls"] += 1
+
+    # --8<-- [start:shadow_pass]
+    def _draw_shadow_map(self, encoder: Any, draws: list[tuple[Any, ...]]) -> Any:
+        """Record the shadow pass (every opaque batch, depth only, from the light) and return the frame
+        bind group that binds the map for the main pass. The map, shader and pipelines are built on first use."""
+        if self._shadow is None:
+            texture = self.device.create_texture(
+                size=(SHADOW_MAP_SIZE, SHADOW_MAP_SIZE, 1), format=DEPTH_FORMAT,
+                usage=wgpu.TextureUsage.RENDER_ATTACHMENT | wgpu.TextureUsage.TEXTURE_BINDING, label="shadow map",
+            )
+            view = texture.create_view()
+            self._shadow = (texture, view, self._create_frame_group(view))
+            self.stats["shadow_maps_created"] += 1
+        _texture, view, frame_group = self._shadow
+        shader = self.shaders.build(SHADOW_SHADER, SNIPPETS_DIR / "shadow_depth.wgsl")
+        rpass = encoder.begin_render_pass(color_attachments=[], depth_stencil_attachment={
+            "view": view, "depth_clear_value": 1.0, "depth_load_op": "clear", "depth_store_op": "store",
+        })
+        # The stand-in group: the map itself must not be bound while this pass writes it.
+        rpass.set_bind_group(0, self._frame_group)
+        for batch, _material, mesh, _pipeline in draws:
+            if batch.transparent:
+                continue
+            pipeline, attributes = self._shadow_pipeline(shader, mesh)
+            rpass.set_pipeline(pipeline)
+            self._draw_batch(rpass, shader, mesh, attributes, batch)
+        rpass.end()
+        self.stats["shadow_passes"] += 1
+        return frame_group
+
+    def _shadow_pipeline(self, shader: WGPUShader, mesh: WGPUMesh) -> tuple[Any, tuple[str, ...]]:
+        """The depth-only pipeline for ``mesh``'s position layout (one for all meshes of the same layout)."""
+        attributes = mesh_attributes(shader.name, shader.attributes)
+        _vbo, layout = self.meshes.vertex_buffer(mesh, attributes)
+        key = (SHADOW_SHADER, layout.stride, tuple((a.wgpu_format, a.offset_bytes) for a in layout.attributes))
+        pipeline = self._pipelines.get(key)
+        if pipeline is None:
+            buffers = [self._vertex_layout(layout), self._instance_layout(shader)]
+            pipeline = self._pipelines[key] = self.device.create_render_pipeline(
+                layout=self.device.create_pipeline_layout(bind_group_layouts=[self.frame_layout]),
+                vertex={"module": shader.module, "entry_point": shader.vertex_entry, "buffers": buffers},
+                fragment={"module": shader.module, "entry_point": shader.fragment_entry, "targets": []},
+                # Both faces cast, so open meshes and single planes throw shadows too.
+                primitive={"topology": "triangle-list", "cull_mode": "none"},
+                depth_stencil={"format": DEPTH_FORMAT, "depth_write_enabled": True, "depth_compare": "less-equal"},
+                label="shadow pipeline",
+            )
+            self.stats["pipelines_created"] += 1
+        return pipeline, attributes
+    # --8<-- [end:shadow_pass]
 
     def _sky_draw(self, texture_name: str, assets: Assets, reverse_z: bool) -> tuple[Any, Any]:
         """The sky pass's pipeline and bind group, built on first use (only scenes with a skybox pay for it)."""
@@ -210,20 +290,27 @@ class WebGPURenderer(Renderer):
             buffers = []
             if attributes:
                 _vbo, layout = self.meshes.vertex_buffer(mesh, attributes)
-                buffers.append({
-                    "array_stride": layout.stride, "step_mode": "vertex",
-                    "attributes": [{"format": a.wgpu_format, "offset": a.offset_bytes, "shader_location": a.location}
-                                   for a in layout.attributes],
-                })
-            instance_locations = [loc for loc in INSTANCE_LOCATIONS if loc in shader.attributes]
-            if instance_locations:
-                buffers.append({
-                    "array_stride": INSTANCE_STRIDE, "step_mode": "instance",
-                    "attributes": [{"format": "float32x4", "offset": 16 * (loc - 5), "shader_location": loc}
-                                   for loc in instance_locations],
-                })
+                buffers.append(self._vertex_layout(layout))
+            if any(loc in shader.attributes for loc in INSTANCE_LOCATIONS):
+                buffers.append(self._instance_layout(shader))
             pipeline = self._pipelines[key] = self._create_pipeline(shader, buffers, data, reverse_z)
         return pipeline, attributes
+
+    @staticmethod
+    def _vertex_layout(layout: Any) -> dict[str, Any]:
+        return {
+            "array_stride": layout.stride, "step_mode": "vertex",
+            "attributes": [{"format": a.wgpu_format, "offset": a.offset_bytes, "shader_location": a.location}
+                           for a in layout.attributes],
+        }
+
+    @staticmethod
+    def _instance_layout(shader: WGPUShader) -> dict[str, Any]:
+        return {
+            "array_stride": INSTANCE_STRIDE, "step_mode": "instance",
+            "attributes": [{"format": "float32x4", "offset": 16 * (loc - 5), "shader_location": loc}
+                           for loc in INSTANCE_LOCATIONS if loc in shader.attributes],
+        }
 
     def _create_pipeline(self, shader: WGPUShader, buffers: list[dict[str, Any]], data: MaterialData,
                          reverse_z: bool) -> Any:
@@ -273,7 +360,8 @@ class WebGPURenderer(Renderer):
     def live_objects(self) -> int:
         """GPU objects this renderer holds now (for leak tests)."""
         libraries = (self.textures, self.shaders, self.meshes, self.materials)
-        return len(self._pipelines) + len(self._sky_materials) + sum(len(lib) for lib in libraries)
+        return (len(self._pipelines) + len(self._sky_materials) + (self._shadow is not None)
+                + sum(len(lib) for lib in libraries))
 
     def release(self) -> None:
         for lib in (self.materials, self.meshes, self.shaders, self.textures):
@@ -282,6 +370,10 @@ class WebGPURenderer(Renderer):
         self._sky_materials.clear()
         if self._instance_buffer is not None:
             self._instance_buffer.destroy()
+        if self._shadow is not None:
+            self._shadow[0].destroy()
+            self._shadow = None
+        self._no_shadow_map.destroy()
         self._frame_buffer.destroy()
         self._lights_buffer.destroy()
         self._color.destroy()
