@@ -85,3 +85,36 @@ def save_failure(actual: np.ndarray, expected: np.ndarray, name: str) -> list[Pa
     Image.fromarray(expected, "RGBA").save(paths[1])
     Image.fromarray(diff, "RGB").save(paths[2])
     return paths
+
+
+# --- numpy references for lit spheres (the shading exercises grade against these) ----------------------
+def sphere_hits(
+    eye: np.ndarray, fov_degrees: float, size: tuple[int, int]
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Ray-trace the unit sphere at the origin seen from ``eye`` (looking at the origin down -Z).
+
+    One ray per pixel centre of a ``size = (width, height)`` picture with a vertical field of view of
+    ``fov_degrees``: returns the hit mask (H, W), the hit points (H, W, 3) and the unit rays (H, W, 3).
+    """
+    eye = np.asarray(eye, dtype=np.float64)
+    w, h = size
+    x = (np.arange(w) + 0.5) / w * 2.0 - 1.0
+    y = 1.0 - (np.arange(h) + 0.5) / h * 2.0
+    tan = np.tan(np.radians(fov_degrees) / 2)
+    d = np.stack(np.broadcast_arrays(x[None, :] * tan * w / h, y[:, None] * tan, -np.ones((h, w))), -1)
+    d /= np.linalg.norm(d, axis=-1, keepdims=True)
+    b = np.sum(d * eye, axis=-1)
+    disc = b * b - (eye @ eye - 1.0)
+    t = -b - np.sqrt(np.maximum(disc, 0.0))
+    return disc > 0.0, eye + t[..., None] * d, d
+
+
+def inner(mask: np.ndarray, pixels: int = 2) -> np.ndarray:
+    """``mask`` eroded by ``pixels``: silhouette pixels are partly covered and rasterised differently."""
+    out = mask.copy()
+    for _ in range(pixels):
+        out[1:] &= out[:-1]
+        out[:-1] &= out[1:]
+        out[:, 1:] &= out[:, :-1]
+        out[:, :-1] &= out[:, 1:]
+    return out

@@ -12,7 +12,7 @@ from types import ModuleType
 
 import numpy as np
 
-from gandalf_core import Application, Scene, TransformComponent
+from gandalf_core import Application, Scene, TransformComponent, testing
 from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import (
@@ -96,27 +96,11 @@ def sphere_scene(material: MaterialData, lights) -> Scene:
 # --- numpy references -------------------------------------------------------------------------------
 def sphere_hits(size: tuple[int, int] = SIZE) -> tuple[np.ndarray, np.ndarray]:
     """(hit mask (H, W), hit points (H, W, 3)) of the unit sphere, one ray per pixel centre."""
-    w, h = size
-    x = (np.arange(w) + 0.5) / w * 2.0 - 1.0
-    y = 1.0 - (np.arange(h) + 0.5) / h * 2.0
-    tan = np.tan(np.radians(FOV) / 2)
-    d = np.stack(np.broadcast_arrays(x[None, :] * tan * w / h, y[:, None] * tan, -np.ones((h, w))), -1)
-    d /= np.linalg.norm(d, axis=-1, keepdims=True)
-    b = np.sum(d * EYE, axis=-1)
-    disc = b * b - (EYE @ EYE - 1.0)
-    t = -b - np.sqrt(np.maximum(disc, 0.0))
-    return disc > 0.0, EYE + t[..., None] * d
+    mask, points, _rays = testing.sphere_hits(EYE, FOV, size)
+    return mask, points
 
 
-def inner(mask: np.ndarray, pixels: int = 2) -> np.ndarray:
-    """``mask`` eroded by ``pixels`` (silhouette pixels are partly covered)."""
-    out = mask.copy()
-    for _ in range(pixels):
-        out[1:] &= out[:-1]
-        out[:-1] &= out[1:]
-        out[:, 1:] &= out[:, :-1]
-        out[:, :-1] &= out[:, 1:]
-    return out
+inner = testing.inner
 
 
 def _dot(a, b):
