@@ -6,7 +6,7 @@ from .camera_controllers import (
     OrbitControllerComponent,
     OrbitControllerSystem,
 )
-from .light_system import LightSystem, pack_lights
+from .light_system import LightSystem, pack_lights, pack_shadow
 from .transform_system import TransformSystem, set_parent_keep_world, world_matrix
 
 __all__ = [
@@ -17,6 +17,7 @@ __all__ = [
     "OrbitControllerSystem",
     "TransformSystem",
     "pack_lights",
+    "pack_shadow",
     "set_parent_keep_world",
     "world_matrix",
 ]

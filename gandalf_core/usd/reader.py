@@ -201,7 +201,12 @@ class _Reader:
             linear = read_floats(ctx, prim, "inputs:color", ("color3f",), 3, np.ones(3))
             color = read_floats(ctx, prim, "gandalf:lightColor", ("double3",), 3, linear_to_srgb(linear))
             intensity = read_float(ctx, prim, "gandalf:intensity", read_float(ctx, prim, "inputs:intensity", 1.0))
-            return LightComponent(kind, color, intensity, read_float(ctx, prim, "gandalf:range", 0.0))
+            return LightComponent(
+                kind, color, intensity, read_float(ctx, prim, "gandalf:range", 0.0),
+                cast_shadows=read(ctx, prim, "gandalf:castShadows", "bool", False),
+                shadow_extent=read_float(ctx, prim, "gandalf:shadowExtent", 10.0),
+                shadow_depth=read_float(ctx, prim, "gandalf:shadowDepth", 50.0),
+            )
 
         return self.guard(prim, "gandalf:lightKind", build)
 

@@ -254,6 +254,9 @@ class _Writer:
         write(prim, "gandalf:lightColor", T.Double3, Gf.Vec3d(*map(float, light.color)))
         write(prim, "gandalf:intensity", T.Double, light.intensity)
         write(prim, "gandalf:range", T.Double, light.range)
+        write(prim, "gandalf:castShadows", T.Bool, bool(light.cast_shadows))
+        write(prim, "gandalf:shadowExtent", T.Double, light.shadow_extent)
+        write(prim, "gandalf:shadowDepth", T.Double, light.shadow_depth)
 
     def write_registered(self, entity: uuid.UUID, prim: Usd.Prim, comps: dict[type, Component]) -> None:
         saved: list[str] = []

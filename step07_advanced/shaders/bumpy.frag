@@ -29,7 +29,9 @@ void main() {
     uv = parallax_uv(u_height_map, uv, vec3(dot(v, t), dot(v, b), dot(v, n)), u_height_scale, dx, dy);
     vec3 base = u_color.rgb * textureGrad(u_albedo, uv, dx, dy).rgb;
     vec3 shading = perturb_normal(n, v_tangent, textureGrad(u_normal_map, uv, dx, dy).rgb);
-    vec3 color = pbr_direct(v_world, shading, v, base, u_metallic, u_roughness);
+    // The shadow map's bias follows the surface's own slope, not the bumps the normal map adds.
+    float shadow = shadow_factor(v_world, n);
+    vec3 color = pbr_direct(v_world, shading, v, base, u_metallic, u_roughness, shadow);
     color += u_env_strength * pbr_environment(u_env, shading, v, base, u_metallic, u_roughness);
     f_color = vec4(color, 1.0);
 }

@@ -34,7 +34,9 @@ fn fs_main(in: SurfaceOut) -> @location(0) vec4<f32> {
     let uv = parallax_uv(height_map, height_sampler, uv0, v_ts, material.height_scale, dx, dy);
     let base = material.color.rgb * textureSampleGrad(albedo, albedo_sampler, uv, dx, dy).rgb;
     let shading = perturb_normal(n, in.tangent, textureSampleGrad(normal_map, normal_sampler, uv, dx, dy).rgb);
-    var color = pbr_direct(in.world, shading, v, base, material.metallic, material.roughness);
+    // The shadow map's bias follows the surface's own slope, not the bumps the normal map adds.
+    let shadow = shadow_factor(in.world, n);
+    var color = pbr_direct(in.world, shading, v, base, material.metallic, material.roughness, shadow);
     color += material.env_strength
         * pbr_environment(env, env_sampler, shading, v, base, material.metallic, material.roughness);
     return vec4<f32>(color, 1.0);

@@ -14,7 +14,7 @@ out vec4 f_color;
 void main() {
     vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
     vec3 v = safe_normalize(u_camera_position.xyz - v_world, n);
-    vec3 color = pbr_direct(v_world, n, v, u_color.rgb, u_metallic, u_roughness);
+    vec3 color = pbr_direct(v_world, n, v, u_color.rgb, u_metallic, u_roughness, shadow_factor(v_world, n));
     color += u_env_strength * pbr_environment(u_env, n, v, u_color.rgb, u_metallic, u_roughness);
     f_color = vec4(color, 1.0);
 }

@@ -16,7 +16,8 @@ struct Material {
 fn fs_main(in: SurfaceOut) -> @location(0) vec4<f32> {
     let n = safe_normalize(in.normal, vec3<f32>(0.0, 1.0, 0.0));
     let v = safe_normalize(frame.camera_position.xyz - in.world, n);
-    var color = pbr_direct(in.world, n, v, material.color.rgb, material.metallic, material.roughness);
+    let shadow = shadow_factor(in.world, n);
+    var color = pbr_direct(in.world, n, v, material.color.rgb, material.metallic, material.roughness, shadow);
     color += material.env_strength
         * pbr_environment(env, env_sampler, n, v, material.color.rgb, material.metallic, material.roughness);
     return vec4<f32>(color, 1.0);

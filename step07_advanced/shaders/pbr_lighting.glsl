@@ -1,6 +1,8 @@
 // Metallic-roughness shading with every light of the scene, plus an environment term from a sky cube map.
-// ggx_specular() and fresnel_schlick() come from brdf.glsl, found in exercises/ or solutions/.
+// ggx_specular() and fresnel_schlick() come from brdf.glsl, found in exercises/ or solutions/;
+// shadow_factor() from the engine's shadow.glsl.
 #include "frame.glsl"
+#include "shadow.glsl"
 #include "brdf.glsl"
 
 const float PI = 3.14159265358979;
@@ -34,7 +36,8 @@ void light_at(int i, vec3 p, vec3 n, out vec3 l, out vec3 radiance) {
 
 // Direct light: sum over the lights of (k_d · base/π + specular BRDF) · radiance · n·l, plus the lights
 // block's ambient. k_d = (1 - F)(1 - metallic): what the surface reflects specularly it cannot also scatter.
-vec3 pbr_direct(vec3 p, vec3 n, vec3 v, vec3 base, float metallic, float roughness) {
+// `shadow` is the part of the shadow-casting light that reaches p (shadow_factor(); 1 without shadows).
+vec3 pbr_direct(vec3 p, vec3 n, vec3 v, vec3 base, float metallic, float roughness, float shadow) {
     float r = clamp(roughness, MIN_ROUGHNESS, 1.0);
     vec3 f0 = mix(vec3(0.04), base, metallic);
     vec3 diffuse = base * (1.0 - metallic);
@@ -43,6 +46,9 @@ vec3 pbr_direct(vec3 p, vec3 n, vec3 v, vec3 base, float metallic, float roughne
     for (int i = 0; i < count; ++i) {
         vec3 l, radiance;
         light_at(i, p, n, l, radiance);
+        if (i == int(u_shadow.w)) {
+            radiance *= shadow;
+        }
         float n_dot_l = dot(n, l);
         if (n_dot_l <= 0.0) {
             continue;

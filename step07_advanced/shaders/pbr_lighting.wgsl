@@ -1,6 +1,8 @@
 // Metallic-roughness shading with every light of the scene, plus an environment term from a sky cube map.
-// ggx_specular() and fresnel_schlick() come from brdf.wgsl, found in exercises/ or solutions/.
+// ggx_specular() and fresnel_schlick() come from brdf.wgsl, found in exercises/ or solutions/;
+// shadow_factor() from the engine's shadow.wgsl.
 #include "frame.wgsl"
+#include "shadow.wgsl"
 #include "brdf.wgsl"
 
 const PI: f32 = 3.14159265358979;
@@ -39,7 +41,9 @@ fn light_at(i: i32, p: vec3<f32>, n: vec3<f32>) -> LightSample {
 
 // Direct light: sum over the lights of (k_d · base/π + specular BRDF) · radiance · n·l, plus the lights
 // block's ambient. k_d = (1 - F)(1 - metallic): what the surface reflects specularly it cannot also scatter.
-fn pbr_direct(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>, metallic: f32, roughness: f32) -> vec3<f32> {
+// `shadow` is the part of the shadow-casting light that reaches p (shadow_factor(); 1 without shadows).
+fn pbr_direct(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>, metallic: f32, roughness: f32,
+              shadow: f32) -> vec3<f32> {
     let r = clamp(roughness, MIN_ROUGHNESS, 1.0);
     let f0 = mix(vec3<f32>(0.04), base, metallic);
     let diffuse = base * (1.0 - metallic);
@@ -51,9 +55,10 @@ fn pbr_direct(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>, metalli
         if (n_dot_l <= 0.0) {
             continue;
         }
+        let radiance = select(s.radiance, s.radiance * shadow, i == i32(lights.shadow.w));
         let h = safe_normalize(s.l + v, n);
         let k_d = (1.0 - fresnel_schlick(max(dot(h, v), 0.0), f0)) * (1.0 - metallic);
-        color += (k_d * base / PI + ggx_specular(n, v, s.l, r, f0)) * s.radiance * n_dot_l;
+        color += (k_d * base / PI + ggx_specular(n, v, s.l, r, f0)) * radiance * n_dot_l;
     }
     return color;
 }

@@ -104,7 +104,8 @@ def full_scene() -> Scene:
                         CameraComponent(near=0.5, far=20.0, projection="orthographic", height=8.0, aspect=1.5,
                                         primary=False, reverse_z=True))
     scene.create_entity(InfoComponent("sun"), TransformComponent(rotation=(-45, 30, 0)),
-                        LightComponent("directional", (1.0, 0.95, 0.9), 0.7))
+                        LightComponent("directional", (1.0, 0.95, 0.9), 0.7, cast_shadows=True, shadow_extent=7.5,
+                                       shadow_depth=30.0))
     scene.create_entity(InfoComponent("bulb"), TransformComponent((0, 2, 2)), LightComponent("point", (1, .5, .2), 2.0,
                                                                                               range=5.5))
     scene.create_entity(InfoComponent("sky light"), TransformComponent(), LightComponent("ambient", (0.2, 0.2, 0.3)))
