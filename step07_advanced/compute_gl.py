@@ -37,7 +37,7 @@ class GLParticleKernel:
 
     def step(self, params: SimParams) -> None:
         self.params.write(params.pack())
-        self.params.bind_to_uniform_block(0)
+        self.params.bind_to_uniform_block(4)  # the shader's Sim block (0 and 1 are the engine's)
         self.particles.bind_to_storage_buffer(1)
         self.program.run(group_x=-(-self.count // WORKGROUP_SIZE))
         # Make the kernel's writes visible to the next dispatch and to the read-back.

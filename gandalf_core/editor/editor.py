@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import time
 import uuid
+import warnings
 import weakref
 from pathlib import Path
 from typing import Any
@@ -141,12 +142,16 @@ class Editor:
     @property
     def wants_mouse(self) -> bool:
         """True while the pointer is over a panel: camera controllers should leave the mouse alone."""
+        if not self.enabled:
+            return False
         self._imgui.set_current_context(self._context)
         return bool(self._imgui.get_io().want_capture_mouse)
 
     @property
     def wants_keyboard(self) -> bool:
         """True while a text field has the keyboard."""
+        if not self.enabled:
+            return False
         self._imgui.set_current_context(self._context)
         return bool(self._imgui.get_io().want_capture_keyboard)
 
@@ -166,8 +171,16 @@ class Editor:
         if current is None:
             raise ValueError(f"material '{name}' has not been built by the renderer yet")
         color = (*(float(c) for c in rgb), self._material_colors[name][3])
-        self.app.renderer.materials.get(name).set_color(color)
+        materials = self.app.renderer.materials
+        material = materials.get(name)
+        material.set_color(color)
         self._material_colors[name] = color
+        # Write it back to the scene's assets too, so that Save keeps it.
+        assets = self.app.scene.assets
+        if name in assets.materials:
+            data = assets.materials[name].with_color(color)
+            assets.materials[name] = material.data = data
+            materials.adopt(name, data)
 
     # --- Save / Load ----------------------------------------------------------------------------------
     def _report(self, message: str, error: bool) -> bool:
@@ -181,14 +194,14 @@ class Editor:
         except ImportError as exc:
             return self._report(f"cannot save: USD support is unavailable ({exc})", error=True)
         scene = self.app.scene
-        layout = self._detach_panels(scene)
         try:
-            save_scene(scene, path)
+            with warnings.catch_warnings(record=True) as caught:  # the writer leaves the editor's panels out
+                warnings.simplefilter("always")
+                save_scene(scene, path)
         except Exception as exc:  # noqa: BLE001 - any failure is shown in the panel; the editor never crashes
             return self._report(f"save failed: {type(exc).__name__}: {exc}", error=True)
-        finally:
-            self._attach_panels(scene, layout)
-        return self._report(f"saved {path}", error=False)
+        notes = "; ".join(str(w.message) for w in caught)
+        return self._report(f"saved {path}" + (f" ({notes})" if notes else ""), error=False)
 
     def load(self, path: str | Path) -> bool:
         """Load a USD scene and switch to it (from the next frame); the outcome goes to ``status``."""
@@ -214,22 +227,6 @@ class Editor:
         self.app.switch_scene(scene)
         self.selected = None
         return self._report(f"loaded {path} as scene '{scene.name}'", error=False)
-
-    def _detach_panels(self, scene: Scene) -> list[EditorPanelComponent]:
-        entry = self._installed.get(id(scene))
-        if entry is None:
-            return []
-        panels = [scene.get_component(e, EditorPanelComponent) for e in entry[1] if e in scene]
-        for entity in entry[1]:
-            if entity in scene:
-                scene.destroy_entity(entity)
-        entry[1].clear()
-        return panels
-
-    def _attach_panels(self, scene: Scene, panels: list[EditorPanelComponent]) -> None:
-        entry = self._installed.get(id(scene))
-        if entry is not None:
-            entry[1].extend(scene.create_entity(p) for p in panels)
 
     # --- teardown -------------------------------------------------------------------------------------
     def disable(self) -> None:

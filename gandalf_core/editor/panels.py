@@ -8,7 +8,7 @@ on the :class:`~gandalf_core.editor.editor.Editor`, which every panel system hol
 from __future__ import annotations
 
 import uuid
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from imgui_bundle import imgui
@@ -130,18 +130,12 @@ class InspectorPanelSystem(PanelSystem):
 
     def _transform(self, transform: TransformComponent) -> None:
         width = imgui.calc_item_width()  # the three fields share it: X, Y, Z thirds from the left
-        changed, value = imgui.drag_float3("translation", list(transform.translation), 0.01)
-        self.remember("inspector/translation", width)
-        if changed:
-            transform.translation = value
-        changed, value = imgui.drag_float3("rotation", list(transform.rotation), 0.5)
-        self.remember("inspector/rotation", width)
-        if changed:
-            transform.rotation = value
-        changed, value = imgui.drag_float3("scale", list(transform.scale), 0.01)
-        self.remember("inspector/scale", width)
-        if changed:
-            transform.scale = value
+        for field, speed in (("translation", 0.01), ("rotation", 0.5), ("scale", 0.01)):
+            current = np.array(getattr(transform, field), dtype=np.float64)
+            changed, value = imgui.drag_float3(field, current.tolist(), speed)
+            self.remember(f"inspector/{field}", width)
+            if changed:
+                setattr(transform, field, _edited(current, value))
 
     def _material(self, name: str) -> None:
         imgui.text(name)
@@ -226,3 +220,10 @@ PANEL_SYSTEMS: tuple[type[PanelSystem], ...] = (
     HierarchyPanelSystem, InspectorPanelSystem, StatsPanelSystem, FilePanelSystem,
 )
 
+
+def _edited(current: np.ndarray, widget: Any) -> np.ndarray:
+    """The widget's values where the user changed them, the float64 values elsewhere (ImGui works in float32,
+    so an untouched axis would otherwise come back rounded)."""
+    widget = np.asarray(widget, dtype=np.float64)
+    moved = current.astype(np.float32) != widget.astype(np.float32)
+    return np.where(moved, widget, current)

@@ -65,7 +65,7 @@ class DrawBatch:
     rows: np.ndarray  # rows of the TransformComponent store
     first_instance: int = 0
     transparent: bool = False  # blended: drawn after the opaque batches and the sky, back to front
-    farthest: float = 0.0  # squared distance of its farthest instance (transparent batches, this frame)
+    farthest: float = 0.0  # view depth of its farthest instance (transparent batches, this frame)
 
     @property
     def count(self) -> int:

@@ -52,6 +52,13 @@ class ResourceLib(Generic[T]):
             raise missing(self.kind, name, list(table), referrer)
         return self.build(name, data)
 
+    def adopt(self, name: str, data: Any) -> None:
+        """Record that ``name``'s built object now stands for ``data``: for changes that need no rebuild
+        (a material's colour set at run time and written back to the scene's assets)."""
+        if name not in self._items:
+            raise KeyError(f"{self.kind} '{name}' has not been built")
+        self._data[name] = data
+
     def get(self, name: str, referrer: str = "the caller") -> T:
         try:
             return self._items[name]

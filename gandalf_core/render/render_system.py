@@ -114,13 +114,16 @@ class RenderSystem(System):
             batch.first_instance = first
             first += batch.count
 
-    def _sort_transparent(self, world: np.ndarray, eye: np.ndarray) -> None:
-        """Blended batches draw back to front: their instances by distance, the batches by their farthest."""
+    def _sort_transparent(self, world: np.ndarray, view: np.ndarray) -> None:
+        """Blended batches draw back to front: their instances by depth along the view direction (right for
+        orthographic cameras too), the batches by their farthest instance. Instances of two blended
+        batches at interleaved depths still come out batch by batch: the price of instancing."""
         transparent = [b for b in self.batches if b.transparent]
         if not transparent:
             return
         for batch in transparent:
-            distance = np.einsum("ij,ij->i", world[batch.rows, :3, 3] - eye, world[batch.rows, :3, 3] - eye)
+            # View-space z is negative in front of the camera: the most negative is the farthest.
+            distance = -(world[batch.rows, :3, 3] @ view[2, :3] + view[2, 3])
             order = np.argsort(-distance, kind="stable")
             batch.rows = batch.rows[order]
             batch.farthest = float(distance[order[0]])
@@ -148,7 +151,7 @@ class RenderSystem(System):
         frame = pack_frame(view, projection, eye, app.clock.time if app is not None else 0.0, ts, depth_ends)
         if self.batches:
             world = scene.store(TransformComponent).columns["world"]
-            self._sort_transparent(world, eye)
+            self._sort_transparent(world, view)
             self._instances = pack_instances(world, self._rows, self._instances)
         light_systems = [s for s in scene.systems if isinstance(s, LightSystem)]
         # The light system knows the lights, the renderer the depth range their shadow projection needs.

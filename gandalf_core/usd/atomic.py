@@ -38,11 +38,31 @@ class StagedFiles:
         return temp
 
     def commit(self) -> None:
-        """Move every temporary file onto its target, in the order they were made."""
-        while self._pending:
-            temp, target = self._pending[0]
-            os.replace(temp, target)
-            self._pending.pop(0)
+        """Move every temporary file onto its target, in the order they were made; all or nothing.
+
+        Each existing target is first renamed to a backup; if any step fails, the files already moved are
+        put back (or removed when they were new), so the previous files stay exactly as they were.
+        """
+        done: list[tuple[Path, Path | None]] = []  # (target, its backup, or None when it was new)
+        try:
+            for temp, target in self._pending:
+                backup = None
+                if target.exists() and target.is_file():
+                    backup = target.with_name(f".{target.name}.{secrets.token_hex(4)}.bak")
+                    os.replace(target, backup)
+                done.append((target, backup))
+                os.replace(temp, target)
+        except BaseException:
+            for target, backup in reversed(done):
+                if backup is not None:
+                    os.replace(backup, target)
+                elif target.exists() and target.is_file():
+                    target.unlink()
+            raise
+        for _target, backup in done:
+            if backup is not None:
+                backup.unlink(missing_ok=True)
+        self._pending.clear()
 
     def discard(self) -> None:
         """Remove the temporary files not yet committed (and folders this object made, when left empty)."""

@@ -51,13 +51,21 @@ def read(ctx: FileContext, prim: Usd.Prim, name: str, types: str | tuple[str, ..
     return value
 
 
-def read_float(ctx: FileContext, prim: Usd.Prim, name: str, default: Any = REQUIRED) -> Any:
+def read_float(ctx: FileContext, prim: Usd.Prim, name: str, default: Any = REQUIRED, *,
+               allow_inf: bool = False) -> Any:
+    """A finite float (``+inf`` too with ``allow_inf``, e.g. an infinite far plane)."""
     value = read(ctx, prim, name, ("double", "float"), default)
     if value is default:
         return value
-    if not math.isfinite(value):
+    if not (math.isfinite(value) or (allow_inf and value == math.inf)):
         raise ctx.fail(prim, name, f"must be finite, got {value}")
     return float(value)
+
+
+def authored(prim: Usd.Prim, name: str) -> bool:
+    """True when ``prim`` has a value for attribute ``name`` (so fallbacks need not be read at all)."""
+    attribute = prim.GetAttribute(name)
+    return bool(attribute) and attribute.HasAuthoredValue()
 
 
 def read_floats(ctx: FileContext, prim: Usd.Prim, name: str, types: tuple[str, ...], size: int | None,

@@ -12,6 +12,8 @@ Layout of a saved scene::
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from ..components import (
     CameraComponent,
     ClearColorComponent,
@@ -56,6 +58,10 @@ DEFAULT_ASPECT = 4.0 / 3.0  # only for the horizontal aperture of cameras whose 
 CUBE_FACE_SUFFIXES = ("px", "nx", "py", "ny", "pz", "nz")  # +X, -X, +Y, -Y, +Z, -Z
 
 
-def texture_folder_name(stem: str) -> str:
-    """The folder next to ``<stem>.usda`` that holds its textures."""
-    return f"{stem}_textures"
+def texture_folder_name(path: Path) -> str:
+    """The folder next to the file that holds its textures: ``level.usda`` -> ``level_usda_textures``.
+
+    The extension is part of the name, so ``level.usda`` and ``level.usdc`` never share (and overwrite)
+    one folder.
+    """
+    return f"{path.stem}_{path.suffix.lstrip('.').lower()}_textures"

@@ -30,7 +30,7 @@ from ..components import (
 from ..ecs import Component, Scene
 from ..resources import linear_to_srgb
 from . import assets as asset_prims
-from .attributes import FileContext, read, read_float, read_floats
+from .attributes import FileContext, authored, read, read_float, read_floats
 from .errors import USDSceneError, USDSceneWarning
 from .mapping import FORMAT_VERSION, LIGHT_KINDS, MATERIALS, MESHES, TEXTURES
 from .registry import registration_named
@@ -177,13 +177,20 @@ class _Reader:
         projection = read(ctx, prim, "projection", "token", "perspective")
         clip = usd.GetClippingRangeAttr().Get()
         aperture = usd.GetVerticalApertureAttr().Get()
-        focal = usd.GetFocalLengthAttr().Get()
-        # Files from other tools lack the exact gandalf: values; fall back to the standard camera attributes.
-        fov = read_float(ctx, prim, "gandalf:fov", math.degrees(2.0 * math.atan(aperture / 2.0 / focal)))
+        # Files from other tools lack the exact gandalf: values; fall back to the standard camera attributes
+        # (read only then: a gandalf file's own values must not depend on them).
+        if authored(prim, "gandalf:fov"):
+            fov = read_float(ctx, prim, "gandalf:fov")
+        else:
+            focal = usd.GetFocalLengthAttr().Get()
+            if not (focal and focal > 0 and aperture and aperture > 0):
+                raise ctx.fail(prim, "focalLength", f"needs a positive focal length and aperture, got {focal}, "
+                                                    f"{aperture}")
+            fov = math.degrees(2.0 * math.atan(aperture / 2.0 / focal))
         return CameraComponent(
             fov,
             read_float(ctx, prim, "gandalf:near", float(clip[0])),
-            read_float(ctx, prim, "gandalf:far", float(clip[1])),
+            read_float(ctx, prim, "gandalf:far", float(clip[1]), allow_inf=True),
             projection=str(projection),
             height=read_float(ctx, prim, "gandalf:height", aperture / 10.0),
             aspect=read_float(ctx, prim, "gandalf:aspect", None),
@@ -198,9 +205,14 @@ class _Reader:
             return None
 
         def build() -> LightComponent:
-            linear = read_floats(ctx, prim, "inputs:color", ("color3f",), 3, np.ones(3))
-            color = read_floats(ctx, prim, "gandalf:lightColor", ("double3",), 3, linear_to_srgb(linear))
-            intensity = read_float(ctx, prim, "gandalf:intensity", read_float(ctx, prim, "inputs:intensity", 1.0))
+            if authored(prim, "gandalf:lightColor"):
+                color = read_floats(ctx, prim, "gandalf:lightColor", ("double3",), 3)
+            else:  # another tool's light: the standard (linear) colour
+                color = linear_to_srgb(read_floats(ctx, prim, "inputs:color", ("color3f",), 3, np.ones(3)))
+            if authored(prim, "gandalf:intensity"):
+                intensity = read_float(ctx, prim, "gandalf:intensity")
+            else:
+                intensity = read_float(ctx, prim, "inputs:intensity", 1.0)
             return LightComponent(
                 kind, color, intensity, read_float(ctx, prim, "gandalf:range", 0.0),
                 cast_shadows=read(ctx, prim, "gandalf:castShadows", "bool", False),
@@ -239,6 +251,8 @@ class _Reader:
         if isinstance(template, (int, np.integer)):
             return int(read(ctx, prim, attr, "int64"))
         if isinstance(template, (float, np.floating)):
+            if str(prim.GetAttribute(attr).GetTypeName()) == "int64":  # a float field that held an int
+                return float(read(ctx, prim, attr, "int64"))
             return read_float(ctx, prim, attr)
         if isinstance(template, str):
             return str(read(ctx, prim, attr, "string"))

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import sys
 import uuid
 import warnings
 from pathlib import Path
@@ -58,7 +59,7 @@ def file_format(path: Path) -> str:
 def save_scene(scene: Scene, path: str | Path, *, assets: bool = True) -> Path:
     """Write ``scene`` to ``path`` (.usda text or .usdc binary, chosen by the extension); return the path.
 
-    With ``assets=True`` every texture is written as PNG into ``<stem>_textures/`` next to the file and
+    With ``assets=True`` every texture is written as PNG into ``<stem>_<ext>_textures/`` next to the file and
     referenced by a relative path; ``assets=False`` leaves textures out (meshes and materials are always
     saved). All files are written to temporary files and moved into place only when everything succeeded, so a
     failed save leaves the previous files as they were. Components without a USD mapping are reported in one
@@ -119,6 +120,8 @@ class _Writer:
         self.write_assets()
         names: dict[str, UniqueNames] = {}
         for entity in self.ordered_entities():
+            if _editor_owned(self.scene, entity):
+                continue  # the editor's panels are part of the tool, not of the scene
             parent = self.scene.parent_of(entity)
             parent_path = self.prim_of[parent] if parent is not None else ROOT
             scope = names.setdefault(parent_path, UniqueNames())
@@ -163,7 +166,7 @@ class _Writer:
             return
         UsdGeom.Scope.Define(stage, TEXTURES)
         unique = UniqueNames()
-        folder_name = texture_folder_name(self.path.stem)
+        folder_name = texture_folder_name(self.path)
         for name, texture in scene.assets.textures.items():
             stem = unique.take(name, "texture")
             files = asset_prims.texture_files(stem, texture)
@@ -185,7 +188,14 @@ class _Writer:
         if LinkComponent in comps:
             write(prim, "gandalf:link", T.Bool, True)
         if TransformComponent in comps:
-            self.write_transform(prim, comps[TransformComponent])
+            transform = comps[TransformComponent]
+            for field in ("translation", "quaternion", "scale"):
+                # A field's live view can hold NaN, or a zero quaternion: refuse what the reader would refuse.
+                value = getattr(transform, field)
+                if not np.isfinite(value).all() or (field == "quaternion" and not np.any(value)):
+                    raise USDSceneError(self.path, f"{self.scene.describe(entity)}: TransformComponent.{field} "
+                                                   f"cannot be saved: {value.tolist()}", prim=path)
+            self.write_transform(prim, transform)
         if camera is not None:
             self.write_camera(prim, camera)
         if light is not None:
@@ -277,3 +287,8 @@ class _Writer:
             saved.append(name)
         if saved:
             write(prim, "gandalf:components", T.StringArray, saved)
+
+
+def _editor_owned(scene: Scene, entity: uuid.UUID) -> bool:
+    editor = sys.modules.get("gandalf_core.editor")  # never imported here: no editor, no editor entities
+    return editor is not None and editor.is_editor_entity(scene, entity)

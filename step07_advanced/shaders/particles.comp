@@ -17,7 +17,7 @@ struct SimParams {
     uint seed;         // changes every step: new random launch velocities
 };
 
-layout(std140, binding = 0) uniform Sim { SimParams u_sim; };
+layout(std140, binding = 4) uniform Sim { SimParams u_sim; };  // 0 and 1 are the engine's Frame and Lights
 layout(std430, binding = 1) buffer Particles { Particle particles[]; };
 
 #include "particle_step.glsl"

@@ -464,3 +464,29 @@ def test_the_sky_shows_a_view_with_an_orthographic_camera(backend):
     app.close()
     top_rows = image[:10, :, :3].astype(int)
     assert top_rows.std(axis=(0, 1)).max() > 1.0 or np.abs(top_rows[0] - top_rows[-1]).max() > 2
+
+
+@pytest.mark.parametrize("projection", ["orthographic", "perspective"])
+def test_transparent_instances_sort_by_view_depth_not_distance(backend, projection):
+    """A nearer (in view depth) blended quad far off to the side is still drawn last, i.e. on top."""
+    from gandalf_core.resources import plane
+
+    scene = Scene("depth order")
+    scene.assets.mesh("plane", plane(10.0, 1))
+    for name, rgb in (("red", (1, 0, 0)), ("green", (0, 1, 0))):
+        scene.assets.material(name, MaterialData("flat", color=(*rgb, 0.5), params={"tint": (1, 1, 1, 1)},
+                                                 blend="alpha", depth_write=False, cull="none"))
+    scene.create_entity(ClearColorComponent((0, 0, 0)))
+    scene.create_entity(TransformComponent((0.0, 1.0, 0.0)), MeshComponent("plane"), MaterialComponent("red"))
+    scene.create_entity(TransformComponent((6.0, 2.0, 0.0)), MeshComponent("plane"), MaterialComponent("green"))
+    camera = (CameraComponent(near=0.1, far=50.0, projection="orthographic", height=16.0)
+              if projection == "orthographic" else CameraComponent(90.0, 0.1, 50.0))
+    scene.create_entity(TransformComponent((0.0, 10.0, 0.0), rotation=(-90, 0, 0)), camera)
+    with flat_app(backend) as app:
+        app.add_scene(scene)
+        app.run(frames=1)
+        image = app.capture()
+    # Column 21 of the 32-pixel picture looks at world x of about 3, over both quads; green (nearer in
+    # view depth) must be on top.
+    r, g, _b = image[16, 21, :3].astype(int)
+    assert g > r > 0

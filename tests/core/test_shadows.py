@@ -351,3 +351,25 @@ def test_the_shadow_map_keeps_its_own_texture_unit_in_opengl():
         shader = app.renderer.shaders.build("textured", SHADOWED_VERT, frag)
         assert shader.samplers == ["u_detail"]
         assert shader.program["u_shadow_map"].value == 15
+
+
+def test_textures_built_during_a_frame_do_not_replace_the_shadow_map():
+    """Some drivers (16 texture units) put moderngl's scratch unit on the shadow map's unit 15."""
+    from gandalf_core.components import MaterialComponent, MeshComponent, TransformComponent
+    from gandalf_core.resources import MaterialData, solid
+
+    frag = SHADOWED_FRAG.replace("uniform vec4 u_color;", "uniform vec4 u_color;\nuniform sampler2D u_tex;").replace(
+        "f_color = vec4(c, 1.0);", "f_color = vec4(c * texture(u_tex, vec2(0.5)).rgb, 1.0);")
+    scene = shadow_scene()
+    scene.assets.texture("white", solid((1.0, 1.0, 1.0), 4))
+    scene.assets.material("tex", MaterialData("a_shadowed_tex", ["white"], color=(0.8, 0.8, 0.8)))
+    scene.create_entity(TransformComponent((4.0, 0.5, 3.0)), MeshComponent("cube"), MaterialComponent("tex"))
+    with make_app("opengl") as app:
+        app.renderer.shaders.build("a_shadowed_tex", SHADOWED_VERT, frag)
+        app.renderer.ctx.default_texture_unit = 15
+        app.add_scene(scene)
+        app.run(frames=1)  # the first frame builds the texture
+        (shadowed,), _ = shadow_points((1.0, 2.0, 0.0))
+        first = brightness(app.capture(), shadowed)
+        app.run(frames=1)
+        assert first == brightness(app.capture(), shadowed) < 60

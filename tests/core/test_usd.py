@@ -242,14 +242,14 @@ def test_usda_text_has_the_expected_prims(tmp_path):
         "custom double gandalf:range = 5.5", 'def DomeLight "sky_light"', 'custom string gandalf:name = "sky light"',
         'def Scope "Assets"', 'def Mesh "cube"', 'def Mesh "sphere"', 'def Material "Params"',
         "texCoord2f[] primvars:st", "texCoord2d[] primvars:st", "float4[] primvars:tangents",
-        "color3f[] primvars:displayColor", '@./s_textures/ramp_png.png@', "custom double4 gandalf:clearColor",
+        "color3f[] primvars:displayColor", '@./s_usda_textures/ramp_png.png@', "custom double4 gandalf:clearColor",
         'custom string gandalf:skybox = "sky"', '"xformOp:translate", "xformOp:orient", "xformOp:scale"',
         "rel material:binding = </Assets/Materials/Tex>",
     ):
         assert expected in text, expected
     # Nesting follows the Links: hand inside arm inside root.
     assert text.index('def Xform "root"') < text.index('def Xform "arm"') < text.index('def Xform "hand"')
-    assert sorted(p.name for p in (tmp_path / "s_textures").iterdir()) == [
+    assert sorted(p.name for p in (tmp_path / "s_usda_textures").iterdir()) == [
         "checker.png", "ramp_png.png", *(f"sky_{s}.png" for s in ("nx", "ny", "nz", "px", "py", "pz"))
     ]
 
@@ -265,7 +265,7 @@ def test_camera_attributes_match_the_field_of_view(tmp_path):
 def test_without_assets_no_texture_files_are_written(tmp_path):
     scene = full_scene()
     save_scene(scene, tmp_path / "s.usda", assets=False)
-    assert not (tmp_path / "s_textures").exists()
+    assert not (tmp_path / "s_usda_textures").exists()
     loaded = load_scene(tmp_path / "s.usda")
     assert loaded.assets.textures == {} and loaded.assets.meshes.keys() == scene.assets.meshes.keys()
 
@@ -462,7 +462,7 @@ def test_bad_attribute_is_named(saved, old, new, pattern):
 
 
 def test_missing_texture_file_is_named(saved):
-    (saved.parent / "good_textures" / "checker.png").unlink()
+    (saved.parent / "good_usda_textures" / "checker.png").unlink()
     assert_load_fails(saved, r"prim </Assets/Textures/checker>: attribute 'gandalf:files': .*checker\.png")
 
 
@@ -472,7 +472,7 @@ def temp_leftovers(folder: Path) -> list[str]:
 
 def test_unsaveable_value_keeps_the_old_file(saved):
     before = saved.read_bytes()
-    textures = {p.name: p.read_bytes() for p in (saved.parent / "good_textures").iterdir()}
+    textures = {p.name: p.read_bytes() for p in (saved.parent / "good_usda_textures").iterdir()}
     scene = full_scene()
     scene.create_entity(InfoComponent("vault"), Secret())
     register_component(Secret, ["payload"])
@@ -482,7 +482,7 @@ def test_unsaveable_value_keeps_the_old_file(saved):
     finally:
         unregister_component(Secret)
     assert saved.read_bytes() == before
-    assert {p.name: p.read_bytes() for p in (saved.parent / "good_textures").iterdir()} == textures
+    assert {p.name: p.read_bytes() for p in (saved.parent / "good_usda_textures").iterdir()} == textures
     assert temp_leftovers(saved.parent) == []
 
 

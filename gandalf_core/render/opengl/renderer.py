@@ -29,7 +29,17 @@ from ..frame import (
     instance_capacity,
 )
 from ..shader_files import SNIPPETS_DIR
-from .libs import ENGINE_SAMPLERS, GL_SRGB8_ALPHA8, GLMesh, GLShader, MaterialLib, MeshLib, ShaderLib, TextureLib
+from .libs import (
+    ENGINE_SAMPLERS,
+    GL_SRGB8_ALPHA8,
+    GLMaterial,
+    GLMesh,
+    GLShader,
+    MaterialLib,
+    MeshLib,
+    ShaderLib,
+    TextureLib,
+)
 
 GL_FRAMEBUFFER_SRGB = 0x8DB9
 GL_TEXTURE_CUBE_MAP_SEAMLESS = 0x884F
@@ -93,8 +103,13 @@ class OpenGLRenderer(Renderer):
         self._lights_ubo.bind_to_uniform_block(1)
         if data.batches:
             self._upload_instances(data.instances)
+        # Resolve (build on first use) everything before any pass: building a texture uses moderngl's
+        # scratch texture unit, which on some drivers is the unit the shadow map is bound to.
+        draws = [(batch, self.resolve_material(batch.material, assets), self.resolve_mesh(batch.mesh, assets))
+                 for batch in data.batches]
+        sky = self._prepare_sky(data.skybox, assets) if data.skybox is not None else None
         if data.shadows:
-            self._draw_shadow_map(data, assets)
+            self._draw_shadow_map(draws)
         # --8<-- [start:clear]
         fbo = self._fbo
         fbo.use()
@@ -104,18 +119,15 @@ class OpenGLRenderer(Renderer):
         fbo.clear(r, g, b, a, depth=0.0 if data.reverse_z else 1.0)
         # --8<-- [end:clear]
         self._state = None
-        sky_drawn = data.skybox is None
-        for batch in data.batches:
-            if batch.transparent and not sky_drawn:
-                self._draw_sky(data.skybox, assets, data.reverse_z)
-                sky_drawn = True
-            material = self.resolve_material(batch.material, assets)
-            mesh = self.resolve_mesh(batch.mesh, assets)
+        for batch, material, mesh in draws:
+            if batch.transparent and sky is not None:  # the sky goes behind blended surfaces
+                self._draw_sky(sky, data.reverse_z)
+                sky = None
             self._apply_state(material.data, data.reverse_z)
             material.apply()
             self._draw_batch(material.shader, mesh, batch)
-        if not sky_drawn:
-            self._draw_sky(data.skybox, assets, data.reverse_z)
+        if sky is not None:
+            self._draw_sky(sky, data.reverse_z)
         for overlay in self.overlays:
             overlay(self)
             self._state = None  # an overlay may change any GL state
@@ -133,7 +145,7 @@ class OpenGLRenderer(Renderer):
         self.stats["draw_calls"] += 1
 
     # --8<-- [start:shadow_pass]
-    def _draw_shadow_map(self, data: FrameData, assets: Assets) -> None:
+    def _draw_shadow_map(self, draws: list[tuple[DrawBatch, GLMaterial, GLMesh]]) -> None:
         """The shadow pass: every opaque batch, depth only, from the light into the shadow map; then the
         map is bound for the main pass. The map, its framebuffer and the shader are built on first use."""
         if self._shadow is None:
@@ -156,20 +168,23 @@ class OpenGLRenderer(Renderer):
         ctx.disable(moderngl.BLEND | moderngl.CULL_FACE)  # both faces cast: open meshes and planes too
         ctx.enable(moderngl.DEPTH_TEST)
         ctx.depth_func = "<="
-        for batch in data.batches:
+        for batch, _material, mesh in draws:
             if not batch.transparent:
-                self._draw_batch(shader, self.resolve_mesh(batch.mesh, assets), batch)
+                self._draw_batch(shader, mesh, batch)
         texture.use(location=ENGINE_SAMPLERS["u_shadow_map"])
         self.stats["shadow_passes"] += 1
     # --8<-- [end:shadow_pass]
 
-    def _draw_sky(self, texture_name: str, assets: Assets, reverse_z: bool) -> None:
-        """The sky pass, built on first use: a full-screen triangle at the far plane, after opaque geometry."""
+    def _prepare_sky(self, texture_name: str, assets: Assets) -> tuple[moderngl.VertexArray, Any]:
+        """The sky pass's vertex array (built on first use) and its cube texture."""
         if self._sky is None:
             shader = self.shaders.build(SKY_SHADER, SNIPPETS_DIR / "skybox.vert", SNIPPETS_DIR / "skybox.frag")
             self._sky = (shader, self.ctx.vertex_array(shader.program, []))
-        shader, vao = self._sky
-        texture = self.resolve_texture(texture_name, assets, "a SkyboxComponent")
+        return self._sky[1], self.resolve_texture(texture_name, assets, "a SkyboxComponent")
+
+    def _draw_sky(self, sky: tuple[moderngl.VertexArray, Any], reverse_z: bool) -> None:
+        """A full-screen triangle at the far plane, after the opaque geometry."""
+        vao, texture = sky
         self._apply_state(SKY_STATE, reverse_z)
         texture.use(location=0)
         vao.render(moderngl.TRIANGLES, vertices=3)

@@ -23,7 +23,7 @@ float shadow_factor(vec3 world_position, vec3 normal) {
     float lit = 0.0;
     for (int y = -1; y <= 1; ++y) {
         for (int x = -1; x <= 1; ++x) {
-            lit += texture(u_shadow_map, vec3(coord.xy + vec2(x, y) * u_shadow.z, reference));
+            lit += textureLod(u_shadow_map, vec3(coord.xy + vec2(x, y) * u_shadow.z, reference), 0.0);
         }
     }
     return lit / 9.0;
