@@ -24,7 +24,10 @@ system comes in two forms (``--rotate``):
 
 * ``batch`` (default): one vectorised quaternion product over the TransformComponent store's
   ``quaternion`` column per frame;
-* ``entity``: the teaching form, ``on_update_entity`` called once per entity.
+* ``entity``: the teaching form, ``on_update_entity`` called once per entity;
+* ``angle``: each entity's rotation set from an absolute angle (``phase + speed * time``) straight into
+  the quaternion column, as ``raw_ceiling.py`` builds its matrices: no quaternion product, so what is
+  left is the engine's own per-frame cost.
 
 Every measured frame ends with a read-back (``--sync``) so the GPU has finished the frame:
 
@@ -73,7 +76,7 @@ SCENES: dict[str, tuple[int, bool]] = {
 }
 BACKENDS = ("opengl", "webgpu")
 MODELS = ("cube", "sphere")
-ROTATE_MODES = ("batch", "entity")
+ROTATE_MODES = ("batch", "entity", "angle")
 SYNC_MODES = ("pixel", "full", "none")
 
 
@@ -139,6 +142,29 @@ def build_scene(n: int, rotating: bool, model: str, rotate_mode: str) -> tuple[A
             q = self.scene.store(TransformComponent).column("quaternion")
             q[self._rows] = quat_mul(step, q[self._rows])
 
+    class RotateAngleSystem(RotateBatchSystem):
+        """Absolute angles: q = (cos(a/2), sin(a/2) * axis) with a = phase + speed * time, written in place."""
+
+        def _plan(self) -> None:
+            super()._plan()
+            q = self.scene.store(TransformComponent).column("quaternion")[self._rows]
+            self._phase = 2.0 * np.arctan2(np.linalg.norm(q[:, 1:], axis=1), q[:, 0])
+            rows = self._rows
+            consecutive = len(rows) and rows[-1] - rows[0] == len(rows) - 1 and np.all(np.diff(rows) == 1)
+            self._target = slice(int(rows[0]), int(rows[-1]) + 1) if consecutive else rows
+            self._time = 0.0
+
+        def on_update_system(self, ts: float) -> None:
+            if self._version != self.scene.membership_version:
+                self._plan()
+            if len(self._rows) == 0:
+                return
+            self._time += ts
+            half = 0.5 * (self._phase + self._speeds * self._time)
+            q = self.scene.store(TransformComponent).column("quaternion")
+            q[self._target, 0] = np.cos(half)
+            q[self._target, 1:] = np.sin(half)[:, None] * self._axes
+
     scene = Scene(f"bench-{n}")
     mesh = primitives.cube() if model == "cube" else primitives.uv_sphere(0.6, 32, 16)
     scene.assets.mesh("model", mesh)
@@ -159,7 +185,8 @@ def build_scene(n: int, rotating: bool, model: str, rotate_mode: str) -> tuple[A
             components.append(RotateComponent(y_axis, 30.0 + 10.0 * (i % 7)))
         scene.create_entity(*components)
     if rotating:
-        scene.add_system(RotateBatchSystem() if rotate_mode == "batch" else RotateEntitySystem())
+        systems = {"batch": RotateBatchSystem, "entity": RotateEntitySystem, "angle": RotateAngleSystem}
+        scene.add_system(systems[rotate_mode]())
     return scene, mesh
 
 
