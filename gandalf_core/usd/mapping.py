@@ -7,7 +7,7 @@ Layout of a saved scene::
     /Assets                 Scope (invisible)
         /Meshes/<mesh>      UsdGeom.Mesh
         /Materials/<mat>    UsdShade.Material with inputs:gandalf:* values
-        /Textures/<tex>     Scope with gandalf:file (a PNG next to the USD file)
+        /Textures/<tex>     Scope with gandalf:files (the PNGs next to the USD file)
 """
 
 from __future__ import annotations
