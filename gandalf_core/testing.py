@@ -12,8 +12,10 @@ from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .app import Application
+from .ecs import Scene
 
 FAILURE_DIR = Path(
     os.environ.get("GANDALF_FAILURE_DIR", Path(__file__).resolve().parent.parent / "tests" / "_failures")
@@ -118,3 +120,40 @@ def inner(mask: np.ndarray, pixels: int = 2) -> np.ndarray:
         out[:, 1:] &= out[:, :-1]
         out[:, :-1] &= out[:, 1:]
     return out
+
+
+# --- lights described as (LightComponent, TransformComponent) pairs, reusable across scenes ----------
+def directional_light(towards: ArrayLike, color: ArrayLike = (1.0, 1.0, 1.0), intensity: float = 1.0) -> tuple:
+    """A directional light whose light comes from direction ``towards`` (a vector pointing at the light)."""
+    from .components import LightComponent, TransformComponent
+    from .math import look_at_rotation
+
+    t = np.asarray(towards, dtype=np.float64)
+    return LightComponent("directional", color, intensity), TransformComponent(
+        t, quaternion=look_at_rotation(t, (0, 0, 0))
+    )
+
+
+def point_light(
+    position: ArrayLike, color: ArrayLike = (1.0, 1.0, 1.0), intensity: float = 1.0, range: float = 0.0
+) -> tuple:
+    from .components import LightComponent, TransformComponent
+
+    return LightComponent("point", color, intensity, range), TransformComponent(position)
+
+
+def ambient_light(color: ArrayLike) -> tuple:
+    from .components import LightComponent, TransformComponent
+
+    return LightComponent("ambient", color), TransformComponent()
+
+
+def add_lights(scene: Scene, lights: list[tuple]) -> None:
+    """Copies of ``lights`` as entities of ``scene``: one list may describe several scenes (and a reference)."""
+    from .components import LightComponent, TransformComponent
+
+    for light, transform in lights:
+        scene.create_entity(
+            TransformComponent(transform.translation, quaternion=transform.quaternion, scale=transform.scale),
+            LightComponent(light.kind, light.color, light.intensity, light.range),
+        )

@@ -55,13 +55,7 @@ def sphere_scene(material: MaterialData, lights: list[tuple[LightComponent, Tran
     return scene
 
 
-def add_lights(scene: Scene, lights: list[tuple[LightComponent, TransformComponent]]) -> None:
-    """Copies of ``lights`` as entities: the same list may describe several scenes (and the numpy reference)."""
-    for light, transform in lights:
-        scene.create_entity(
-            TransformComponent(transform.translation, quaternion=transform.quaternion, scale=transform.scale),
-            LightComponent(light.kind, light.color, light.intensity, light.range),
-        )
+add_lights = testing.add_lights
 
 
 def render(backend: str, impl: ModuleType, scene: Scene, size: tuple[int, int] = SIZE, frames: int = 1) -> np.ndarray:
@@ -71,19 +65,13 @@ def render(backend: str, impl: ModuleType, scene: Scene, size: tuple[int, int] =
         return app.capture()
 
 
-def directional(towards, color=(1.0, 1.0, 1.0), intensity=1.0):
-    """A directional light whose light comes from direction ``towards`` (a vector pointing at the light)."""
-    t = np.asarray(towards, dtype=np.float64)
-    transform = TransformComponent(t, quaternion=look_at_rotation(t, (0.0, 0.0, 0.0)))
-    return LightComponent("directional", color, intensity), transform
+directional = testing.directional_light
 
 
-def point(position, color=(1.0, 1.0, 1.0), intensity=1.0, range=0.0):
-    return LightComponent("point", color, intensity, range), TransformComponent(position)
+point = testing.point_light
 
 
-def ambient(color):
-    return LightComponent("ambient", color), TransformComponent()
+ambient = testing.ambient_light
 
 
 # --- the numpy reference ----------------------------------------------------------------------------

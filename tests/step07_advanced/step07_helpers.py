@@ -13,7 +13,7 @@ from types import ModuleType
 import numpy as np
 
 from gandalf_core import Application, Scene, TransformComponent, testing
-from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
+from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import (
     MaterialData,
@@ -55,24 +55,16 @@ def small_sky():
     return sky_cube(8)
 
 
-def directional(towards, color=(1.0, 1.0, 1.0), intensity=1.0):
-    t = np.asarray(towards, dtype=np.float64)
-    transform = TransformComponent(t, quaternion=look_at_rotation(t, (0, 0, 0)))
-    return LightComponent("directional", color, intensity), transform
+directional = testing.directional_light
 
 
-def point(position, color=(1.0, 1.0, 1.0), intensity=1.0, range=0.0):
-    return LightComponent("point", color, intensity, range), TransformComponent(position)
+point = testing.point_light
 
 
-def ambient(color):
-    return LightComponent("ambient", color), TransformComponent()
+ambient = testing.ambient_light
 
 
-def add_lights(scene: Scene, lights) -> None:
-    for light, transform in lights:
-        scene.create_entity(TransformComponent(transform.translation, quaternion=transform.quaternion),
-                            LightComponent(light.kind, light.color, light.intensity, light.range))
+add_lights = testing.add_lights
 
 
 def pbr_material(color, metallic: float, roughness: float, env_strength: float = 0.0) -> MaterialData:
