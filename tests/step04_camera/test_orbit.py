@@ -54,6 +54,20 @@ def test_left_drag_turns_the_orbit(app):
 
 
 @pytest.mark.exercise("OrbitCameraSystem")
+def test_drag_and_scroll_update_the_orbit_values(app):
+    """Graded on the component alone, so a mistake in placing the camera does not cost this part too."""
+    app.input.button(0, "press")
+    app.input.move_mouse(0, 0)
+    app.step()
+    app.input.move_mouse(40, -20)  # dx = 40, dy = -20 pixels at 0.5 degrees per pixel
+    app.input.scroll(0, 1)
+    app.step()
+    orbit = orbit_of(app)
+    assert (orbit.yaw, orbit.pitch) == (pytest.approx(10.0), pytest.approx(15.0)), "yaw -= dx·s, pitch += dy·s"
+    assert orbit.distance == pytest.approx(9.0 * 0.9), "distance *= zoom_factor ** scroll"
+
+
+@pytest.mark.exercise("OrbitCameraSystem")
 def test_right_button_does_not_orbit(app):
     app.input.button(1, "press")
     app.input.move_mouse(50, 70)
