@@ -12,7 +12,7 @@ import uuid
 import numpy as np
 
 from ..components import LinkComponent, TransformComponent
-from ..ecs import Scene, System
+from ..ecs import ColumnStore, Scene, System
 from ..math import TRSBatch, decompose_trs, invert_affine, quat_normalize, trs
 
 # Quaternions shorter than this carry no usable rotation and count as the identity.
@@ -40,10 +40,6 @@ class TransformSystem(System):
         if key != self._plan_key:
             self._levels = self._plan(scene)
             self._plan_key = key
-        for field in ("translation", "quaternion", "scale"):
-            column = store.column(field)
-            if not np.isfinite(column).all():  # NaN can come in through a field's live view
-                self._report_non_finite(field, column)
         q = store.column("quaternion")
         # TRSBatch builds the exact rotation for any non-zero quaternion length, so no renormalising pass;
         # a zero quaternion (never valid) means "no rotation".
@@ -53,21 +49,30 @@ class TransformSystem(System):
             q[degenerate] = (1.0, 0.0, 0.0, 0.0)
         world = store.column("world")
         if not self._levels:  # a flat scene: local is world, written in place
-            self._trs(store.column("translation"), q, store.column("scale"), out=world)
+            self._build(store, q, world)
             return
         if self._local is None or len(self._local) != n:
             self._local = np.empty((n, 4, 4))
-        local = self._trs(store.column("translation"), q, store.column("scale"), out=self._local)
+        local = self._build(store, q, self._local)
         world[:] = local
         for rows, parent_rows in self._levels:
             world[rows] = world[parent_rows] @ local[rows]
 
-    def _report_non_finite(self, field: str, column: np.ndarray) -> None:
-        row = int(np.flatnonzero(~np.isfinite(column.reshape(len(column), -1)).all(axis=1))[0])
-        entity = next(e for e, (t,) in zip(self.entities, self.components) if t._row == row)
-        raise ValueError(
-            f"{self.scene.describe(entity)}: TransformComponent.{field} is not finite: {column[row].tolist()}"
-        )
+    def _build(self, store: ColumnStore, q: np.ndarray, out: np.ndarray) -> np.ndarray:
+        """The local matrices; TRSBatch checks the columns are finite, and a failure is told per entity here
+        (NaN can come in through a field's live view), so the check costs the frame nothing extra."""
+        try:
+            return self._trs(store.column("translation"), q, store.column("scale"), out=out)
+        except ValueError:
+            for field in ("translation", "quaternion", "scale"):
+                column = store.column(field)
+                bad = ~np.isfinite(column.reshape(len(column), -1)).all(axis=1)
+                if bad.any():
+                    row = int(np.flatnonzero(bad)[0])
+                    entity = next(e for e, (t,) in zip(self.entities, self.components) if t._row == row)
+                    raise ValueError(f"{self.scene.describe(entity)}: TransformComponent.{field} is not finite: "
+                                     f"{column[row].tolist()}") from None
+            raise
 
     def _plan(self, scene: Scene) -> list[tuple[np.ndarray, np.ndarray]]:
         """Group transform rows by hierarchy depth (depth ≥ 1 only; roots need no product)."""
