@@ -1,7 +1,9 @@
 """The course tour: every available step, in both APIs.
 
 ``python -m gandalf_core.tour`` opens each step in a window when a display exists; headless (or with
-``--headless``) it renders every step offscreen and writes ``OUT/stepNN_<topic>-<backend>.png``.
+``--headless``) it renders every step offscreen and writes ``OUT/stepNN_<topic>-<backend>.png``; a step whose
+package lists ``TECHNIQUES`` (step 07) gets one picture pair per technique,
+``OUT/stepNN_<topic>-<technique>-<backend>.png``.
 Steps are found by folder name next to ``gandalf_core`` at run time (the framework never imports a
 step statically).
 """
@@ -26,13 +28,19 @@ def find_steps(root: Path = REPO_ROOT) -> list[str]:
     return sorted(p.name for p in root.iterdir() if STEP_PATTERN.match(p.name) and (p / "__init__.py").exists())
 
 
-def render_step(step: str, backend: str, out_dir: Path, width: int = 640, height: int = 480) -> Path:
-    """Render one step headless and save its picture; returns the PNG path."""
-    variant = importlib.import_module(f"{step}.{backend}")
-    frames = getattr(importlib.import_module(f"{step}.scene"), "TOUR_FRAMES", 30)
+def step_parts(step: str) -> list[str]:
+    """The runnable packages of a step: the step itself, or ``step.technique`` for each of its ``TECHNIQUES``."""
+    techniques = getattr(importlib.import_module(step), "TECHNIQUES", None)
+    return [f"{step}.{name}" for name in techniques] if techniques else [step]
+
+
+def render_step(part: str, backend: str, out_dir: Path, width: int = 640, height: int = 480) -> Path:
+    """Render one step (or one technique, ``step.technique``) headless and save its picture; returns the PNG path."""
+    variant = importlib.import_module(f"{part}.{backend}")
+    frames = getattr(importlib.import_module(f"{part}.scene"), "TOUR_FRAMES", 30)
     with variant.create_app(headless=True, width=width, height=height) as app:
         app.run(frames=frames)
-        return app.save_png(out_dir / f"{step}-{backend}.png")
+        return app.save_png(out_dir / f"{part.replace('.', '-')}-{backend}.png")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -49,20 +57,20 @@ def main(argv: list[str] | None = None) -> int:
 
     headless = args.headless or not display_available()
     out_dir = Path(args.out)
-    for step in steps:
+    for part in (p for step in steps for p in step_parts(step)):
         images = {}
         for backend in args.backends:
             if headless:
                 start = time.perf_counter()
-                path = render_step(step, backend, out_dir)
+                path = render_step(part, backend, out_dir)
                 images[backend] = path
-                print(f"{step:<22} {backend:<7} -> {path}  ({time.perf_counter() - start:.2f} s)")
+                print(f"{part:<26} {backend:<7} -> {path}  ({time.perf_counter() - start:.2f} s)")
             else:
-                print(f"{step} ({backend}): close the window to go on")
-                with importlib.import_module(f"{step}.{backend}").create_app(headless=False) as app:
+                print(f"{part} ({backend}): close the window to go on")
+                with importlib.import_module(f"{part}.{backend}").create_app(headless=False) as app:
                     app.run()
         if len(images) == 2:
-            print(f"{step:<22} OpenGL vs WebGPU: {_agreement(*images.values())}")
+            print(f"{part:<26} OpenGL vs WebGPU: {_agreement(*images.values())}")
     return 0
 
 

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from gandalf_core.tour import REPO_ROOT, find_steps
+from gandalf_core.tour import REPO_ROOT, find_steps, step_parts
 
 STEPS = find_steps()
 # Files that may talk to one API directly: the two variants, helpers named for their API, and the
@@ -29,11 +29,17 @@ def test_steps_are_found_in_order():
 @pytest.mark.parametrize("step", STEPS)
 def test_step_has_the_standard_files(step):
     folder = REPO_ROOT / step
-    for name in ("__init__.py", "scene.py", "opengl.py", "webgpu.py", "exercises/__init__.py", "solutions/__init__.py"):
+    for name in ("__init__.py", "opengl.py", "webgpu.py", "exercises/__init__.py", "solutions/__init__.py"):
         assert (folder / name).is_file(), f"{step} lacks {name}"
     assert (REPO_ROOT / "tests" / step).is_dir(), f"{step} has no tests/{step} folder (its autograder)"
-    for variant in ("opengl", "webgpu"):
-        assert callable(getattr(importlib.import_module(f"{step}.{variant}"), "create_app", None))
+    # A step of several techniques (step 07) has one sub-package per technique, each in the step's own shape.
+    for part in step_parts(step):
+        part_folder = REPO_ROOT / part.replace(".", "/")
+        for name in ("__init__.py", "scene.py", "opengl.py", "webgpu.py"):
+            assert (part_folder / name).is_file(), f"{part} lacks {name}"
+        for variant in ("opengl", "webgpu"):
+            module = importlib.import_module(f"{part}.{variant}")
+            assert callable(getattr(module, "create_app", None)), f"{part}.{variant} has no create_app"
 
 
 @pytest.mark.parametrize("step", STEPS)

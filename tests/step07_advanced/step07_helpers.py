@@ -34,7 +34,7 @@ FOV = 45.0
 def make_app(backend: str, impl: ModuleType, size: tuple[int, int] = SIZE) -> Application:
     """A headless app of ``backend`` with the step's render shaders built from ``impl``'s includes."""
     app = Application(backend, *size, headless=True, fixed_dt=1 / 60)
-    importlib.import_module(f"step07_advanced.{backend}").register_shaders(app, impl)
+    importlib.import_module(f"step07_advanced.showcase.{backend}").register_shaders(app, impl)
     return app
 
 

@@ -24,7 +24,7 @@ from gandalf_core.components import CameraComponent, LightComponent, MaterialCom
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, TextureData, plane, solid
 from step07_advanced import solutions
-from step07_advanced.textures import brick_textures, encode_normals
+from step07_advanced.showcase.textures import brick_textures, encode_normals
 
 LIGHTS = [directional((-1.0, 1.5, 2.0), (1.0, 0.95, 0.9), 2.5), ambient((0.05, 0.05, 0.05))]
 

@@ -16,8 +16,8 @@ import pytest
 from gandalf_core.components import SkyboxComponent
 from gandalf_core.testing import compare_images, compare_to_reference, render_frames
 from step07_advanced import solutions
-from step07_advanced.particles import ParticleComponent
-from step07_advanced.scene import METALLIC, PARTICLE_COUNT, ROUGHNESS, TOUR_FRAMES, build_scene
+from step07_advanced.showcase.particles import ParticleComponent
+from step07_advanced.showcase.scene import METALLIC, PARTICLE_COUNT, ROUGHNESS, TOUR_FRAMES, build_scene
 
 REFERENCES = Path(__file__).resolve().parent / "references"
 SIZE = {"width": 160, "height": 120}
@@ -26,7 +26,9 @@ SIZE = {"width": 160, "height": 120}
 @pytest.fixture(scope="module")
 def pictures() -> dict[str, np.ndarray]:
     return {
-        backend: render_frames(importlib.import_module(f"step07_advanced.{backend}").create_app, TOUR_FRAMES, **SIZE)
+        backend: render_frames(
+            importlib.import_module(f"step07_advanced.showcase.{backend}").create_app, TOUR_FRAMES, **SIZE
+        )
         for backend in ("opengl", "webgpu")
     }
 
@@ -49,7 +51,7 @@ def test_matches_reference(pictures, backend):
 
 
 def test_particles_move_between_frames():
-    from step07_advanced.opengl import create_app
+    from step07_advanced.showcase.opengl import create_app
 
     early = render_frames(create_app, 2, **SIZE)
     late = render_frames(create_app, 10, **SIZE)

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from gandalf_core import Application
-from step07_advanced.particles import (
+from step07_advanced.showcase.particles import (
     SimParams,
     hash_u32,
     initial_particles,
@@ -27,10 +27,10 @@ TOLERANCE = 1e-4
 
 def _kernel(backend: str, app: Application, impl, state: np.ndarray):
     if backend == "opengl":
-        from step07_advanced.compute_gl import GLParticleKernel
+        from step07_advanced.showcase.compute_gl import GLParticleKernel
 
         return GLParticleKernel(app.renderer.ctx, impl, state)
-    from step07_advanced.compute_wgpu import WGPUParticleKernel
+    from step07_advanced.showcase.compute_wgpu import WGPUParticleKernel
 
     return WGPUParticleKernel(app.renderer.device, impl, state)
 

@@ -17,7 +17,7 @@ from step07_helpers import inner, pixel_errors, render, sample_bilinear, to_srgb
 from gandalf_core import Scene, TransformComponent
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.resources import MaterialData, MeshData, TextureData
-from step07_advanced.textures import encode_normals, normal_map_from_height
+from step07_advanced.showcase.textures import encode_normals, normal_map_from_height
 
 SIZE = (96, 72)
 VIEW_HEIGHT = 2.4
