@@ -1,0 +1,195 @@
+"""Run one shader expression per element on the GPU, in GLSL and in WGSL, and read the results back.
+
+The step 07 graders use it to test a student's shader *functions* on edge inputs in both languages: the
+student's file is ``#include``d in ``prelude``, ``expression`` calls it, and every element of the ``inputs``
+arrays gives one invocation of a compute shader. A shared headless context (OpenGL) and device (WebGPU) serve all
+tests, so a call costs a compile and one small dispatch.
+
+    eval_glsl('#include "terrain.glsl"', "tess_level(a, b, c.x)",
+              {"a": ("vec4", A), "b": ("vec4", B), "c": ("f32", C)}, "f32", include_dirs=[impl_dir])
+
+Types: ``"f32"``, ``"vec2"``, ``"vec4"``, ``"u32"``, ``"i32"`` (no vec3: its array stride differs between
+std430 and WGSL's storage layout, so pad to vec4). Inside ``expression`` each input is a local of its type for
+the current element.
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+
+import numpy as np
+
+from gandalf_core.render.errors import ShaderCompileError
+from gandalf_core.render.shader_files import load_shader
+
+WORKGROUP = 64
+#: type name -> (GLSL type, WGSL type, numpy dtype, components)
+TYPES = {
+    "f32": ("float", "f32", np.float32, 1),
+    "vec2": ("vec2", "vec2<f32>", np.float32, 2),
+    "vec4": ("vec4", "vec4<f32>", np.float32, 4),
+    "u32": ("uint", "u32", np.uint32, 1),
+    "i32": ("int", "i32", np.int32, 1),
+}
+
+Inputs = Mapping[str, tuple[str, np.ndarray]]
+
+
+def _check(inputs: Inputs, output: str) -> tuple[int, list[tuple[str, str, np.ndarray]]]:
+    if output not in TYPES:
+        raise ValueError(f"output type {output!r} is not one of {sorted(TYPES)}")
+    count = None
+    arrays = []
+    for name, (kind, values) in inputs.items():
+        if kind not in TYPES:
+            raise ValueError(f"input {name!r}: type {kind!r} is not one of {sorted(TYPES)}")
+        _, _, dtype, components = TYPES[kind]
+        a = np.ascontiguousarray(values, dtype=dtype)
+        if a.ndim == 1 and components == 1:
+            pass
+        elif a.ndim == 2 and a.shape[1] == components:
+            pass
+        else:
+            raise ValueError(f"input {name!r}: expected shape (n,) or (n, {components}) for {kind}, got {a.shape}")
+        if count is None:
+            count = a.shape[0]
+        elif a.shape[0] != count:
+            raise ValueError(f"input {name!r} has {a.shape[0]} elements, the others {count}")
+        arrays.append((name, kind, a))
+    if not count:
+        raise ValueError("no input elements")
+    return count, arrays
+
+
+def _result(data: bytes, output: str, count: int) -> np.ndarray:
+    _, _, dtype, components = TYPES[output]
+    a = np.frombuffer(data, dtype=dtype)[: count * components].copy()
+    return a if components == 1 else a.reshape(count, components)
+
+
+# --- OpenGL ----------------------------------------------------------------------------------------
+@functools.cache
+def gl_context():
+    """The shared headless OpenGL 4.3+ context of the harness."""
+    import moderngl
+
+    return moderngl.create_standalone_context(backend="egl", require=430)
+
+
+def glsl_source(prelude: str, expression: str, arrays: list[tuple[str, str, np.ndarray]], output: str) -> str:
+    lines = ["#version 430", f"layout(local_size_x = {WORKGROUP}) in;"]
+    for binding, (name, kind, _) in enumerate(arrays):
+        lines.append(f"layout(std430, binding = {binding}) readonly buffer In{binding} {{ {TYPES[kind][0]} "
+                     f"in_{name}[]; }};")
+    lines.append(f"layout(std430, binding = {len(arrays)}) writeonly buffer Out {{ {TYPES[output][0]} result[]; }};")
+    lines.append("uniform uint u_count;")
+    lines.append(prelude)
+    lines.append("void main() {")
+    lines.append("    uint i = gl_GlobalInvocationID.x;")
+    lines.append("    if (i >= u_count) { return; }")
+    for name, kind, _ in arrays:
+        lines.append(f"    {TYPES[kind][0]} {name} = in_{name}[i];")
+    lines.append(f"    result[i] = {expression};")
+    lines.append("}")
+    return "\n".join(lines) + "\n"
+
+
+def eval_glsl(prelude: str, expression: str, inputs: Inputs, output: str,
+              include_dirs: Sequence[str | Path] = ()) -> np.ndarray:
+    """``expression`` evaluated per element in a GLSL 4.30 compute shader; returns the ``output`` values."""
+    import moderngl
+
+    count, arrays = _check(inputs, output)
+    ctx = gl_context()
+    source = load_shader(glsl_source(prelude, expression, arrays, output), "compute", "glsl", include_dirs)
+    try:
+        program = ctx.compute_shader(source.text)
+    except moderngl.Error as exc:
+        from gandalf_core.render.opengl.libs import _explain_gl_error
+
+        raise ShaderCompileError(_explain_gl_error("harness", str(exc), {"compute_shader": source})) from None
+    buffers = [ctx.buffer(a.tobytes()) for _, _, a in arrays]
+    out = ctx.buffer(reserve=count * TYPES[output][3] * 4)
+    try:
+        for binding, buf in enumerate(buffers):
+            buf.bind_to_storage_buffer(binding)
+        out.bind_to_storage_buffer(len(buffers))
+        if "u_count" in program:
+            program["u_count"].value = count
+        program.run(group_x=(count + WORKGROUP - 1) // WORKGROUP)
+        ctx.memory_barrier()
+        return _result(out.read(), output, count)
+    finally:
+        for buf in (*buffers, out):
+            buf.release()
+        program.release()
+
+
+# --- WebGPU ----------------------------------------------------------------------------------------
+@functools.cache
+def wgpu_device():
+    """The shared headless WebGPU device of the harness."""
+    from gandalf_core.render.webgpu.device import request_device
+
+    return request_device()[1]
+
+
+def wgsl_source(prelude: str, expression: str, arrays: list[tuple[str, str, np.ndarray]], output: str) -> str:
+    lines = [prelude]
+    for binding, (name, kind, _) in enumerate(arrays):
+        lines.append(f"@group(0) @binding({binding}) var<storage, read> in_{name}: array<{TYPES[kind][1]}>;")
+    lines.append(f"@group(0) @binding({len(arrays)}) var<storage, read_write> result: array<{TYPES[output][1]}>;")
+    lines.append(f"@compute @workgroup_size({WORKGROUP})")
+    lines.append("fn harness_main(@builtin(global_invocation_id) gid: vec3<u32>) {")
+    lines.append("    let i = gid.x;")
+    lines.append("    if (i >= arrayLength(&result)) { return; }")
+    for name, _, _ in arrays:
+        lines.append(f"    let {name} = in_{name}[i];")
+    lines.append(f"    result[i] = {expression};")
+    lines.append("}")
+    return "\n".join(lines) + "\n"
+
+
+def eval_wgsl(prelude: str, expression: str, inputs: Inputs, output: str,
+              include_dirs: Sequence[str | Path] = ()) -> np.ndarray:
+    """``expression`` evaluated per element in a WGSL compute shader; returns the ``output`` values."""
+    import wgpu
+
+    count, arrays = _check(inputs, output)
+    device = wgpu_device()
+    source = load_shader(wgsl_source(prelude, expression, arrays, output), None, "wgsl", include_dirs)
+    try:
+        module = device.create_shader_module(code=source.text, label=source.filename)
+        pipeline = device.create_compute_pipeline(layout="auto",
+                                                  compute={"module": module, "entry_point": "harness_main"})
+    except wgpu.GPUError as exc:
+        from gandalf_core.render.webgpu.libs import _explain_naga_error
+
+        raise ShaderCompileError(_explain_naga_error(source, str(exc))) from None
+    usage = wgpu.BufferUsage
+    buffers = [device.create_buffer_with_data(data=a.tobytes(), usage=usage.STORAGE) for _, _, a in arrays]
+    size = count * TYPES[output][3] * 4
+    out = device.create_buffer(size=size, usage=usage.STORAGE | usage.COPY_SRC)
+    try:
+        entries = [{"binding": i, "resource": {"buffer": b}} for i, b in enumerate([*buffers, out])]
+        group = device.create_bind_group(layout=pipeline.get_bind_group_layout(0), entries=entries)
+        encoder = device.create_command_encoder()
+        cpass = encoder.begin_compute_pass()
+        cpass.set_pipeline(pipeline)
+        cpass.set_bind_group(0, group)
+        cpass.dispatch_workgroups((count + WORKGROUP - 1) // WORKGROUP)
+        cpass.end()
+        device.queue.submit([encoder.finish()])
+        return _result(device.queue.read_buffer(out), output, count)
+    finally:
+        for buf in (*buffers, out):
+            buf.destroy()
+
+
+def evaluate(language: str, prelude: str, expression: str, inputs: Inputs, output: str,
+             include_dirs: Sequence[str | Path] = ()) -> np.ndarray:
+    """:func:`eval_glsl` for ``language == "glsl"``, :func:`eval_wgsl` for ``"wgsl"``."""
+    run = {"glsl": eval_glsl, "wgsl": eval_wgsl}[language]
+    return run(prelude, expression, inputs, output, include_dirs)
