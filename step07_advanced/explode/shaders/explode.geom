@@ -1,0 +1,26 @@
+#version 330 core
+// OpenGL route, stage 2 of 3: one triangle in, the same triangle moved along its face normal out.
+#include "frame.glsl"
+#include "explode.glsl"
+// --8<-- [start:geometry]
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 3) out;
+in vec3 g_world[];
+in vec3 g_normal[];
+out vec3 v_world;
+out vec3 v_normal;
+uniform float u_explode_time;
+uniform float u_amount;
+uniform float u_period;
+void main() {
+    // The student's function (exercises/ or solutions/explode.glsl): the same offset for all three corners.
+    vec3 offset = explode_offset(g_world[0], g_world[1], g_world[2], u_explode_time, u_amount, u_period);
+    for (int i = 0; i < 3; ++i) {
+        v_world = g_world[i] + offset;
+        v_normal = g_normal[i];
+        gl_Position = u_projection * u_view * vec4(v_world, 1.0);
+        EmitVertex();
+    }
+    EndPrimitive();
+}
+// --8<-- [end:geometry]
