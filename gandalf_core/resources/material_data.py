@@ -7,7 +7,8 @@ A material splits into two parts that the render systems treat differently:
 * the **uniform values** (:meth:`MaterialData.uniform_values`): colour and shader parameters. They are plain
   buffer data; changing them (e.g. animating a colour) never builds a new pipeline.
 
-Textures are referred to by name (the key in a backend's texture library), in binding order.
+Textures are referred to by name (the key in a backend's texture library), in binding order; so are storage
+buffers (``buffers``: names in a renderer's buffer library, which the app's own compute code fills).
 """
 
 from __future__ import annotations
@@ -50,6 +51,9 @@ class MaterialData:
     shows them); the renderers decode them to linear light for the shaders. Values above 1 are allowed.
     ``params`` map uniform names to a float or a flat sequence of up to 16 floats (vec2..vec4, mat3, mat4,
     row-major when flattened from a matrix); the name ``"color"`` is reserved for ``color``.
+    ``buffers`` name storage buffers of the renderer's buffer library (``renderer.buffers.build(name, data)``), bound
+    in order: OpenGL binds the i-th to shader-storage binding point i, WebGPU to the i-th storage binding of
+    ``@group(1)`` (for vertex pulling: a vertex shader reading mesh data, or a compute pass's output, by index).
     All fields are validated on construction and stored immutably; use :meth:`with_color` or
     :func:`dataclasses.replace` to derive variants.
     """
@@ -63,6 +67,7 @@ class MaterialData:
     depth_write: bool = True
     blend: str = "opaque"
     name: str = ""
+    buffers: Sequence[str] = ()
 
     def __post_init__(self) -> None:
         if not isinstance(self.shader, str) or not self.shader:
@@ -74,6 +79,12 @@ class MaterialData:
             if not isinstance(t, str) or not t:
                 raise ResourceError(label, f"textures[{i}]", f"expected a texture name, got {t!r}")
         object.__setattr__(self, "textures", tuple(self.textures))
+        if isinstance(self.buffers, str) or not isinstance(self.buffers, Sequence):
+            raise ResourceError(label, "buffers", f"expected a sequence of buffer names, got {self.buffers!r}")
+        for i, b in enumerate(self.buffers):
+            if not isinstance(b, str) or not b:
+                raise ResourceError(label, f"buffers[{i}]", f"expected a buffer name, got {b!r}")
+        object.__setattr__(self, "buffers", tuple(self.buffers))
 
         c = _floats(label, "color", self.color).reshape(-1)
         if c.size not in (3, 4):

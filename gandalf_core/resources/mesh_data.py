@@ -25,6 +25,8 @@ import numpy as np
 
 from gandalf_core.resources.errors import ResourceError
 
+#: The largest patch a patch mesh may have (OpenGL guarantees GL_MAX_PATCH_VERTICES >= 32).
+MAX_PATCH_SIZE = 32
 ATTRIBUTE_LOCATIONS: dict[str, int] = {"position": 0, "normal": 1, "uv": 2, "tangent": 3, "color": 4}
 INSTANCE_LOCATIONS = (5, 6, 7)
 
@@ -98,15 +100,15 @@ def _float_attribute(label: str, field: str, value: Any, components: int, count:
     return a32
 
 
-def _index_array(label: str, value: Any, count: int) -> np.ndarray:
+def _index_array(label: str, value: Any, count: int, group: int = 3) -> np.ndarray:
     a = np.asarray(value)
     if a.dtype.kind not in "iu":
         raise ResourceError(label, "indices", f"dtype {a.dtype} is not an integer type")
-    if not (a.ndim == 1 or (a.ndim == 2 and a.shape[1] == 3)):
-        raise ResourceError(label, "indices", f"expected shape (M,) or (M/3, 3), got {a.shape}")
+    if not (a.ndim == 1 or (a.ndim == 2 and a.shape[1] == group)):
+        raise ResourceError(label, "indices", f"expected shape (M,) or (M/{group}, {group}), got {a.shape}")
     flat = a.reshape(-1).astype(np.int64)
-    if flat.size == 0 or flat.size % 3:
-        raise ResourceError(label, "indices", f"index count {flat.size} is not a positive multiple of 3")
+    if flat.size == 0 or flat.size % group:
+        raise ResourceError(label, "indices", f"index count {flat.size} is not a positive multiple of {group}")
     bad = (flat < 0) | (flat >= count)
     if bad.any():
         i = int(np.argmax(bad))
@@ -139,6 +141,10 @@ class MeshData:
     Arrays are converted on construction (float32 attributes, ``uint32`` flattened indices), made read-only and
     validated: shapes, matching lengths, finite values, indices in range and a multiple of 3. Without indices the
     vertices themselves form the triangles (three per triangle). Methods return new meshes.
+
+    With ``patch_size`` set (1 to :data:`MAX_PATCH_SIZE`) the mesh is a **patch mesh** for tessellation: the indices
+    (or the vertices) form patches of that many control points instead of triangles. Only a program with a
+    tessellation control stage whose ``layout(vertices = N) out`` has the same N can draw it (OpenGL).
     """
 
     positions: np.ndarray
@@ -148,6 +154,7 @@ class MeshData:
     colors: np.ndarray | None = None
     indices: np.ndarray | None = None
     name: str = "mesh"
+    patch_size: int | None = None
 
     def __post_init__(self) -> None:
         label = self._label
@@ -160,10 +167,19 @@ class MeshData:
             value = getattr(self, field)
             if attr != "position" and value is not None:
                 object.__setattr__(self, field, _float_attribute(label, field, value, components, n))
+        group = 3
+        if self.patch_size is not None:
+            size = self.patch_size
+            if isinstance(size, bool) or not isinstance(size, (int, np.integer)) or not 1 <= size <= MAX_PATCH_SIZE:
+                detail = f"expected an integer from 1 to {MAX_PATCH_SIZE}, got {size!r}"
+                raise ResourceError(label, "patch_size", detail)
+            group = int(size)
+            object.__setattr__(self, "patch_size", group)
         if self.indices is not None:
-            object.__setattr__(self, "indices", _index_array(label, self.indices, n))
-        elif n % 3:
-            raise ResourceError(label, "positions", f"{n} vertices without indices do not form whole triangles")
+            object.__setattr__(self, "indices", _index_array(label, self.indices, n, group))
+        elif n % group:
+            whole = "whole triangles" if group == 3 and self.patch_size is None else f"whole patches of {group}"
+            raise ResourceError(label, "positions", f"{n} vertices without indices do not form {whole}")
 
     @property
     def _label(self) -> str:
@@ -181,11 +197,19 @@ class MeshData:
 
     @property
     def triangle_count(self) -> int:
-        """Number of triangles."""
-        return (self.index_count or self.vertex_count) // 3
+        """Number of triangles (of a patch mesh: 0, its patches become triangles only on the GPU)."""
+        return 0 if self.patch_size is not None else (self.index_count or self.vertex_count) // 3
+
+    @property
+    def patch_count(self) -> int:
+        """Number of patches of a patch mesh (0 for a triangle mesh)."""
+        return 0 if self.patch_size is None else (self.index_count or self.vertex_count) // self.patch_size
 
     def triangles(self) -> np.ndarray:
         """Vertex indices of every triangle, shape (T, 3) ``uint32`` (consecutive vertices when non-indexed)."""
+        if self.patch_size is not None:
+            raise ResourceError(self._label, "patch_size",
+                                f"a patch mesh (patches of {self.patch_size}) has no triangles until it is tessellated")
         if self.indices is None:
             return np.arange(self.vertex_count, dtype=np.uint32).reshape(-1, 3)
         return self.indices.reshape(-1, 3)
@@ -197,7 +221,7 @@ class MeshData:
 
     def _replace(self, **fields: Any) -> MeshData:
         current = {f: getattr(self, f) for f in ("positions", "normals", "uvs", "tangents", "colors", "indices")}
-        return MeshData(**{**current, **fields}, name=self.name)
+        return MeshData(**{**current, **fields}, name=self.name, patch_size=self.patch_size)
 
     def with_normals(self, recompute: bool = False) -> MeshData:
         """This mesh with smooth, area-weighted vertex normals (kept as they are unless absent or ``recompute``).

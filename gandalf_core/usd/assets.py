@@ -29,10 +29,17 @@ def write_mesh(stage: Usd.Stage, path: str, name: str, mesh: MeshData) -> None:
     write(prim, "gandalf:indexed", T.Bool, mesh.indices is not None)
     usd.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
     usd.CreatePointsAttr(Vt.Vec3fArray.FromNumpy(mesh.positions))
-    tri = mesh.triangles()
+    size = 3
+    if mesh.patch_size is not None:  # a patch mesh: each face is one patch of control points
+        size = mesh.patch_size
+        write(prim, "gandalf:patchSize", T.Int, size)
+        flat = mesh.indices if mesh.indices is not None else np.arange(mesh.vertex_count, dtype=np.uint32)
+        tri = flat.reshape(-1, size)
+    else:
+        tri = mesh.triangles()
     if tri.size and int(tri.max()) > _MAX_INDEX:
         raise ValueError(f"mesh '{name}' has indices beyond USD's int range")
-    usd.CreateFaceVertexCountsAttr(Vt.IntArray.FromNumpy(np.full(len(tri), 3, dtype=np.int32)))
+    usd.CreateFaceVertexCountsAttr(Vt.IntArray.FromNumpy(np.full(len(tri), size, dtype=np.int32)))
     usd.CreateFaceVertexIndicesAttr(Vt.IntArray.FromNumpy(tri.reshape(-1).astype(np.int32)))
     primvars = UsdGeom.PrimvarsAPI(usd)
     if mesh.normals is not None:
@@ -64,11 +71,14 @@ def read_mesh(ctx: FileContext, prim: Usd.Prim) -> tuple[str, MeshData]:
     positions = numeric_array(ctx, prim, "points", ("point3f[]", "float3[]"), np.float32, 3)
     counts = numeric_array(ctx, prim, "faceVertexCounts", "int[]", np.int64, None)
     indices = numeric_array(ctx, prim, "faceVertexIndices", "int[]", np.int64, None)
-    if (counts != 3).any():
-        raise ctx.fail(prim, "faceVertexCounts", "only triangle meshes are supported (every count must be 3)")
-    if indices.size != counts.size * 3:
-        raise ctx.fail(prim, "faceVertexIndices", f"has {indices.size} indices for {counts.size} triangles")
-    fields: dict[str, object] = {"positions": positions}
+    patch_size = read(ctx, prim, "gandalf:patchSize", "int", None)
+    size = 3 if patch_size is None else patch_size
+    if (counts != size).any():
+        what = "triangle meshes are" if patch_size is None else f"patches of {size} are"
+        raise ctx.fail(prim, "faceVertexCounts", f"only {what} supported (every count must be {size})")
+    if indices.size != counts.size * size:
+        raise ctx.fail(prim, "faceVertexIndices", f"has {indices.size} indices for {counts.size} faces of {size}")
+    fields: dict[str, object] = {"positions": positions, "patch_size": patch_size}
     fields["normals"] = numeric_array(ctx, prim, "normals", ("normal3f[]", "float3[]"), np.float32, 3, None)
     st = numeric_array(ctx, prim, "primvars:st", ("texCoord2f[]", "texCoord2d[]", "float2[]"), np.float64, 2, None)
     if st is not None:
@@ -104,6 +114,7 @@ def write_material(stage: Usd.Stage, path: str, name: str, material: MaterialDat
         "shader": (T.String, material.shader),
         "materialName": (T.String, material.name),
         "textures": (T.StringArray, list(material.textures)),
+        "buffers": (T.StringArray, list(material.buffers)),
         "color": (T.Double4, material.color),
         "cull": (T.String, material.cull),
         "depthTest": (T.Bool, material.depth_test),
@@ -135,6 +146,7 @@ def read_material(ctx: FileContext, prim: Usd.Prim) -> tuple[str, MaterialData]:
         return name, MaterialData(
             shader=read(ctx, prim, g + "shader", "string"),
             textures=list(read(ctx, prim, g + "textures", "string[]", [])),
+            buffers=list(read(ctx, prim, g + "buffers", "string[]", [])),
             color=tuple(read_floats(ctx, prim, g + "color", ("double4",), 4)),
             params=params,
             cull=read(ctx, prim, g + "cull", "string", "back"),

@@ -22,7 +22,9 @@ from ...resources import CubeTextureData, MaterialData, MeshData, ResourceError,
 from ..errors import ShaderCompileError
 from ..library import ResourceLib
 from ..material_values import MaterialValues
+from ..patches import declared_patch_size
 from ..shader_files import load_shader
+from ..storage import buffer_bytes
 
 GL_SRGB8_ALPHA8 = 0x8C43
 # GL_FLOAT_MAT2, _MAT3, _MAT4 -> size
@@ -82,6 +84,9 @@ class GLShader:
     attributes: dict[int, str]  # location -> attribute name in the shader
     samplers: list[str]  # sampler uniforms in declaration order (texture unit = index)
     uniforms: set[str] = field(default_factory=set)
+    patch_vertices: int | None = None  # with a tessellation control stage: its layout(vertices = N)
+    storage_blocks: list[str] = field(default_factory=list)  # shader storage blocks in declaration order
+    active_storage: dict[str, int] = field(default_factory=dict)  # block -> binding, of the blocks still in use
 
 
 class ShaderLib(ResourceLib[GLShader]):
@@ -119,20 +124,35 @@ class ShaderLib(ResourceLib[GLShader]):
         ):
             if src is not None:
                 stages[key] = load_shader(src, stage, "glsl", include_dirs)
+        patch_vertices = None
+        if "tess_evaluation_shader" in stages:
+            if "tess_control_shader" not in stages:
+                raise ShaderCompileError(
+                    f"shader '{name}' ({stages['tess_evaluation_shader'].filename}): a tessellation evaluation stage "
+                    "needs a tessellation control stage here (its layout(vertices = N) gives the patch size)"
+                )
+            control = stages["tess_control_shader"]
+            patch_vertices = declared_patch_size(control.text, control.filename)
+        elif "tess_control_shader" in stages:
+            raise ShaderCompileError(f"shader '{name}' ({stages['tess_control_shader'].filename}): a tessellation "
+                                     "control stage needs a tessellation evaluation stage (tess_evaluation=)")
         try:
             program = self.ctx.program(**{k: v.text for k, v in stages.items()})
         except moderngl.Error as exc:
             raise ShaderCompileError(_explain_gl_error(name, str(exc), stages)) from None
         self.stats["shaders_created"] += 1
-        attributes, uniforms = {}, set()
+        attributes, uniforms, active_storage = {}, set(), {}
         for member in program:
             obj = program[member]
             if isinstance(obj, moderngl.Attribute):
-                attributes[obj.location] = member
+                if not member.startswith("gl_"):  # gl_VertexID and friends are built-ins, not mesh attributes
+                    attributes[obj.location] = member
             elif isinstance(obj, moderngl.Uniform):
                 uniforms.add(member)
             elif isinstance(obj, moderngl.UniformBlock) and member in UNIFORM_BLOCKS:
                 obj.binding = UNIFORM_BLOCKS[member]
+            elif isinstance(obj, moderngl.StorageBlock):
+                active_storage[member] = obj.binding
         # Texture unit i belongs to the i-th sampler declared (also one the compiler dropped as unused, so
         # a material's textures line up with the source the student reads, as with WGSL bindings).
         # The engine's own samplers (the shadow map) keep their reserved units and are no material texture.
@@ -142,7 +162,8 @@ class ShaderLib(ResourceLib[GLShader]):
         for sampler, unit in units.items():
             if sampler in uniforms:
                 program[sampler].value = unit
-        shader = GLShader(name, program, attributes, samplers, uniforms)
+        storage_blocks = list(dict.fromkeys(b for src in stages.values() for b in _declared_storage_blocks(src.text)))
+        shader = GLShader(name, program, attributes, samplers, uniforms, patch_vertices, storage_blocks, active_storage)
         self._items[name] = shader
         self._data[name] = stages
         return shader
@@ -161,6 +182,13 @@ def _declared_samplers(glsl: str) -> list[str]:
         if tok == "uniform" and tokens[i + 1].startswith(("sampler", "isampler", "usampler")):
             names.append(tokens[i + 2])
     return names
+
+
+def _declared_storage_blocks(glsl: str) -> list[str]:
+    """Shader storage block names (``... buffer Name { ... }``) in declaration order, comments stripped."""
+    text = re.sub(r"/\*.*?\*/", " ", glsl, flags=re.S)
+    text = re.sub(r"//[^\n]*", " ", text)
+    return re.findall(r"\bbuffer\s+([A-Za-z_]\w*)\s*\{", text)
 
 
 def _explain_gl_error(name: str, message: str, stages: dict[str, ShaderSource]) -> str:
@@ -224,6 +252,31 @@ class MeshLib(ResourceLib[GLMesh]):
             item.index_buffer.release()
 
 
+# --- storage buffers -------------------------------------------------------------------------------
+class BufferLib(ResourceLib[moderngl.Buffer]):
+    """Storage buffers by name, for materials that read them (vertex pulling) and the compute code that fills them.
+
+    ``build(name, data)``: ``data`` is a numpy array (its bytes) or a size in bytes (zeros).
+    """
+
+    kind = "buffer"
+
+    def __init__(self, ctx: moderngl.Context, stats: Counter[str]) -> None:
+        super().__init__(stats)
+        self.ctx = ctx
+
+    def _create(self, name: str, data: Any) -> moderngl.Buffer:
+        content, size = buffer_bytes(name, data)
+        buf = self.ctx.buffer(content) if content is not None else self.ctx.buffer(reserve=size)
+        if content is None:
+            buf.clear()
+        self.stats["buffers_created"] += 1
+        return buf
+
+    def _release(self, item: moderngl.Buffer) -> None:
+        item.release()
+
+
 # --- materials ------------------------------------------------------------------------------------
 class GLMaterial(MaterialValues):
     """A material instance: its shader, textures and uniform values (changeable without rebuilding).
@@ -232,14 +285,28 @@ class GLMaterial(MaterialValues):
     a matrix given as 9 or 16 row-major floats is transposed into GL's column-major order.
     """
 
-    def __init__(self, name: str, data: MaterialData, shader: GLShader, textures: list[Any]) -> None:
+    def __init__(self, name: str, data: MaterialData, shader: GLShader, textures: list[Any],
+                 buffers: list[moderngl.Buffer] | None = None) -> None:
+        buffers = buffers or []
         if len(textures) != len(shader.samplers):
             raise ResourceError(
                 f"material '{name}'", "textures",
                 f"{len(textures)} texture(s) given but shader '{shader.name}' samples {len(shader.samplers)} "
                 f"({', '.join(shader.samplers) or 'none'})",
             )
+        if len(buffers) != len(shader.storage_blocks):
+            raise ResourceError(
+                f"material '{name}'", "buffers",
+                f"{len(buffers)} buffer(s) given but shader '{shader.name}' declares {len(shader.storage_blocks)} "
+                f"storage block(s) ({', '.join(shader.storage_blocks) or 'none'})",
+            )
+        for block, binding in shader.active_storage.items():
+            if binding >= len(buffers):
+                raise ResourceError(f"material '{name}'", "buffers",
+                                    f"shader '{shader.name}' reads storage block '{block}' at binding {binding}, but "
+                                    f"the material binds buffers 0..{len(buffers) - 1} (declare binding = its index)")
         self.name, self.data, self.shader, self.textures = name, data, shader, textures
+        self.buffers = buffers
         self.set_values(data.uniform_values())
 
     def _upload(self) -> None:
@@ -260,17 +327,23 @@ class GLMaterial(MaterialValues):
             uniform.value = value
         for unit, texture in enumerate(self.textures):
             texture.use(location=unit)
+        for binding, buffer in enumerate(self.buffers):
+            buffer.bind_to_storage_buffer(binding)
 
 
 class MaterialLib(ResourceLib[GLMaterial]):
     kind = "material"
 
-    def __init__(self, shaders: ShaderLib, textures: TextureLib, stats: Counter[str]) -> None:
+    def __init__(self, shaders: ShaderLib, textures: TextureLib, stats: Counter[str],
+                 buffers: BufferLib | None = None) -> None:
         super().__init__(stats)
-        self.shaders, self.textures = shaders, textures
+        self.shaders, self.textures, self.buffers = shaders, textures, buffers
 
     def _create(self, name: str, data: MaterialData) -> GLMaterial:
         referrer = f"material '{name}'"
         shader = self.shaders.get(data.shader, referrer)
         textures = [self.textures.get(tex, referrer) for tex in data.textures]
-        return GLMaterial(name, data, shader, textures)
+        if data.buffers and self.buffers is None:
+            raise ResourceError(referrer, "buffers", "this material library has no buffer library")
+        buffers = [self.buffers.get(buf, referrer) for buf in data.buffers]
+        return GLMaterial(name, data, shader, textures, buffers)

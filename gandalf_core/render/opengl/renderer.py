@@ -28,10 +28,12 @@ from ..frame import (
     FrameData,
     instance_capacity,
 )
+from ..patches import check_patch_draw
 from ..shader_files import SNIPPETS_DIR
 from .libs import (
     ENGINE_SAMPLERS,
     GL_SRGB8_ALPHA8,
+    BufferLib,
     GLMaterial,
     GLMesh,
     GLShader,
@@ -61,7 +63,9 @@ class OpenGLRenderer(Renderer):
         self.textures = TextureLib(self.ctx, self.stats)
         self.shaders = ShaderLib(self.ctx, self.stats)
         self.meshes = MeshLib(self.ctx, self.stats)
-        self.materials = MaterialLib(self.shaders, self.textures, self.stats)
+        #: Storage buffers by name: filled by the app's compute code, read by materials that name them.
+        self.buffers = BufferLib(self.ctx, self.stats)
+        self.materials = MaterialLib(self.shaders, self.textures, self.stats, self.buffers)
         self._frame_ubo = self.ctx.buffer(reserve=FRAME_FLOATS * 4)
         self._lights_ubo = self.ctx.buffer(reserve=LIGHTS_BLOCK_BYTES)
         self._sky: tuple[GLShader, moderngl.VertexArray] | None = None
@@ -107,6 +111,12 @@ class OpenGLRenderer(Renderer):
         # scratch texture unit, which on some drivers is the unit the shadow map is bound to.
         draws = [(batch, self.resolve_material(batch.material, assets), self.resolve_mesh(batch.mesh, assets))
                  for batch in data.batches]
+        for batch, material, mesh in draws:
+            check_patch_draw(batch.material, material.shader.name, material.shader.patch_vertices, batch.mesh,
+                             mesh.data, self.backend)
+            if data.shadows and mesh.data.patch_size is not None and not batch.transparent:
+                raise ValueError(f"mesh '{batch.mesh}' (material '{batch.material}') is a patch mesh, which the "
+                                 "shadow pass cannot draw: turn off cast_shadows, or draw it with a blended material")
         sky = self._prepare_sky(data.skybox, assets) if data.skybox is not None else None
         if data.shadows:
             self._draw_shadow_map(draws)
@@ -141,7 +151,13 @@ class OpenGLRenderer(Renderer):
             if location in shader.attributes:
                 vao.bind(location, "f", self._instance_buffer, "4f", offset=offset + 16 * i,
                          stride=INSTANCE_STRIDE, divisor=1)
-        vao.render(moderngl.TRIANGLES, vertices=mesh.count, instances=batch.count)
+        # --8<-- [start:patches]
+        if shader.patch_vertices is not None:  # a tessellation program draws patches, never triangles
+            self.ctx.patch_vertices = shader.patch_vertices
+            vao.render(moderngl.PATCHES, vertices=mesh.count, instances=batch.count)
+        else:
+            vao.render(moderngl.TRIANGLES, vertices=mesh.count, instances=batch.count)
+        # --8<-- [end:patches]
         self.stats["draw_calls"] += 1
 
     # --8<-- [start:shadow_pass]
@@ -271,7 +287,7 @@ class OpenGLRenderer(Renderer):
 
     def live_objects(self) -> int:
         """GPU objects this renderer holds now (for leak tests)."""
-        libraries = (self.textures, self.shaders, self.meshes, self.materials)
+        libraries = (self.textures, self.shaders, self.meshes, self.materials, self.buffers)
         return (len(self._vaos) + (self._sky is not None) + (self._shadow is not None)
                 + sum(len(lib) for lib in libraries))
 
@@ -286,7 +302,7 @@ class OpenGLRenderer(Renderer):
             for obj in reversed(self._shadow):
                 obj.release()
             self._shadow = None
-        for lib in (self.materials, self.meshes, self.shaders, self.textures):
+        for lib in (self.materials, self.buffers, self.meshes, self.shaders, self.textures):
             lib.release()
         if self._instance_buffer is not None:
             self._instance_buffer.release()

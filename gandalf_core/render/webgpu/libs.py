@@ -26,6 +26,7 @@ from ..errors import ShaderCompileError
 from ..library import ResourceLib
 from ..material_values import MaterialValues
 from ..shader_files import load_shader
+from ..storage import buffer_bytes
 from ..wgsl_reflect import Binding, ShaderReflection, WGSLReflectError, reflect
 
 _ADDRESS = {"repeat": "repeat", "clamp": "clamp-to-edge"}
@@ -228,6 +229,42 @@ class MeshLib(ResourceLib[WGPUMesh]):
             item.index_buffer.destroy()
 
 
+# --- storage buffers -------------------------------------------------------------------------------
+#: What a named buffer may be used for: read by materials (storage, vertex, index), written by compute
+#: passes and copies, and drawn indirectly.
+BUFFER_USAGE = (wgpu.BufferUsage.STORAGE | wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.INDEX
+                | wgpu.BufferUsage.INDIRECT | wgpu.BufferUsage.COPY_SRC | wgpu.BufferUsage.COPY_DST)
+
+
+class BufferLib(ResourceLib[Any]):
+    """Storage buffers by name, for materials that read them (vertex pulling) and the compute code that fills them.
+
+    ``build(name, data)``: ``data`` is a numpy array (its bytes) or a size in bytes (zeros).
+    """
+
+    kind = "buffer"
+
+    def __init__(self, device: Any, stats: Counter[str]) -> None:
+        super().__init__(stats)
+        self.device = device
+
+    def _create(self, name: str, data: Any) -> Any:
+        content, size = buffer_bytes(name, data)
+        limit = int(self.device.limits["max-storage-buffer-binding-size"])
+        if size > limit:
+            raise ResourceError(f"buffer '{name}'", "size",
+                                f"{size} bytes is more than the device's max-storage-buffer-binding-size ({limit})")
+        if content is None:
+            buf = self.device.create_buffer(size=size, usage=BUFFER_USAGE, label=name)
+        else:
+            buf = self.device.create_buffer_with_data(data=content, usage=BUFFER_USAGE, label=name)
+        self.stats["buffers_created"] += 1
+        return buf
+
+    def _release(self, item: Any) -> None:
+        item.destroy()
+
+
 # --- materials ------------------------------------------------------------------------------------
 class WGPUMaterial(MaterialValues):
     """A material instance: uniform buffer + bind group; values change without touching any pipeline.
@@ -237,7 +274,8 @@ class WGPUMaterial(MaterialValues):
     """
 
     def __init__(self, name: str, data: MaterialData, shader: WGPUShader, textures: list[WGPUTexture],
-                 device: Any) -> None:
+                 device: Any, buffers: list[Any] | None = None) -> None:
+        buffers = buffers or []
         self.name, self.data, self.shader, self.device = name, data, shader, device
         self.uniform_buffer = None
         self._struct = None
@@ -249,6 +287,15 @@ class WGPUMaterial(MaterialValues):
                 f"{len(textures)} texture(s) given but shader '{shader.name}' ({shader.source.filename}) declares "
                 f"{len(texture_slots)} in @group(1) ({', '.join(b.name for b in texture_slots) or 'none'})",
             )
+        storage_slots = [b for b in shader.material_bindings if b.kind in ("storage", "read-only-storage")]
+        if len(storage_slots) != len(buffers):
+            raise ResourceError(
+                f"material '{name}'", "buffers",
+                f"{len(buffers)} buffer(s) given but shader '{shader.name}' ({shader.source.filename}) declares "
+                f"{len(storage_slots)} storage buffer(s) in @group(1) "
+                f"({', '.join(b.name for b in storage_slots) or 'none'})",
+            )
+        next_buffer = iter(buffers)
         next_texture = iter(textures)
         current: WGPUTexture | None = None
         for b in shader.material_bindings:
@@ -259,6 +306,8 @@ class WGPUMaterial(MaterialValues):
                     usage=wgpu.BufferUsage.UNIFORM | wgpu.BufferUsage.COPY_DST,
                 )
                 entries.append({"binding": b.binding, "resource": {"buffer": self.uniform_buffer}})
+            elif b.kind in ("storage", "read-only-storage"):
+                entries.append({"binding": b.binding, "resource": {"buffer": next(next_buffer)}})
             elif b.kind == "texture":
                 current = next(next_texture)
                 entries.append({"binding": b.binding, "resource": current.view})
@@ -300,15 +349,19 @@ class WGPUMaterial(MaterialValues):
 class MaterialLib(ResourceLib[WGPUMaterial]):
     kind = "material"
 
-    def __init__(self, device: Any, shaders: ShaderLib, textures: TextureLib, stats: Counter[str]) -> None:
+    def __init__(self, device: Any, shaders: ShaderLib, textures: TextureLib, stats: Counter[str],
+                 buffers: BufferLib | None = None) -> None:
         super().__init__(stats)
-        self.device, self.shaders, self.textures = device, shaders, textures
+        self.device, self.shaders, self.textures, self.buffers = device, shaders, textures, buffers
 
     def _create(self, name: str, data: MaterialData) -> WGPUMaterial:
         referrer = f"material '{name}'"
         shader = self.shaders.get(data.shader, referrer)
         textures = [self.textures.get(tex, referrer) for tex in data.textures]
-        return WGPUMaterial(name, data, shader, textures, self.device)
+        if data.buffers and self.buffers is None:
+            raise ResourceError(referrer, "buffers", "this material library has no buffer library")
+        buffers = [self.buffers.get(buf, referrer) for buf in data.buffers]
+        return WGPUMaterial(name, data, shader, textures, self.device, buffers)
 
     def _release(self, item: WGPUMaterial) -> None:
         if item.uniform_buffer is not None:

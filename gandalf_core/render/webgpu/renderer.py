@@ -30,9 +30,10 @@ from ..frame import (
     FrameData,
     instance_capacity,
 )
+from ..patches import check_patch_draw
 from ..shader_files import SNIPPETS_DIR
 from .device import request_device
-from .libs import MaterialLib, MeshLib, ShaderLib, TextureLib, WGPUMaterial, WGPUMesh, WGPUShader
+from .libs import BufferLib, MaterialLib, MeshLib, ShaderLib, TextureLib, WGPUMaterial, WGPUMesh, WGPUShader
 
 COLOR_FORMAT = "rgba8unorm-srgb"
 DEPTH_FORMAT = "depth32float"
@@ -97,7 +98,9 @@ class WebGPURenderer(Renderer):
         self.textures = TextureLib(self.device, self.stats)
         self.shaders = ShaderLib(self.device, self.stats)
         self.meshes = MeshLib(self.device, self.stats)
-        self.materials = MaterialLib(self.device, self.shaders, self.textures, self.stats)
+        #: Storage buffers by name: filled by the app's compute code, read by materials that name them.
+        self.buffers = BufferLib(self.device, self.stats)
+        self.materials = MaterialLib(self.device, self.shaders, self.textures, self.stats, self.buffers)
         self._pipelines: dict[tuple[Any, ...], Any] = {}
         self._instance_buffer: Any = None
         self._create_targets()
@@ -137,6 +140,7 @@ class WebGPURenderer(Renderer):
         for batch in data.batches:
             material = self.resolve_material(batch.material, assets)
             mesh = self.resolve_mesh(batch.mesh, assets)
+            check_patch_draw(batch.material, material.shader.name, None, batch.mesh, mesh.data, self.backend)
             draws.append((batch, material, mesh, self._pipeline(material, mesh, data.reverse_z)))
         sky = self._sky_draw(data.skybox, assets, data.reverse_z) if data.skybox is not None else None
         encoder = self.device.create_command_encoder()
@@ -359,12 +363,12 @@ class WebGPURenderer(Renderer):
 
     def live_objects(self) -> int:
         """GPU objects this renderer holds now (for leak tests)."""
-        libraries = (self.textures, self.shaders, self.meshes, self.materials)
+        libraries = (self.textures, self.shaders, self.meshes, self.materials, self.buffers)
         return (len(self._pipelines) + len(self._sky_materials) + (self._shadow is not None)
                 + sum(len(lib) for lib in libraries))
 
     def release(self) -> None:
-        for lib in (self.materials, self.meshes, self.shaders, self.textures):
+        for lib in (self.materials, self.buffers, self.meshes, self.shaders, self.textures):
             lib.release()
         self._pipelines.clear()
         self._sky_materials.clear()
