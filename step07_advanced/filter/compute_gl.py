@@ -1,0 +1,144 @@
+"""The filters on OpenGL: GLSL 4.30 compute shaders with image load/store, on the renderer's moderngl context.
+
+The source image is an ``rgba8`` texture read with ``texelFetch`` (a sampler, no filtering); a pass writes an
+image unit (``imageStore``) of format ``rgba32f`` (the separable blur's intermediate, so the 8-bit result is rounded
+once) or ``rgba8`` (the result). ``ctx.memory_barrier()`` makes one dispatch's writes visible to the next.
+"""
+
+from __future__ import annotations
+
+from types import ModuleType
+
+import moderngl
+import numpy as np
+
+from .kernels import MAX_RADIUS, check_image, check_op, check_radius, check_shared_memory, groups
+from .shaders import FORMATS, explain_error, kernel_source
+
+#: Compute shaders and image load/store arrived in OpenGL 4.3.
+REQUIRED_VERSION = 430
+#: GL 4.3's guaranteed GL_MAX_COMPUTE_SHARED_MEMORY_SIZE (moderngl does not report the driver's value).
+GL_MIN_SHARED_MEMORY = 32768
+
+
+class GLImageFilter:
+    """Runs :data:`~.kernels.OPERATIONS` on RGBA8 images: ``run(image, op, radius)`` returns the filtered image."""
+
+    backend = "opengl"
+
+    def __init__(self, ctx: moderngl.Context, impl: ModuleType) -> None:
+        if ctx.version_code < REQUIRED_VERSION:
+            raise RuntimeError(f"the image filter needs OpenGL {REQUIRED_VERSION / 100:.1f} compute shaders; "
+                               f"this context is {ctx.version_code / 100:.1f}")
+        self.ctx = ctx
+        self.max_size = int(ctx.info["GL_MAX_TEXTURE_SIZE"])
+        self.max_size_name = "GL_MAX_TEXTURE_SIZE"
+        check_shared_memory(int(ctx.info.get("GL_MAX_COMPUTE_SHARED_MEMORY_SIZE", GL_MIN_SHARED_MEMORY)),
+                            "GL_MAX_COMPUTE_SHARED_MEMORY_SIZE")
+        fmt = FORMATS["opengl"]
+        self.programs = {
+            "weights": self._compile("weights", impl),
+            "pass_float": self._compile("pass", impl, fmt["float"]),
+            "pass_unorm8": self._compile("pass", impl, fmt["unorm8"]),
+            "tiled_float": self._compile("tiled", impl, fmt["float"]),
+            "tiled_unorm8": self._compile("tiled", impl, fmt["unorm8"]),
+            "naive": self._compile("naive", impl, fmt["unorm8"]),
+            "sobel": self._compile("sobel", impl, fmt["unorm8"]),
+        }
+        self.weights = ctx.buffer(reserve=(2 * MAX_RADIUS + 1) * 4)
+        self.size: tuple[int, int] | None = None
+        self.textures: dict[str, moderngl.Texture] = {}
+
+    def _compile(self, kernel: str, impl: ModuleType, out_format: str | None = None) -> moderngl.ComputeShader:
+        src = kernel_source("opengl", kernel, impl, out_format)
+        try:
+            return self.ctx.compute_shader(src.text)
+        except moderngl.Error as exc:
+            raise RuntimeError(explain_error(src, str(exc))) from None
+
+    # --- steps (the study times dispatch + finish) ------------------------------------------------------
+    def upload(self, image: np.ndarray) -> None:
+        """Check ``image`` (RGBA8, (H, W, 4) uint8, within GL_MAX_TEXTURE_SIZE) and make it the source."""
+        image = check_image(image, self.max_size, self.max_size_name)
+        h, w = image.shape[:2]
+        if self.size != (w, h):
+            for tex in self.textures.values():
+                tex.release()
+            self.textures = {
+                "src": self.ctx.texture((w, h), 4, dtype="f1"),
+                "mid": self.ctx.texture((w, h), 4, dtype="f4"),
+                "dst": self.ctx.texture((w, h), 4, dtype="f1"),
+            }
+            for tex in self.textures.values():
+                tex.filter = (moderngl.NEAREST, moderngl.NEAREST)
+            self.size = (w, h)
+        self.textures["src"].write(image.tobytes())  # row 0 (the top) first, as TextureData stores it
+
+    def dispatch(self, op: str, radius: int = 0) -> None:
+        """Run ``op`` on the uploaded image into the result texture (no wait)."""
+        check_op(op)
+        r = check_radius(radius)
+        if self.size is None:
+            raise RuntimeError("upload an image before dispatching a filter")
+        w, h = self.size
+        tex = self.textures
+        if op == "sobel":
+            self._run("sobel", tex["src"], tex["dst"], (1, 0), r, groups(w, h, op))
+            return
+        self._fill_weights(r)
+        if op == "naive":
+            self._run("naive", tex["src"], tex["dst"], (1, 0), r, groups(w, h, op))
+            return
+        kind = "pass" if op == "separable" else "tiled"
+        self._run(f"{kind}_float", tex["src"], tex["mid"], (1, 0), r, groups(w, h, op, (1, 0)))
+        self._run(f"{kind}_unorm8", tex["mid"], tex["dst"], (0, 1), r, groups(w, h, op, (0, 1)))
+
+    def _fill_weights(self, radius: int) -> None:
+        program = self.programs["weights"]
+        program["u_radius"].value = radius
+        self.weights.bind_to_storage_buffer(0)
+        program.run(group_x=-(-(2 * radius + 1) // 64))
+        self.ctx.memory_barrier()
+
+    def _run(self, name: str, src: moderngl.Texture, dst: moderngl.Texture, direction: tuple[int, int],
+             radius: int, group_count: tuple[int, int]) -> None:
+        program = self.programs[name]
+        for uniform, value in (("u_radius", radius), ("u_direction", direction)):
+            if program.get(uniform, None) is not None:
+                program[uniform].value = value
+        src.use(location=0)
+        dst.bind_to_image(0, read=False, write=True)
+        self.weights.bind_to_storage_buffer(0)
+        program.run(group_x=group_count[0], group_y=group_count[1])
+        # The next pass samples what this one stored: make the image writes visible first.
+        self.ctx.memory_barrier()
+
+    def finish(self) -> None:
+        """Wait until the GPU has done everything dispatched so far."""
+        self.ctx.finish()
+
+    def read(self) -> np.ndarray:
+        """The result image, (H, W, 4) uint8, top row first."""
+        w, h = self.size
+        return np.frombuffer(self.textures["dst"].read(), dtype=np.uint8).reshape(h, w, 4).copy()
+
+    # --- one call --------------------------------------------------------------------------------------------
+    def run(self, image: np.ndarray, op: str, radius: int = 0) -> np.ndarray:
+        """``op`` ("separable", "naive", "tiled" or "sobel") of ``image`` with ``radius``: the RGBA8 result."""
+        check_op(op)
+        check_radius(radius)
+        self.upload(image)
+        self.dispatch(op, radius)
+        return self.read()
+
+    def weight_table(self, radius: int) -> np.ndarray:
+        """The weight table the student's ``gaussian_weight`` computes on the GPU, float32 (2·radius + 1,)."""
+        r = check_radius(radius)
+        self._fill_weights(r)
+        return np.frombuffer(self.weights.read(size=(2 * r + 1) * 4), dtype=np.float32).copy()
+
+    def release(self) -> None:
+        for obj in (*self.textures.values(), *self.programs.values(), self.weights):
+            obj.release()
+        self.textures = {}
+        self.size = None
