@@ -206,7 +206,8 @@ def add_view(scene: Scene) -> None:
     """Camera, background and lights shared by the demo and the tests: a key and a fill light and ambient."""
     scene.create_entity(InfoComponent("background"), ClearColorComponent(BACKGROUND))
     key = (-3.0, 5.0, 4.0)
-    scene.create_entity(InfoComponent("key light"), TransformComponent(key, quaternion=look_at_rotation(key, (0, 0, 0))),
+    scene.create_entity(InfoComponent("key light"),
+                        TransformComponent(key, quaternion=look_at_rotation(key, (0, 0, 0))),
                         LightComponent("directional", (1.0, 0.96, 0.9), intensity=1.1))
     fill = (4.0, 1.5, -2.0)
     scene.create_entity(InfoComponent("fill light"),
