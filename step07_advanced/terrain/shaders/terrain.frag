@@ -1,0 +1,17 @@
+#version 410 core
+// Per fragment, from the uv alone: the normal (the exercise's terrain_normal), the height, the colour.
+#include "frame.glsl"
+#include "heightmap.glsl"
+#include "terrain.glsl"
+#include "terrain_shading.glsl"
+in vec2 v_uv;
+uniform vec4 u_color;  // the haze (the sky's colour), linear
+uniform float u_size;
+uniform float u_height_scale;
+out vec4 f_color;
+void main() {
+    vec3 n = terrain_normal(v_uv, vec2(u_size, u_height_scale));
+    float h = terrain_height(v_uv);
+    vec3 world = vec3((v_uv.x - 0.5) * u_size, u_height_scale * h, (v_uv.y - 0.5) * u_size);
+    f_color = vec4(shade_terrain(h, n, world, u_color.rgb), 1.0);
+}

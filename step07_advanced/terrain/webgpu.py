@@ -1,0 +1,67 @@
+"""Step 07 terrain, WebGPU variant: ``python -m step07_advanced.terrain.webgpu [--student]``.
+
+WebGPU has no tessellation stage. A compute pass (``tessellate.wgsl``) computes every patch's levels with the
+same exercise function ``tess_level`` and writes the patch's triangles into a storage buffer; the render
+pipeline draws that many vertices with no vertex buffer, and its vertex shader pulls each one by
+``vertex_index`` (vertex pulling).
+"""
+
+from __future__ import annotations
+
+from types import ModuleType
+from typing import Any
+
+import numpy as np
+
+from gandalf_core import Application
+from gandalf_core.app.cli import load_impl, run_variant
+from gandalf_core.resources import MaterialData, MeshData
+
+from . import STEP
+from .heightfield import encode_heights
+from .patches import TerrainParams
+from .scene import PARAMS, build_scene, terrain_heights
+from .shaders import SHADER_NAME, WGSL_RENDER, impl_shader_dir
+from .tessellate_wgpu import VERTEX_BUFFER, WGPUTessellator
+
+
+class WGPUTerrain:
+    """The WebGPU backend of the terrain scene: the compute tessellator and a vertex-pulling material."""
+
+    def __init__(self, app: Application, impl: ModuleType, params: TerrainParams = PARAMS,
+                 heights: np.ndarray | None = None) -> None:
+        app.renderer.shaders.build(SHADER_NAME, WGSL_RENDER, include_dirs=[impl_shader_dir(impl)])
+        heightmap = encode_heights(terrain_heights() if heights is None else heights)
+        self.tessellator = WGPUTessellator(app.renderer, impl, params, heightmap)
+        self.params = params
+
+    def mesh(self) -> MeshData:
+        # --8<-- [start:mesh]
+        # Positions that are never uploaded: the shader reads no attribute, so the renderer just draws
+        # this many vertices, and the vertex shader fetches each from the compute pass's buffer.
+        return MeshData(np.zeros((self.tessellator.vertex_count, 3)), name="terrain (pulled)")
+        # --8<-- [end:mesh]
+
+    def material(self, base: MaterialData) -> MaterialData:
+        return MaterialData(base.shader, base.textures, color=base.color, params=base.params, cull=base.cull,
+                            name=base.name, buffers=(VERTEX_BUFFER,))
+
+    def update(self, eye: np.ndarray) -> None:
+        self.tessellator.run(eye)
+
+
+def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480,
+               params: TerrainParams = PARAMS, **scene: Any) -> Application:
+    impl = load_impl(STEP, student)
+    app = Application("webgpu", width, height, title="step07 · terrain · WebGPU", headless=headless,
+                      fixed_dt=1 / 60)
+    app.add_scene(build_scene(impl, WGPUTerrain(app, impl, params, scene.get("heights")), **scene))
+    return app
+
+
+def main(argv: list[str] | None = None) -> int:
+    return run_variant(create_app, argv, description=__doc__)
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
