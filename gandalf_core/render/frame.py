@@ -66,6 +66,7 @@ class DrawBatch:
     first_instance: int = 0
     transparent: bool = False  # blended: drawn after the opaque batches and the sky, back to front
     farthest: float = 0.0  # view depth of its farthest instance (transparent batches, this frame)
+    mirrored: bool = False  # its world matrices flip handedness (negative determinant): front faces wind clockwise
 
     @property
     def count(self) -> int:

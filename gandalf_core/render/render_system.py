@@ -2,7 +2,9 @@
 entities into instanced batches, gathers their world matrices, and hands all of it to the renderer.
 
 Batches are planned again only when components come or go; every frame costs one numpy gather
-of the world matrices and one upload, whatever the number of entities.
+of the world matrices and one upload, whatever the number of entities. Instances whose world matrix mirrors
+(a negative determinant, e.g. one negative scale) turn their triangles' winding around; they are drawn in a
+batch of their own with clockwise front faces, so culling keeps the faces that point at the camera.
 """
 
 from __future__ import annotations
@@ -132,6 +134,30 @@ class RenderSystem(System):
         self._number_batches()
         self._rows = np.concatenate([b.rows for b in self.batches])
 
+    def _split_mirrored(self, world: np.ndarray) -> list[DrawBatch]:
+        """This frame's batches, with each batch's mirrored instances (negative determinant) split into a
+        batch of their own; the batches themselves when nothing is mirrored (the common case: one vectorised
+        triple product per instance, no copies)."""
+        rows = self._rows
+        m = world[rows, :3, :3]
+        det = np.einsum("ij,ij->i", m[:, :, 0], np.cross(m[:, :, 1], m[:, :, 2]))
+        flipped = det < 0.0
+        if not flipped.any():
+            return self.batches
+        batches, first = [], 0
+        for batch in self.batches:
+            mask = flipped[first:first + batch.count]
+            first += batch.count
+            for mirrored, part in ((False, batch.rows[~mask]), (True, batch.rows[mask])):
+                if len(part):
+                    batches.append(DrawBatch(batch.mesh, batch.material, part, transparent=batch.transparent,
+                                             farthest=batch.farthest, mirrored=mirrored))
+        first = 0
+        for batch in batches:
+            batch.first_instance = first
+            first += batch.count
+        return batches
+
     def _current_plan_key(self) -> tuple[int, int]:
         # Batches change when this system's entities change, and row indices when any transform row moves.
         return (self.version, self.scene.store(TransformComponent).layout_version)
@@ -149,10 +175,13 @@ class RenderSystem(System):
         depth_ends = (hi, lo) if reverse_z else (lo, hi)
         app = scene.app
         frame = pack_frame(view, projection, eye, app.clock.time if app is not None else 0.0, ts, depth_ends)
-        if self.batches:
+        batches = self.batches
+        if batches:
             world = scene.store(TransformComponent).columns["world"]
             self._sort_transparent(world, view)
-            self._instances = pack_instances(world, self._rows, self._instances)
+            batches = self._split_mirrored(world)
+            rows = self._rows if batches is self.batches else np.concatenate([b.rows for b in batches])
+            self._instances = pack_instances(world, rows, self._instances)
         light_systems = [s for s in scene.systems if isinstance(s, LightSystem)]
         # The light system knows the lights, the renderer the depth range their shadow projection needs.
         lights = (light_systems[0].data + light_systems[0].shadow(self.renderer.depth_range)
@@ -163,8 +192,8 @@ class RenderSystem(System):
             clear_color=self.clear_color(),
             frame=frame,
             lights=lights,
-            batches=self.batches,
-            instances=self._instances if self.batches else None,
+            batches=batches,
+            instances=self._instances if batches else None,
             skybox=skyboxes[0][0].texture if skyboxes else None,
             reverse_z=reverse_z,
             shadows=shadows,

@@ -59,9 +59,12 @@ class TextureLib(ResourceLib[Any]):
             tex.build_mipmaps(0, len(chain) - 1)
             if not isinstance(data, CubeTextureData):
                 # Replace the driver's levels with ours (averaged in linear light), as the WebGPU backend
-                # uploads; moderngl cannot write the levels of a cube map, which keep the driver's.
+                # uploads; moderngl cannot write the levels of a cube map, which keep the driver's ...
                 for level, pixels in enumerate(chain[1:], start=1):
                     tex.write(pixels.tobytes(), level=level)
+            elif data.levels is not None:
+                # ... unless they are given explicitly (a prefiltered environment): then glTexSubImage2D writes them.
+                self._write_cube_levels(tex, chain)
         linear = moderngl.LINEAR_MIPMAP_LINEAR if chain else moderngl.LINEAR
         nearest = moderngl.NEAREST_MIPMAP_NEAREST if chain else moderngl.NEAREST
         tex.filter = (linear, moderngl.LINEAR) if data.filter == "linear" else (nearest, moderngl.NEAREST)
@@ -69,6 +72,27 @@ class TextureLib(ResourceLib[Any]):
             tex.repeat_x = tex.repeat_y = data.wrap == "repeat"
         self.stats["textures_created"] += 1
         return tex
+
+    # glTexSubImage2D(target, level, x, y, width, height, format, type, pixels), loaded from the context itself
+    # (moderngl has no per-level cube-map write; glcontext's loader works for EGL, GLX, WGL and CGL alike).
+    _GL_TEXTURE_CUBE_MAP_POSITIVE_X, _GL_RGBA, _GL_UNSIGNED_BYTE = 0x8515, 0x1908, 0x1401
+
+    def _write_cube_levels(self, tex: Any, chain: list[np.ndarray]) -> None:
+        import ctypes
+
+        try:
+            address = self.ctx.mglo._context.load("glTexSubImage2D")
+        except AttributeError as exc:  # a moderngl without glcontext's loader
+            raise RuntimeError(f"this moderngl cannot load glTexSubImage2D to write cube-map levels: {exc}") from None
+        sub_image = ctypes.CFUNCTYPE(None, *[ctypes.c_uint] + [ctypes.c_int] * 5 + [ctypes.c_uint] * 2
+                                     + [ctypes.c_void_p])(address)
+        tex.use(0)  # binds it to GL_TEXTURE_CUBE_MAP on unit 0; materials bind their own units before drawing
+        for level, pixels in enumerate(chain[1:], start=1):
+            size = pixels.shape[1]
+            for face in range(6):
+                face_pixels = np.ascontiguousarray(pixels[face])
+                sub_image(self._GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, level, 0, 0, size, size, self._GL_RGBA,
+                          self._GL_UNSIGNED_BYTE, face_pixels.ctypes.data)
 
     def _release(self, item: Any) -> None:
         item.release()

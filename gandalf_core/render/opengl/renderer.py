@@ -133,7 +133,7 @@ class OpenGLRenderer(Renderer):
             if batch.transparent and sky is not None:  # the sky goes behind blended surfaces
                 self._draw_sky(sky, data.reverse_z)
                 sky = None
-            self._apply_state(material.data, data.reverse_z)
+            self._apply_state(material.data, data.reverse_z, batch.mirrored)
             material.apply()
             self._draw_batch(material.shader, mesh, batch)
         if sky is not None:
@@ -219,8 +219,8 @@ class OpenGLRenderer(Renderer):
             self._instance_buffer.orphan()
         self._instance_buffer.write(instances)
 
-    def _apply_state(self, data: MaterialData, reverse_z: bool) -> None:
-        state = (data.cull, data.depth_test, data.depth_write, data.blend, reverse_z)
+    def _apply_state(self, data: MaterialData, reverse_z: bool, mirrored: bool = False) -> None:
+        state = (data.cull, data.depth_test, data.depth_write, data.blend, reverse_z, mirrored)
         if state == self._state:
             return
         ctx = self.ctx
@@ -229,6 +229,8 @@ class OpenGLRenderer(Renderer):
         else:
             ctx.enable(moderngl.CULL_FACE)
             ctx.cull_face = data.cull
+        # A mirrored instance's triangles wind the other way round on screen.
+        ctx.front_face = "cw" if mirrored else "ccw"
         # The depth test stays on even when "off" (it then always passes): disabling GL_DEPTH_TEST would also
         # stop depth writes, which WebGPU's compare "always" keeps.
         ctx.enable(moderngl.DEPTH_TEST)

@@ -141,7 +141,7 @@ class WebGPURenderer(Renderer):
             material = self.resolve_material(batch.material, assets)
             mesh = self.resolve_mesh(batch.mesh, assets)
             check_patch_draw(batch.material, material.shader.name, None, batch.mesh, mesh.data, self.backend)
-            draws.append((batch, material, mesh, self._pipeline(material, mesh, data.reverse_z)))
+            draws.append((batch, material, mesh, self._pipeline(material, mesh, data.reverse_z, batch.mirrored)))
         sky = self._sky_draw(data.skybox, assets, data.reverse_z) if data.skybox is not None else None
         encoder = self.device.create_command_encoder()
         frame_group = self._frame_group
@@ -284,11 +284,12 @@ class WebGPURenderer(Renderer):
             self.stats["buffers_created"] += 1
         self.device.queue.write_buffer(self._instance_buffer, 0, instances)
 
-    def _pipeline(self, material: WGPUMaterial, mesh: WGPUMesh, reverse_z: bool) -> tuple[Any, tuple[str, ...]]:
+    def _pipeline(self, material: WGPUMaterial, mesh: WGPUMesh, reverse_z: bool,
+                  mirrored: bool = False) -> tuple[Any, tuple[str, ...]]:
         shader = material.shader
         attributes = mesh_attributes(shader.name, shader.attributes)
         data = material.data
-        key = (*data.pipeline_key(), attributes, reverse_z)
+        key = (*data.pipeline_key(), attributes, reverse_z, mirrored)
         pipeline = self._pipelines.get(key)
         if pipeline is None:
             buffers = []
@@ -297,7 +298,7 @@ class WebGPURenderer(Renderer):
                 buffers.append(self._vertex_layout(layout))
             if any(loc in shader.attributes for loc in INSTANCE_LOCATIONS):
                 buffers.append(self._instance_layout(shader))
-            pipeline = self._pipelines[key] = self._create_pipeline(shader, buffers, data, reverse_z)
+            pipeline = self._pipelines[key] = self._create_pipeline(shader, buffers, data, reverse_z, mirrored)
         return pipeline, attributes
 
     @staticmethod
@@ -317,7 +318,7 @@ class WebGPURenderer(Renderer):
         }
 
     def _create_pipeline(self, shader: WGPUShader, buffers: list[dict[str, Any]], data: MaterialData,
-                         reverse_z: bool) -> Any:
+                         reverse_z: bool, mirrored: bool = False) -> Any:
         layouts = [self.frame_layout] + ([shader.material_layout] if shader.material_layout else [])
         target: dict[str, Any] = {"format": COLOR_FORMAT}
         if data.blend != "opaque":
@@ -327,7 +328,9 @@ class WebGPURenderer(Renderer):
             layout=self.device.create_pipeline_layout(bind_group_layouts=layouts),
             vertex={"module": shader.module, "entry_point": shader.vertex_entry, "buffers": buffers},
             fragment={"module": shader.module, "entry_point": shader.fragment_entry, "targets": [target]},
-            primitive={"topology": "triangle-list", "front_face": "ccw", "cull_mode": data.cull},
+            # A mirrored instance's triangles wind the other way round on screen.
+            primitive={"topology": "triangle-list", "front_face": "cw" if mirrored else "ccw",
+                       "cull_mode": data.cull},
             depth_stencil={"format": DEPTH_FORMAT, "depth_write_enabled": data.depth_write, "depth_compare": compare},
             label=f"{shader.name} pipeline",
         )
