@@ -202,8 +202,9 @@ def add_exploding_mesh(scene: Scene, route: ExplodeRoute, name: str, mesh: MeshD
                                ExplodeComponent(time, speed), MeshComponent(name), MaterialComponent(name))
 
 
-def add_view(scene: Scene) -> None:
-    """Camera, background and lights shared by the demo and the tests: a key and a fill light and ambient."""
+def add_view(scene: Scene, eye=EYE, target=TARGET) -> None:
+    """Camera (at ``eye``, looking at ``target``), background and lights shared by the demo, the tests and the
+    study: a key and a fill light and ambient."""
     scene.create_entity(InfoComponent("background"), ClearColorComponent(BACKGROUND))
     key = (-3.0, 5.0, 4.0)
     scene.create_entity(InfoComponent("key light"),
@@ -214,7 +215,7 @@ def add_view(scene: Scene) -> None:
                         TransformComponent(fill, quaternion=look_at_rotation(fill, (0, 0, 0))),
                         LightComponent("directional", (0.55, 0.65, 1.0), intensity=0.45))
     scene.create_entity(InfoComponent("ambient"), TransformComponent(), LightComponent("ambient", (0.16, 0.16, 0.2)))
-    scene.create_entity(InfoComponent("camera"), TransformComponent(EYE, quaternion=look_at_rotation(EYE, TARGET)),
+    scene.create_entity(InfoComponent("camera"), TransformComponent(eye, quaternion=look_at_rotation(eye, target)),
                         CameraComponent(FOV, 0.1, 100.0))
 
 
