@@ -12,7 +12,7 @@ from types import ModuleType
 import moderngl
 import numpy as np
 
-from .kernels import MAX_RADIUS, check_image, check_op, check_radius, check_shared_memory, groups
+from .kernels import MAX_RADIUS, check_image, check_op, check_radius, check_shared_memory, check_weights, groups
 from .shaders import FORMATS, explain_error, kernel_source
 
 #: Compute shaders and image load/store arrived in OpenGL 4.3.
@@ -74,10 +74,15 @@ class GLImageFilter:
             self.size = (w, h)
         self.textures["src"].write(image.tobytes())  # row 0 (the top) first, as TextureData stores it
 
-    def dispatch(self, op: str, radius: int = 0) -> None:
-        """Run ``op`` on the uploaded image into the result texture (no wait)."""
+    def dispatch(self, op: str, radius: int = 0, weights: np.ndarray | None = None) -> None:
+        """Run ``op`` on the uploaded image into the result texture (no wait).
+
+        The weight table comes from the student's ``gaussian_weight`` on the GPU, or from ``weights`` when given
+        (the tests of ``blur_pass`` use the reference table, so they do not depend on the other exercise).
+        """
         check_op(op)
         r = check_radius(radius)
+        table = None if weights is None else check_weights(weights, r)
         if self.size is None:
             raise RuntimeError("upload an image before dispatching a filter")
         w, h = self.size
@@ -85,7 +90,14 @@ class GLImageFilter:
         if op == "sobel":
             self._run("sobel", tex["src"], tex["dst"], (1, 0), r, groups(w, h, op))
             return
-        self._fill_weights(r)
+        if table is None:
+            self._fill_weights(r)
+        else:
+            self.weights.write(table.tobytes())
+        if op in ("horizontal", "vertical"):
+            direction = (1, 0) if op == "horizontal" else (0, 1)
+            self._run("pass_unorm8", tex["src"], tex["dst"], direction, r, groups(w, h, op))
+            return
         if op == "naive":
             self._run("naive", tex["src"], tex["dst"], (1, 0), r, groups(w, h, op))
             return
@@ -123,12 +135,12 @@ class GLImageFilter:
         return np.frombuffer(self.textures["dst"].read(), dtype=np.uint8).reshape(h, w, 4).copy()
 
     # --- one call --------------------------------------------------------------------------------------------
-    def run(self, image: np.ndarray, op: str, radius: int = 0) -> np.ndarray:
-        """``op`` ("separable", "naive", "tiled" or "sobel") of ``image`` with ``radius``: the RGBA8 result."""
+    def run(self, image: np.ndarray, op: str, radius: int = 0, weights: np.ndarray | None = None) -> np.ndarray:
+        """``op`` (one of :data:`~.kernels.OPERATIONS`) of ``image`` with ``radius``: the RGBA8 result."""
         check_op(op)
         check_radius(radius)
         self.upload(image)
-        self.dispatch(op, radius)
+        self.dispatch(op, radius, weights)
         return self.read()
 
     def weight_table(self, radius: int) -> np.ndarray:

@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 import wgpu
 
-from .kernels import MAX_RADIUS, check_image, check_op, check_radius, check_shared_memory, groups
+from .kernels import MAX_RADIUS, check_image, check_op, check_radius, check_shared_memory, check_weights, groups
 from .shaders import FORMATS, explain_error, kernel_source
 
 _PARAMS_BYTES = 16
@@ -56,7 +56,8 @@ class WGPUImageFilter:
             "sobel": self._pipeline("sobel", impl, "unorm8"),
         }
         usage = wgpu.BufferUsage
-        self.weights = device.create_buffer(size=(2 * MAX_RADIUS + 2) * 4, usage=usage.STORAGE | usage.COPY_SRC)
+        self.weights = device.create_buffer(size=(2 * MAX_RADIUS + 2) * 4,
+                                            usage=usage.STORAGE | usage.COPY_SRC | usage.COPY_DST)
         self.params = {d: device.create_buffer(size=_PARAMS_BYTES, usage=usage.UNIFORM | usage.COPY_DST)
                        for d in ((1, 0), (0, 1))}
         self.size: tuple[int, int] | None = None
@@ -112,6 +113,7 @@ class WGPUImageFilter:
             "horizontal": group("float", (1, 0), "src", "mid"),
             "vertical": group("unorm8", (0, 1), "mid", "dst"),
             "direct": group("unorm8", (1, 0), "src", "dst"),
+            "direct_vertical": group("unorm8", (0, 1), "src", "dst"),
             "weights": self.device.create_bind_group(layout=self.layouts["weights"], entries=[
                 {"binding": 0, "resource": {"buffer": self.params[(1, 0)]}},
                 {"binding": 2, "resource": {"buffer": self.weights}},
@@ -119,23 +121,34 @@ class WGPUImageFilter:
         }
         self.size = (w, h)
 
-    def dispatch(self, op: str, radius: int = 0) -> None:
-        """Record ``op`` on the uploaded image into the result texture and submit it (no wait)."""
+    def dispatch(self, op: str, radius: int = 0, weights: np.ndarray | None = None) -> None:
+        """Record ``op`` on the uploaded image into the result texture and submit it (no wait).
+
+        The weight table comes from the student's ``gaussian_weight`` on the GPU, or from ``weights`` when given
+        (the tests of ``blur_pass`` use the reference table, so they do not depend on the other exercise).
+        """
         check_op(op)
         r = check_radius(radius)
+        table = None if weights is None else check_weights(weights, r)
         if self.size is None:
             raise RuntimeError("upload an image before dispatching a filter")
         w, h = self.size
         queue = self.device.queue
         for direction, buffer in self.params.items():
             queue.write_buffer(buffer, 0, np.array([*direction, r, 0], dtype=np.int32).tobytes())
+        if table is not None:
+            queue.write_buffer(self.weights, 0, table.tobytes())
         encoder = self.device.create_command_encoder()
         compute = encoder.begin_compute_pass()
-        if op != "sobel":
+        if op != "sobel" and table is None:
             compute.set_pipeline(self.pipelines["weights"])
             compute.set_bind_group(0, self.bind_groups["weights"])
             compute.dispatch_workgroups(-(-(2 * r + 1) // 64))
-        if op in ("sobel", "naive"):
+        if op in ("horizontal", "vertical"):
+            compute.set_pipeline(self.pipelines["pass_unorm8"])
+            compute.set_bind_group(0, self.bind_groups["direct" if op == "horizontal" else "direct_vertical"])
+            compute.dispatch_workgroups(*groups(w, h, op))
+        elif op in ("sobel", "naive"):
             compute.set_pipeline(self.pipelines[op])
             compute.set_bind_group(0, self.bind_groups["direct"])
             compute.dispatch_workgroups(*groups(w, h, op))
@@ -161,12 +174,12 @@ class WGPUImageFilter:
         return np.frombuffer(data, dtype=np.uint8).reshape(h, w, 4).copy()
 
     # --- one call --------------------------------------------------------------------------------------------
-    def run(self, image: np.ndarray, op: str, radius: int = 0) -> np.ndarray:
-        """``op`` ("separable", "naive", "tiled" or "sobel") of ``image`` with ``radius``: the RGBA8 result."""
+    def run(self, image: np.ndarray, op: str, radius: int = 0, weights: np.ndarray | None = None) -> np.ndarray:
+        """``op`` (one of :data:`~.kernels.OPERATIONS`) of ``image`` with ``radius``: the RGBA8 result."""
         check_op(op)
         check_radius(radius)
         self.upload(image)
-        self.dispatch(op, radius)
+        self.dispatch(op, radius, weights)
         return self.read()
 
     def weight_table(self, radius: int) -> np.ndarray:

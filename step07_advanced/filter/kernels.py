@@ -10,8 +10,11 @@ from __future__ import annotations
 
 import numpy as np
 
-#: The filters a GPU filter object runs (:meth:`run`'s ``op``).
-OPERATIONS = ("separable", "naive", "tiled", "sobel")
+#: The filters a GPU filter object runs (:meth:`run`'s ``op``): the separable blur (two passes of the student's
+#: ``blur_pass``), the naive 2-D blur, the tiled separable blur, Sobel edges, and single passes of ``blur_pass``.
+OPERATIONS = ("separable", "naive", "tiled", "sobel", "horizontal", "vertical")
+#: The blurs among them.
+BLURS = ("separable", "naive", "tiled", "horizontal", "vertical")
 #: Work-group shape of the per-pixel kernels (blur pass, naive 2-D, Sobel).
 GROUP = (16, 16)
 #: The tiled kernel: pixels per tile along the pass direction and lines per work group.
@@ -57,6 +60,14 @@ def check_op(op: str) -> str:
     if op not in OPERATIONS:
         raise ValueError(f"op {op!r} is not one of {', '.join(OPERATIONS)}")
     return op
+
+
+def check_weights(weights: object, radius: int) -> np.ndarray:
+    """A weight table given by the caller (instead of the GPU's ``gaussian_weight``): float32, 2·radius + 1."""
+    w = np.asarray(weights, dtype=np.float64)
+    if w.shape != (2 * radius + 1,) or not np.all(np.isfinite(w)):
+        raise ValueError(f"weights must be {2 * radius + 1} finite floats for radius {radius}, got shape {w.shape}")
+    return w.astype(np.float32)
 
 
 def check_image(image: object, max_size: int, limit_name: str) -> np.ndarray:

@@ -17,8 +17,8 @@ from __future__ import annotations
 
 import numpy as np
 
-#: Sobel magnitude scale: a full 0 → 1 step edge has |g| = 4, shown as 1.
-SOBEL_SCALE = 0.25
+#: Sobel magnitude scale: a 0 → 0.5 step edge has |g| = 2, shown as 1 (white); stronger edges saturate.
+SOBEL_SCALE = 0.5
 #: Rec. 709 luminance weights.
 LUMA = np.array([0.2126, 0.7152, 0.0722])
 
@@ -124,3 +124,17 @@ def source_image(width: int = 256, height: int = 192, seed: int = 5) -> np.ndarr
     out = np.ones((height, width, 4))
     out[..., :3] = np.clip(rgb, 0.0, 1.0)
     return to_unorm8(out)
+
+
+def apply(image: np.ndarray, op: str, radius: int = 0) -> np.ndarray:
+    """The float64 result in [0, 1] that a GPU filter's ``run(image, op, radius)`` rounds to 8 bits."""
+    x = to_float(image)
+    if op == "sobel":
+        return sobel(x)
+    if op == "naive":
+        return blur_2d(x, radius)
+    if op in ("separable", "tiled"):
+        return blur(x, radius)
+    if op in ("horizontal", "vertical"):
+        return blur_pass(x, radius, 1 if op == "horizontal" else 0)
+    raise ValueError(f"unknown op {op!r}")

@@ -1,4 +1,4 @@
-// Sobel edges: the luminance gradient with the 3x3 Sobel kernels, clamp-to-edge, |g| * 0.25 as grey.
+// Sobel edges: the luminance gradient with the 3x3 Sobel kernels, clamp-to-edge, |g| * 0.5 as grey.
 #include "io.wgsl"
 
 fn luma(p: vec2<i32>) -> f32 {
@@ -22,6 +22,6 @@ fn cs_main(@builtin(global_invocation_id) id: vec3<u32>) {
     let k = luma(p + vec2<i32>(1, 1));
     let gx = (c + 2.0 * f + k) - (a + 2.0 * d + g);
     let gy = (g + 2.0 * h + k) - (a + 2.0 * b + c);
-    let m = clamp(sqrt(gx * gx + gy * gy) * 0.25, 0.0, 1.0);
+    let m = clamp(sqrt(gx * gx + gy * gy) * 0.5, 0.0, 1.0);
     textureStore(dst, p, vec4<f32>(m, m, m, 1.0));
 }

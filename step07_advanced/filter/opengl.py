@@ -1,0 +1,36 @@
+"""Step 07 image filter, OpenGL variant: ``python -m step07_advanced.filter.opengl [--student]``.
+
+The filters are GLSL 4.30 compute shaders run once at start-up in the renderer's own moderngl context
+(``compute_gl.py``); the four panels are drawn by a GLSL 3.30 unlit textured material.
+"""
+
+from __future__ import annotations
+
+from gandalf_core import Application
+from gandalf_core.app.cli import load_impl, run_variant
+
+from . import STEP
+from .compute_gl import GLImageFilter
+from .scene import build_scene, panel_images
+from .shaders import DISPLAY_SHADER, SHADER_DIR
+
+
+def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480) -> Application:
+    impl = load_impl(STEP, student)
+    app = Application("opengl", width, height, title="step07 filter · OpenGL", headless=headless, fixed_dt=1 / 60)
+    app.renderer.shaders.build(DISPLAY_SHADER, SHADER_DIR / "textured.vert", SHADER_DIR / "textured.frag")
+    image_filter = GLImageFilter(app.renderer.ctx, impl)
+    try:
+        images = panel_images(image_filter)
+    finally:
+        image_filter.release()
+    app.add_scene(build_scene(images))
+    return app
+
+
+def main(argv: list[str] | None = None) -> int:
+    return run_variant(create_app, argv, description=__doc__)
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
