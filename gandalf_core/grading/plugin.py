@@ -2,17 +2,35 @@
 
 * ``pytest tests/step01_window`` grades the reference ``solutions`` (CI stays green).
 * ``pytest --student tests/step01_window`` grades the student's ``exercises`` instead, prints a score
-  per exercise, and ``--grade-json result.json`` writes it for course platforms.
+  per exercise, and ``--grade-json result.json`` writes it for course platforms (``--gradescope
+  results.json`` writes Gradescope's format).
 
 A graded test carries ``@pytest.mark.exercise("name", points=1)`` and receives the implementation
 under test through the ``impl`` fixture, which a step's ``conftest.py`` creates with
 :func:`impl_fixture`.
+
+The grade is the same with and without pytest-xdist (``-n 2``): every graded test's result travels in its
+report's ``user_properties`` (xdist ships them from the worker to the controller), the controller adds
+them up, and the list of graded tests comes from collection (each worker writes it to a folder the
+controller gave it), so a test whose worker crashed (``os._exit``, a segfault, a hard timeout) counts as
+failed instead of vanishing from the grade.
+
+``GANDALF_IMPL="step01_window=/path/to/package"`` (several joined by ``os.pathsep``) grades the package at
+that path as the step's ``exercises`` (it is imported under that name, so relative imports and
+``load_impl(step, student=True)`` find it): the batch grader overlays a submission's folders with it and
+the mutation check its mutants.
 """
 
 from __future__ import annotations
 
 import importlib
+import importlib.util
 import json
+import os
+import sys
+import tempfile
+import threading
+import time
 from collections import defaultdict
 from pathlib import Path
 from types import ModuleType
@@ -20,18 +38,78 @@ from typing import Any
 
 import pytest
 
-_results: dict[str, dict[str, Any]] = {}
+IMPL_ENV = "GANDALF_IMPL"
+_PROPERTY = "gandalf_grade"
+_MESSAGE_LIMIT = 4000
+
+# nodeid -> {"step", "exercise", "points"} for every graded test collected in this run.
+_graded: dict[str, dict[str, Any]] = {}
+# nodeid -> {"passed_call": bool, "failed": bool, "message": str, "duration": float}
+_outcomes: dict[str, dict[str, Any]] = {}
+_overlays: dict[str, ModuleType] = {}
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
     group = parser.getgroup("gandalf grading")
     group.addoption("--student", action="store_true", help="grade the exercises/ stubs instead of solutions/")
     group.addoption("--grade-json", metavar="PATH", help="write the per-exercise score as JSON to PATH")
+    group.addoption("--gradescope", metavar="PATH", help="write Gradescope's results.json format to PATH")
+    group.addoption(
+        "--grade-hard-timeout",
+        type=float,
+        default=0.0,
+        metavar="SECONDS",
+        help="in an xdist worker, end the worker when one test runs this long (a hang in native code that "
+        "pytest-timeout's signal cannot interrupt); the test counts as failed and the worker restarts",
+    )
 
 
-def pytest_configure(config: pytest.Config) -> None:
-    config.addinivalue_line("markers", "exercise(name, points=1): a graded test of exercise `name`")
-    _results.clear()
+# ---------------------------------------------------------------------------------------------------
+# The implementation under test
+# ---------------------------------------------------------------------------------------------------
+
+
+def parse_impl_env(value: str | None) -> dict[str, Path]:
+    """``GANDALF_IMPL``'s entries: step package -> folder of the package graded as its ``exercises``."""
+    overlays: dict[str, Path] = {}
+    for entry in (value or "").split(os.pathsep):
+        if not entry.strip():
+            continue
+        step, sep, path = entry.partition("=")
+        if not sep or not step.strip() or not path.strip():
+            raise pytest.UsageError(f"{IMPL_ENV}: expected 'step_package=/path/to/package', got {entry!r}")
+        folder = Path(path.strip()).expanduser().resolve()
+        if not (folder / "__init__.py").is_file():
+            raise pytest.UsageError(f"{IMPL_ENV}: {folder} (for {step.strip()}) has no __init__.py")
+        overlays[step.strip()] = folder
+    return overlays
+
+
+def load_overlay(step_package: str, folder: Path) -> ModuleType:
+    """Import the package in ``folder`` as ``<step_package>.exercises`` (replacing the step's own)."""
+    name = f"{step_package}.exercises"
+    parent = importlib.import_module(step_package)
+    spec = importlib.util.spec_from_file_location(
+        name, folder / "__init__.py", submodule_search_locations=[str(folder)]
+    )
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    for key in [k for k in sys.modules if k == name or k.startswith(name + ".")]:
+        del sys.modules[key]
+    sys.modules[name] = module
+    parent.exercises = module  # type: ignore[attr-defined]
+    spec.loader.exec_module(module)
+    return module
+
+
+def _overlay(step_package: str) -> ModuleType | None:
+    if step_package in _overlays:
+        return _overlays[step_package]
+    folder = parse_impl_env(os.environ.get(IMPL_ENV)).get(step_package)
+    if folder is None:
+        return None
+    _overlays[step_package] = load_overlay(step_package, folder)
+    return _overlays[step_package]
 
 
 # --8<-- [start:impl_fixture]
@@ -40,39 +118,193 @@ def impl_fixture(step_package: str) -> Any:
 
     @pytest.fixture
     def impl(request: pytest.FixtureRequest) -> ModuleType:
+        overlay = _overlay(step_package)  # GANDALF_IMPL: a submission's or a mutant's package
+        if overlay is not None:
+            return overlay
         which = "exercises" if request.config.getoption("--student") else "solutions"
         return importlib.import_module(f"{step_package}.{which}")
 
     return impl
+
+
 # --8<-- [end:impl_fixture]
+
+
+# ---------------------------------------------------------------------------------------------------
+# Collecting results (the same with and without xdist)
+# ---------------------------------------------------------------------------------------------------
+
+
+def _is_worker(config: pytest.Config) -> bool:
+    return hasattr(config, "workerinput")
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    config.addinivalue_line("markers", "exercise(name, points=1): a graded test of exercise `name`")
+    _graded.clear()
+    _outcomes.clear()
+    config._gandalf_collect_dir = None  # type: ignore[attr-defined]
+    if not _is_worker(config) and config.pluginmanager.hasplugin("xdist"):
+        config._gandalf_collect_dir = tempfile.mkdtemp(prefix="gandalf-grade-")  # type: ignore[attr-defined]
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_configure_node(node: Any) -> None:
+    """xdist (controller): tell each worker where to write its list of graded tests."""
+    folder = getattr(node.config, "_gandalf_collect_dir", None)
+    if folder:
+        node.workerinput["gandalf_collect_dir"] = folder
+
+
+def _exercise_of(item: pytest.Item) -> dict[str, Any] | None:
+    marker = item.get_closest_marker("exercise")
+    if marker is None:
+        return None
+    name = marker.args[0] if marker.args else marker.kwargs["name"]
+    return {
+        "step": Path(str(item.path)).parent.name,
+        "exercise": str(name),
+        "points": float(marker.kwargs.get("points", 1)),
+    }
+
+
+def pytest_collection_finish(session: pytest.Session) -> None:
+    graded = {item.nodeid: info for item in session.items if (info := _exercise_of(item)) is not None}
+    config = session.config
+    if _is_worker(config):
+        folder = config.workerinput.get("gandalf_collect_dir")  # type: ignore[attr-defined]
+        if folder:
+            worker = config.workerinput.get("workerid", "gw")  # type: ignore[attr-defined]
+            fd, tmp = tempfile.mkstemp(dir=folder, suffix=".tmp")
+            with os.fdopen(fd, "w") as f:
+                json.dump(graded, f)
+            os.replace(tmp, Path(folder) / f"{worker}-{os.getpid()}.json")
+    else:
+        _graded.update(graded)
 
 
 @pytest.hookimpl(hookwrapper=True)
 def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo[Any]) -> Any:
     outcome = yield
     report = outcome.get_result()
-    marker = item.get_closest_marker("exercise")
-    if marker is None:
+    info = _exercise_of(item)
+    if info is not None:
+        report.user_properties.append((_PROPERTY, info))
+
+
+def _message(report: pytest.TestReport) -> str:
+    longrepr = report.longrepr
+    if longrepr is None:
+        return ""
+    crash = getattr(longrepr, "reprcrash", None)
+    if crash is not None and getattr(crash, "message", None):
+        text = str(crash.message)
+    elif isinstance(longrepr, tuple) and len(longrepr) == 3:  # a skip: (path, line, reason)
+        text = str(longrepr[2])
+    else:
+        text = str(longrepr).strip().splitlines()[-1] if str(longrepr).strip() else ""
+    return text if len(text) <= _MESSAGE_LIMIT else text[: _MESSAGE_LIMIT - 1] + "…"
+
+
+def pytest_runtest_logreport(report: pytest.TestReport) -> None:
+    """Runs where the reports end up: in the one process, or in xdist's controller."""
+    info = next((value for key, value in report.user_properties if key == _PROPERTY), None)
+    if info is None and report.nodeid not in _outcomes and report.nodeid not in _graded:
+        return  # not a graded test (a crash report of a graded test has no properties but a known id)
+    if info is not None:
+        _graded.setdefault(report.nodeid, dict(info))
+    entry = _outcomes.setdefault(report.nodeid, {"passed_call": False, "failed": False, "message": "", "duration": 0.0})
+    entry["duration"] += float(getattr(report, "duration", 0.0) or 0.0)
+    if report.when == "call" and report.passed:
+        entry["passed_call"] = True
+    elif report.failed or report.skipped:
+        entry["failed"] = True
+        if not entry["message"]:
+            prefix = {"setup": "error in setup: ", "teardown": "error in teardown: "}.get(report.when, "")
+            if report.skipped:
+                prefix = "skipped: "
+            elif report.when not in ("setup", "call", "teardown"):
+                prefix = "the test process crashed (os._exit, a segfault or a hard timeout): "
+            entry["message"] = prefix + _message(report)
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_handlecrashitem(crashitem: str, report: Any, sched: Any) -> None:
+    """xdist (controller): a worker died in ``crashitem``; it is failed below (pytest_runtest_logreport)."""
+    _outcomes.setdefault(crashitem, {"passed_call": False, "failed": True, "message": "", "duration": 0.0})
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_protocol(item: pytest.Item, nextitem: pytest.Item | None) -> Any:
+    """In an xdist worker, ``--grade-hard-timeout`` ends the worker when one test hangs in native code."""
+    limit = float(item.config.getoption("--grade-hard-timeout") or 0.0)
+    timer = None
+    if limit > 0 and _is_worker(item.config):
+
+        def _die() -> None:
+            sys.stderr.write(f"\ngandalf grading: {item.nodeid} ran over {limit:g} s; ending this worker\n")
+            sys.stderr.flush()
+            os._exit(70)
+
+        timer = threading.Timer(limit, _die)
+        timer.daemon = True
+        timer.start()
+    try:
+        yield
+    finally:
+        if timer is not None:
+            timer.cancel()
+
+
+def _merge_worker_lists(config: pytest.Config) -> None:
+    folder = getattr(config, "_gandalf_collect_dir", None)
+    if not folder or not Path(folder).is_dir():
         return
-    name = marker.args[0] if marker.args else marker.kwargs["name"]
-    points = float(marker.kwargs.get("points", 1))
-    step = Path(str(item.path)).parent.name
-    key = item.nodeid
-    entry = _results.setdefault(key, {"step": step, "exercise": name, "points": points, "passed": True})
-    if report.failed or (report.when == "call" and report.skipped):
-        entry["passed"] = False
-    if report.when == "setup" and report.skipped:
-        entry["passed"] = False
+    for path in sorted(Path(folder).glob("*.json")):
+        try:
+            for nodeid, info in json.loads(path.read_text()).items():
+                _graded.setdefault(nodeid, info)
+        except (OSError, ValueError):
+            continue
+
+
+# ---------------------------------------------------------------------------------------------------
+# The grade
+# ---------------------------------------------------------------------------------------------------
+
+
+def _test_results() -> list[dict[str, Any]]:
+    results = []
+    for nodeid in sorted(_graded):
+        info = _graded[nodeid]
+        outcome = _outcomes.get(nodeid)
+        if outcome is None:
+            passed, message = False, "not run (the run stopped or its worker crashed before this test)"
+        else:
+            passed = outcome["passed_call"] and not outcome["failed"]
+            message = "" if passed else (outcome["message"] or "failed")
+        results.append(
+            {
+                "test": nodeid,
+                "step": info["step"],
+                "exercise": info["exercise"],
+                "points": float(info["points"]),
+                "passed": passed,
+                "message": message,
+            }
+        )
+    return results
 
 
 def summary() -> dict[str, Any]:
-    """Scores per step and exercise from the graded tests that ran."""
+    """Scores per step and exercise from the graded tests of the run."""
+    tests = _test_results()
     # An exercise is worth its `points` (default 1) however many tests check it; the share of its
     # tests that pass earns that share of the points.
     by_exercise: dict[tuple[str, str], dict[str, float]] = defaultdict(
         lambda: {"possible": 0.0, "tests": 0, "passed": 0}
     )
-    for entry in _results.values():
+    for entry in tests:
         agg = by_exercise[(entry["step"], entry["exercise"])]
         agg["possible"] = max(agg["possible"], entry["points"])
         agg["tests"] += 1
@@ -87,18 +319,67 @@ def summary() -> dict[str, Any]:
         "earned": earned,
         "possible": possible,
         "score": (earned / possible) if possible else 0.0,
-        "graded_tests": len(_results),
-        "graded_tests_passed": sum(1 for e in _results.values() if e["passed"]),
+        "graded_tests": len(tests),
+        "graded_tests_passed": sum(1 for e in tests if e["passed"]),
         "exercises": exercises,
-        "tests": [{"test": k, **v} for k, v in sorted(_results.items())],
+        "tests": tests,
     }
 
 
+def gradescope_results(result: dict[str, Any], execution_time: float | None = None) -> dict[str, Any]:
+    """Gradescope's ``results.json``: one entry per graded test, each exercise's points spread evenly
+    over its tests, the failure message as the test's output."""
+    exercises = {(x["step"], x["exercise"]): x for x in result["exercises"]}
+    durations = {nodeid: o.get("duration", 0.0) for nodeid, o in _outcomes.items()}
+    tests = []
+    for entry in result["tests"]:
+        x = exercises[(entry["step"], entry["exercise"])]
+        share = x["possible"] / x["tests"]
+        short = entry["test"].split("::", 1)[-1]
+        tests.append(
+            {
+                "name": f"{entry['step']} · {entry['exercise']} · {short}",
+                "score": share if entry["passed"] else 0.0,
+                "max_score": share,
+                "status": "passed" if entry["passed"] else "failed",
+                "output": entry["message"] if not entry["passed"] else "",
+                "tags": [entry["step"], entry["exercise"]],
+                "visibility": "visible",
+                "extra_data": {"nodeid": entry["test"], "duration_s": round(durations.get(entry["test"], 0.0), 4)},
+            }
+        )
+    lines = [
+        f"{x['step']} {x['exercise']}: {x['earned']:.2f} / {x['possible']:.2f} ({int(x['passed'])}/{int(x['tests'])})"
+        for x in result["exercises"]
+    ]
+    out: dict[str, Any] = {
+        "score": result["earned"],
+        "output": "\n".join(lines + [f"TOTAL {result['earned']:.2f} / {result['possible']:.2f}"]),
+        "visibility": "visible",
+        "stdout_visibility": "hidden",
+        "tests": tests,
+    }
+    if execution_time is not None:
+        out["execution_time"] = round(float(execution_time), 3)
+    return out
+
+
+def pytest_sessionstart(session: pytest.Session) -> None:
+    session.config._gandalf_start = time.perf_counter()  # type: ignore[attr-defined]
+
+
 def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pytest.Config) -> None:
-    if not _results:
+    if _is_worker(config):
+        return
+    _merge_worker_lists(config)
+    if not _graded:
         return
     result = summary()
-    which = "exercises (student)" if config.getoption("--student") else "solutions (reference)"
+    which = (
+        "exercises (student)"
+        if config.getoption("--student") or os.environ.get(IMPL_ENV)
+        else ("solutions (reference)")
+    )
     tr = terminalreporter
     tr.section(f"gandalf grade — {which}")
     for x in result["exercises"]:
@@ -111,3 +392,18 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
     if path:
         Path(path).write_text(json.dumps({"mode": which, **result}, indent=2))
         tr.write_line(f"grade written to {path}")
+    gradescope = config.getoption("--gradescope")
+    if gradescope:
+        start = getattr(config, "_gandalf_start", None)
+        elapsed = (time.perf_counter() - start) if start is not None else None
+        Path(gradescope).parent.mkdir(parents=True, exist_ok=True)
+        Path(gradescope).write_text(json.dumps(gradescope_results(result, elapsed), indent=2))
+        tr.write_line(f"Gradescope results written to {gradescope}")
+
+
+def pytest_unconfigure(config: pytest.Config) -> None:
+    folder = getattr(config, "_gandalf_collect_dir", None)
+    if folder and Path(folder).is_dir():
+        for path in Path(folder).iterdir():
+            path.unlink(missing_ok=True)
+        Path(folder).rmdir()
