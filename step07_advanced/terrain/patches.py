@@ -35,7 +35,7 @@ class TerrainParams:
     size: float = 20.0
     patches: int = 16
     height_scale: float = 3.2
-    lod_scale: float = 16.0
+    lod_scale: float = 40.0
     min_level: float = 1.0
     max_level: float = 16.0
 
@@ -46,7 +46,12 @@ class TerrainParams:
             value = getattr(self, name)
             if not (np.isfinite(value) and value > 0):
                 raise ValueError(f"TerrainParams.{name} must be a positive finite number, got {value!r}")
-        check_levels(self.min_level, self.max_level, GUARANTEED_MAX_LEVEL)
+        for name in ("min_level", "max_level"):
+            value = getattr(self, name)
+            if not (isinstance(value, (int, float)) and np.isfinite(value) and value >= 1.0):
+                raise ValueError(f"TerrainParams.{name} must be a finite level >= 1, got {value!r}")
+        if self.min_level > self.max_level:
+            raise ValueError(f"TerrainParams.min_level = {self.min_level} is larger than max_level = {self.max_level}")
 
     @property
     def lod(self) -> tuple[float, float, float]:
@@ -59,12 +64,12 @@ class TerrainParams:
         return int(np.ceil(self.max_level))
 
 
-def check_levels(min_level: float, max_level: float, device_max: int) -> None:
+def check_levels(min_level: float, max_level: float, device_max: int, limit: str = "GL_MAX_TESS_GEN_LEVEL") -> None:
     """Raise ValueError unless 1 <= min_level <= max_level <= device_max (the tessellator's range)."""
     for name, value in (("min_level", min_level), ("max_level", max_level)):
         if not (isinstance(value, (int, float)) and np.isfinite(value) and 1.0 <= value <= device_max):
             raise ValueError(f"tessellation {name} = {value!r} is outside the device's range [1, {device_max}] "
-                             "(GL_MAX_TESS_GEN_LEVEL)")
+                             f"({limit})")
     if min_level > max_level:
         raise ValueError(f"tessellation min_level = {min_level} is larger than max_level = {max_level}")
 

@@ -17,7 +17,7 @@ import wgpu
 from gandalf_core.render.shader_files import load_shader
 from gandalf_core.resources import TextureData
 
-from .patches import TerrainParams
+from .patches import GUARANTEED_MAX_LEVEL, TerrainParams, check_levels
 from .shaders import WGSL_TESSELLATE, impl_shader_dir
 
 WORKGROUP_SIZE = 64
@@ -28,6 +28,8 @@ class WGPUTessellator:
     """Builds the compute pipeline; :meth:`run` tessellates for one camera position."""
 
     def __init__(self, renderer: Any, impl: ModuleType, params: TerrainParams, heightmap: TextureData) -> None:
+        # The same range as OpenGL's guaranteed one: the vertex budget grows with its square.
+        check_levels(params.min_level, params.max_level, GUARANTEED_MAX_LEVEL, "the compute tessellator's budget")
         device = renderer.device
         self.device, self.params = device, params
         self.patch_count = params.patches * params.patches
