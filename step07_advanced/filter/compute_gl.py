@@ -7,7 +7,10 @@ once) or ``rgba8`` (the result). ``ctx.memory_barrier()`` makes one dispatch's w
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Callable
 from types import ModuleType
+from typing import Any, TypeVar
 
 import moderngl
 import numpy as np
@@ -19,6 +22,21 @@ from .shaders import FORMATS, explain_error, kernel_source
 REQUIRED_VERSION = 430
 #: GL 4.3's guaranteed GL_MAX_COMPUTE_SHARED_MEMORY_SIZE (moderngl does not report the driver's value).
 GL_MIN_SHARED_MEMORY = 32768
+
+_F = TypeVar("_F", bound=Callable[..., Any])
+
+
+def _current(method: _F) -> _F:
+    """Make the context current before ``method``: another library in the process (wgpu probing EGL, a second
+    app) may have made its own context current since, and GL calls go to the current one. It stays current
+    (the renderer draws with it next), so this is ``__enter__`` without the ``__exit__`` that would release it."""
+
+    @functools.wraps(method)
+    def wrapper(self: GLImageFilter, *args: Any, **kwargs: Any) -> Any:
+        self.ctx.__enter__()
+        return method(self, *args, **kwargs)
+
+    return wrapper  # type: ignore[return-value]
 
 
 class GLImageFilter:
@@ -35,6 +53,12 @@ class GLImageFilter:
         self.max_size_name = "GL_MAX_TEXTURE_SIZE"
         check_shared_memory(int(ctx.info.get("GL_MAX_COMPUTE_SHARED_MEMORY_SIZE", GL_MIN_SHARED_MEMORY)),
                             "GL_MAX_COMPUTE_SHARED_MEMORY_SIZE")
+        ctx.__enter__()  # current, and left current (see _current)
+        self._build(impl)
+        self.size: tuple[int, int] | None = None
+        self.textures: dict[str, moderngl.Texture] = {}
+
+    def _build(self, impl: ModuleType) -> None:
         fmt = FORMATS["opengl"]
         self.programs = {
             "weights": self._compile("weights", impl),
@@ -45,9 +69,7 @@ class GLImageFilter:
             "naive": self._compile("naive", impl, fmt["unorm8"]),
             "sobel": self._compile("sobel", impl, fmt["unorm8"]),
         }
-        self.weights = ctx.buffer(reserve=(2 * MAX_RADIUS + 1) * 4)
-        self.size: tuple[int, int] | None = None
-        self.textures: dict[str, moderngl.Texture] = {}
+        self.weights = self.ctx.buffer(reserve=(2 * MAX_RADIUS + 1) * 4)
 
     def _compile(self, kernel: str, impl: ModuleType, out_format: str | None = None) -> moderngl.ComputeShader:
         src = kernel_source("opengl", kernel, impl, out_format)
@@ -57,6 +79,7 @@ class GLImageFilter:
             raise RuntimeError(explain_error(src, str(exc))) from None
 
     # --- steps (the study times dispatch + finish) ------------------------------------------------------
+    @_current
     def upload(self, image: np.ndarray) -> None:
         """Check ``image`` (RGBA8, (H, W, 4) uint8, within GL_MAX_TEXTURE_SIZE) and make it the source."""
         image = check_image(image, self.max_size, self.max_size_name)
@@ -74,6 +97,7 @@ class GLImageFilter:
             self.size = (w, h)
         self.textures["src"].write(image.tobytes())  # row 0 (the top) first, as TextureData stores it
 
+    @_current
     def dispatch(self, op: str, radius: int = 0, weights: np.ndarray | None = None) -> None:
         """Run ``op`` on the uploaded image into the result texture (no wait).
 
@@ -125,10 +149,12 @@ class GLImageFilter:
         # The next pass samples what this one stored: make the image writes visible first.
         self.ctx.memory_barrier()
 
+    @_current
     def finish(self) -> None:
         """Wait until the GPU has done everything dispatched so far."""
         self.ctx.finish()
 
+    @_current
     def read(self) -> np.ndarray:
         """The result image, (H, W, 4) uint8, top row first."""
         w, h = self.size
@@ -143,12 +169,14 @@ class GLImageFilter:
         self.dispatch(op, radius, weights)
         return self.read()
 
+    @_current
     def weight_table(self, radius: int) -> np.ndarray:
         """The weight table the student's ``gaussian_weight`` computes on the GPU, float32 (2·radius + 1,)."""
         r = check_radius(radius)
         self._fill_weights(r)
         return np.frombuffer(self.weights.read(size=(2 * r + 1) * 4), dtype=np.float32).copy()
 
+    @_current
     def release(self) -> None:
         for obj in (*self.textures.values(), *self.programs.values(), self.weights):
             obj.release()
