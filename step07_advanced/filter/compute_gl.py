@@ -136,6 +136,7 @@ class GLImageFilter:
         program.run(group_x=-(-(2 * radius + 1) // 64))
         self.ctx.memory_barrier()
 
+    # --8<-- [start:dispatch]
     def _run(self, name: str, src: moderngl.Texture, dst: moderngl.Texture, direction: tuple[int, int],
              radius: int, group_count: tuple[int, int]) -> None:
         program = self.programs[name]
@@ -148,6 +149,7 @@ class GLImageFilter:
         program.run(group_x=group_count[0], group_y=group_count[1])
         # The next pass samples what this one stored: make the image writes visible first.
         self.ctx.memory_barrier()
+    # --8<-- [end:dispatch]
 
     @_current
     def finish(self) -> None:

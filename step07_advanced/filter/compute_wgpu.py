@@ -153,6 +153,7 @@ class WGPUImageFilter:
             compute.set_bind_group(0, self.bind_groups["direct"])
             compute.dispatch_workgroups(*groups(w, h, op))
         else:
+            # --8<-- [start:dispatch]
             kind = "pass" if op == "separable" else "tiled"
             for name, direction, fmt in (("horizontal", (1, 0), "float"), ("vertical", (0, 1), "unorm8")):
                 compute.set_pipeline(self.pipelines[f"{kind}_{fmt}"])
@@ -160,6 +161,7 @@ class WGPUImageFilter:
                 compute.dispatch_workgroups(*groups(w, h, op, direction))
         compute.end()
         queue.submit([encoder.finish()])
+        # --8<-- [end:dispatch]
 
     def finish(self) -> None:
         """Wait until the GPU has done everything submitted so far (a 4-byte read-back: F4 in STACK.md)."""

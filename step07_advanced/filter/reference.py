@@ -28,6 +28,17 @@ def sigma_for(radius: int) -> float:
     return radius / 2.0
 
 
+def to_float(image: np.ndarray) -> np.ndarray:
+    """uint8 RGBA → float64 in [0, 1]."""
+    return np.asarray(image, dtype=np.float64) / 255.0
+
+
+def to_unorm8(values: np.ndarray) -> np.ndarray:
+    """float [0, 1] → uint8 with rounding to nearest (what an ``rgba8`` store does)."""
+    return np.rint(np.clip(values, 0.0, 1.0) * 255.0).astype(np.uint8)
+
+
+# --8<-- [start:gaussian]
 def gaussian_weights(radius: int) -> np.ndarray:
     """The normalised weight table, float64, shape (2·radius + 1,): taps ``-radius..radius``."""
     if radius < 0:
@@ -37,16 +48,6 @@ def gaussian_weights(radius: int) -> np.ndarray:
     i = np.arange(-radius, radius + 1, dtype=np.float64)
     w = np.exp(-(i * i) / (2.0 * sigma_for(radius) ** 2))
     return w / w.sum()
-
-
-def to_float(image: np.ndarray) -> np.ndarray:
-    """uint8 RGBA → float64 in [0, 1]."""
-    return np.asarray(image, dtype=np.float64) / 255.0
-
-
-def to_unorm8(values: np.ndarray) -> np.ndarray:
-    """float [0, 1] → uint8 with rounding to nearest (what an ``rgba8`` store does)."""
-    return np.rint(np.clip(values, 0.0, 1.0) * 255.0).astype(np.uint8)
 
 
 def blur_pass(image: np.ndarray, radius: int, axis: int) -> np.ndarray:
@@ -61,6 +62,7 @@ def blur_pass(image: np.ndarray, radius: int, axis: int) -> np.ndarray:
     for k, weight in enumerate(w):
         out += weight * np.take(padded, np.arange(k, k + n), axis=axis)
     return out
+# --8<-- [end:gaussian]
 
 
 def blur(image: np.ndarray, radius: int) -> np.ndarray:
