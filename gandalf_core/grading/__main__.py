@@ -1,28 +1,133 @@
-"""``python -m gandalf_core.grading [TESTS ...] [--json FILE]``: grade your exercises.
+"""``python -m gandalf_core.grading [TESTS ...] [--json FILE] [--gradescope FILE]``: grade your exercises.
 
 A thin front end over ``pytest --student`` that prints one line per failed test and the score table
 (``pytest --student`` itself shows full tracebacks). Other arguments go to pytest.
+
+The student's code runs in pytest-xdist worker processes (``--jobs``, default 2), never in this one: a
+test that calls ``os._exit`` or crashes the interpreter fails on its own, its worker is replaced and the
+other tests are graded. Each test has a time limit (``--timeout``, default 60 s): pytest-timeout's
+signal method fails a runaway Python loop in place; a hang inside native code (a driver call) that a
+signal cannot interrupt ends the worker after ``--hard-timeout`` seconds, and that test fails too.
 """
 
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 
 import pytest
+
+PLUGIN = "gandalf_core.grading.plugin"
+
+
+def _has_xdist() -> bool:
+    try:
+        import xdist  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+def _has_timeout() -> bool:
+    try:
+        import pytest_timeout  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+def pytest_options(
+    *,
+    jobs: int = 2,
+    timeout: float = 60.0,
+    hard_timeout: float | None = None,
+    json_path: str | None = None,
+    gradescope: str | None = None,
+    max_worker_restart: int = 20,
+    quiet: bool = True,
+) -> list[str]:
+    """The pytest arguments the front end (and the batch grader) uses."""
+    options = ["-p", PLUGIN, "--student", "-p", "no:cacheprovider", "--tb=line", "-rN"]
+    if quiet:
+        options.append("-q")
+    if jobs > 0 and _has_xdist():
+        options += ["-n", str(jobs), "--max-worker-restart", str(max_worker_restart)]
+        if hard_timeout is None:
+            hard_timeout = 2 * timeout + 30 if timeout > 0 else 0
+        if hard_timeout > 0:
+            options += ["--grade-hard-timeout", f"{hard_timeout:g}"]
+    if timeout > 0 and _has_timeout():
+        options += [f"--timeout={timeout:g}", "--timeout-method=signal"]
+    if json_path:
+        options += ["--grade-json", json_path]
+    if gradescope:
+        options += ["--gradescope", gradescope]
+    return options
 
 
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser(prog="python -m gandalf_core.grading", description=__doc__.splitlines()[0])
     parser.add_argument("tests", nargs="*", default=["tests"], help="test folders or files (default: tests)")
     parser.add_argument("--json", metavar="FILE", help="also write the score as JSON to FILE")
+    parser.add_argument("--gradescope", metavar="FILE", help="also write Gradescope's results.json to FILE")
+    parser.add_argument(
+        "--jobs", "-j", type=int, default=2, help="worker processes (pytest-xdist); 0 runs in this process"
+    )
+    parser.add_argument("--timeout", type=float, default=60.0, help="seconds per test (0: none); default 60")
+    parser.add_argument(
+        "--hard-timeout", type=float, default=None, help="seconds after which a worker stuck in one test is ended"
+    )
+    parser.add_argument(
+        "--impl",
+        action="append",
+        default=[],
+        metavar="STEP=PATH",
+        help="grade the package at PATH as STEP's exercises (repeatable; sets GANDALF_IMPL)",
+    )
+    parser.add_argument(
+        "--fail-under",
+        type=float,
+        default=None,
+        metavar="PERCENT",
+        help="exit with 1 when the score is below PERCENT (GitHub Classroom counts a test by its exit status)",
+    )
     args, extra = parser.parse_known_args(argv)
-    options = ["--student", "-q", "-p", "no:cacheprovider", "--tb=line", "-rN"]
-    if args.json:
-        options += ["--grade-json", args.json]
+    if args.impl:
+        os.environ["GANDALF_IMPL"] = os.pathsep.join(
+            [*args.impl, *([os.environ["GANDALF_IMPL"]] if os.environ.get("GANDALF_IMPL") else [])]
+        )
+    json_path = args.json
+    cleanup = None
+    if args.fail_under is not None and not json_path:
+        import tempfile
+
+        fd, json_path = tempfile.mkstemp(suffix=".json", prefix="gandalf-grade-")
+        os.close(fd)
+        cleanup = json_path
+    options = pytest_options(
+        jobs=args.jobs,
+        timeout=args.timeout,
+        hard_timeout=args.hard_timeout,
+        json_path=json_path,
+        gradescope=args.gradescope,
+    )
     code = pytest.main(options + extra + args.tests)
     # 1 = some tests failed: that's a grade, not an error of the grader.
-    return 0 if code in (pytest.ExitCode.OK, pytest.ExitCode.TESTS_FAILED) else int(code)
+    status = 0 if code in (pytest.ExitCode.OK, pytest.ExitCode.TESTS_FAILED) else int(code)
+    if status == 0 and args.fail_under is not None:
+        import json
+
+        try:
+            score = 100.0 * json.loads(open(json_path).read())["score"]
+        except (OSError, ValueError, KeyError):
+            score = 0.0
+        if score + 1e-9 < args.fail_under:
+            print(f"score {score:.1f}% is below {args.fail_under:g}%")
+            status = 1
+    if cleanup:
+        os.unlink(cleanup)
+    return status
 
 
 if __name__ == "__main__":

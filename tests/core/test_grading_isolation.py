@@ -1,0 +1,178 @@
+"""The grader survives runaway and crashing student code, and writes Gradescope's format.
+
+Each test writes a tiny fake step (``fakestep``: an ``exercises`` package with an infinite loop, an
+``os._exit(3)`` and a hang that no signal reaches, and ``solutions``) plus its graded tests into
+``tmp_path`` and runs ``python -m gandalf_core.grading`` on it in a subprocess: the runaway tests fail
+with their own message and every other test is still graded.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+
+EXERCISES = '''
+import os
+import signal
+import time
+
+
+def add(a, b):
+    return a + b
+
+
+def spin():
+    while True:  # a runaway loop: pytest-timeout's signal fails the test in place
+        pass
+
+
+def die():
+    os._exit(3)  # takes its process down: only the worker dies
+
+
+def hang():
+    # Stands for a hang inside native code (a driver call): the alarm signal never reaches Python.
+    signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGALRM})
+    time.sleep(120)
+'''
+
+SOLUTIONS = """
+def add(a, b):
+    return a + b
+
+
+def spin():
+    return 1
+
+
+def die():
+    return 1
+
+
+def hang():
+    return 1
+"""
+
+TESTS = '''
+import pytest
+
+
+@pytest.mark.exercise("add")
+def test_add(impl):
+    assert impl.add(1, 2) == 3
+
+
+@pytest.mark.exercise("add")
+def test_add_negative(impl):
+    assert impl.add(-1, -2) == -3
+
+
+@pytest.mark.exercise("spin")
+def test_spin(impl):
+    assert impl.spin() == 1
+
+
+@pytest.mark.exercise("die")
+def test_die(impl):
+    assert impl.die() == 1
+
+
+@pytest.mark.exercise("hang")
+def test_hang(impl):
+    assert impl.hang() == 1
+
+
+@pytest.mark.exercise("after", points=2)
+def test_after_the_crashes(impl):
+    assert impl.add(2, 2) == 4, "add(2, 2): expected 4"
+'''
+
+
+def _fake_step(tmp_path: Path) -> Path:
+    for name, text in {
+        "fakestep/__init__.py": "",
+        "fakestep/exercises/__init__.py": EXERCISES,
+        "fakestep/solutions/__init__.py": SOLUTIONS,
+        "grading_tests/fakestep/conftest.py": (
+            "from gandalf_core.grading.plugin import impl_fixture\n\nimpl = impl_fixture('fakestep')\n"
+        ),
+        "grading_tests/fakestep/test_fake.py": TESTS,
+    }.items():
+        path = tmp_path / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(textwrap.dedent(text))
+    return tmp_path / "grading_tests" / "fakestep"
+
+
+def _grade(tmp_path: Path, *args: str, timeout: float = 120) -> tuple[subprocess.CompletedProcess, dict]:
+    tests = _fake_step(tmp_path)
+    out = tmp_path / "grade.json"
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(tmp_path), str(ROOT)])}
+    env.pop("GANDALF_IMPL", None)
+    proc = subprocess.run(
+        [sys.executable, "-m", "gandalf_core.grading", str(tests), "--json", str(out), *args],
+        cwd=tmp_path,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=timeout,
+    )
+    assert out.exists(), f"no grade written (exit {proc.returncode}):\n{proc.stdout[-3000:]}\n{proc.stderr[-3000:]}"
+    return proc, json.loads(out.read_text())
+
+
+def _by_test(result: dict) -> dict[str, dict]:
+    return {t["test"].split("::")[-1]: t for t in result["tests"]}
+
+
+def test_timeout_and_crash_fail_their_own_tests_in_workers(tmp_path):
+    gradescope = tmp_path / "results" / "results.json"
+    proc, result = _grade(
+        tmp_path, "--jobs", "1", "--timeout", "2", "--hard-timeout", "5", "--gradescope", str(gradescope)
+    )
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    tests = _by_test(result)
+    assert set(tests) == {"test_add", "test_add_negative", "test_spin", "test_die", "test_hang", "test_after_the_crashes"}
+    assert tests["test_add"]["passed"] and tests["test_add_negative"]["passed"]
+    assert tests["test_after_the_crashes"]["passed"], tests["test_after_the_crashes"]
+    assert not tests["test_spin"]["passed"] and "Timeout" in tests["test_spin"]["message"]
+    assert not tests["test_die"]["passed"] and "crashed" in tests["test_die"]["message"]
+    assert not tests["test_hang"]["passed"] and "crashed" in tests["test_hang"]["message"]
+    assert result["earned"] == pytest.approx(3.0) and result["possible"] == pytest.approx(6.0)
+
+    # Gradescope: a test per graded test, each exercise's points spread over its tests.
+    gs = json.loads(gradescope.read_text())
+    assert gs["score"] == pytest.approx(3.0)
+    assert {"score", "tests", "execution_time", "stdout_visibility", "visibility"} <= set(gs)
+    assert sum(t["max_score"] for t in gs["tests"]) == pytest.approx(6.0)
+    assert sum(t["score"] for t in gs["tests"]) == pytest.approx(gs["score"])
+    for t in gs["tests"]:
+        assert {"name", "score", "max_score", "output", "visibility", "status"} <= set(t)
+        assert (t["status"] == "failed") == bool(t["output"]), t
+    add = [t for t in gs["tests"] if "add" in t["tags"]]
+    assert [t["max_score"] for t in add] == [pytest.approx(0.5)] * 2
+
+
+def test_timeout_in_process_without_workers(tmp_path):
+    # --jobs 0: no worker to lose, so only the signal timeout (the os._exit test is left out here).
+    proc, result = _grade(tmp_path, "--jobs", "0", "--timeout", "2", "-k", "not die and not hang")
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    tests = _by_test(result)
+    assert not tests["test_spin"]["passed"] and "Timeout" in tests["test_spin"]["message"]
+    assert tests["test_after_the_crashes"]["passed"] and tests["test_add"]["passed"]
+    assert result["earned"] == pytest.approx(3.0) and result["possible"] == pytest.approx(4.0)
+
+
+def test_fail_under_turns_the_score_into_an_exit_status(tmp_path):
+    proc, _ = _grade(tmp_path, "--jobs", "0", "-k", "add or after", "--fail-under", "100")
+    assert proc.returncode == 0, proc.stdout[-2000:]
+    proc, _ = _grade(tmp_path, "--jobs", "0", "--timeout", "2", "-k", "add or spin", "--fail-under", "100")
+    assert proc.returncode == 1 and "below 100%" in proc.stdout, proc.stdout[-2000:]
