@@ -19,7 +19,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 
-EXERCISES = '''
+EXERCISES = """
 import os
 import signal
 import time
@@ -42,7 +42,7 @@ def hang():
     # Stands for a hang inside native code (a driver call): the alarm signal never reaches Python.
     signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGALRM})
     time.sleep(120)
-'''
+"""
 
 SOLUTIONS = """
 def add(a, b):
@@ -61,7 +61,7 @@ def hang():
     return 1
 """
 
-TESTS = '''
+TESTS = """
 import pytest
 
 
@@ -93,7 +93,7 @@ def test_hang(impl):
 @pytest.mark.exercise("after", points=2)
 def test_after_the_crashes(impl):
     assert impl.add(2, 2) == 4, "add(2, 2): expected 4"
-'''
+"""
 
 
 def _fake_step(tmp_path: Path) -> Path:
@@ -140,7 +140,8 @@ def test_timeout_and_crash_fail_their_own_tests_in_workers(tmp_path):
     )
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
     tests = _by_test(result)
-    assert set(tests) == {"test_add", "test_add_negative", "test_spin", "test_die", "test_hang", "test_after_the_crashes"}
+    names = {"test_add", "test_add_negative", "test_spin", "test_die", "test_hang", "test_after_the_crashes"}
+    assert set(tests) == names
     assert tests["test_add"]["passed"] and tests["test_add_negative"]["passed"]
     assert tests["test_after_the_crashes"]["passed"], tests["test_after_the_crashes"]
     assert not tests["test_spin"]["passed"] and "Timeout" in tests["test_spin"]["message"]
