@@ -71,6 +71,7 @@ class ExplodeRoute(Protocol):
         """Raise a ResourceError naming both when ``mesh`` cannot be drawn with ``material``."""
 
 
+# --8<-- [start:geometry_route]
 class GeometryShaderRoute:
     """OpenGL: the engine draws the indexed mesh as triangles; the program's geometry shader moves each one."""
 
@@ -85,6 +86,10 @@ class GeometryShaderRoute:
                                 f"material '{material_name}' (shader '{material.shader}') shades with vertex normals")
 
 
+# --8<-- [end:geometry_route]
+
+
+# --8<-- [start:pulling_route]
 class PullingRoute:
     """WebGPU: no geometry stage. The bunny's corners, normals and indices go to storage buffers
     (``renderer.buffers``); the renderer draws ``3·F`` attribute-less vertices and the vertex shader pulls each
@@ -122,6 +127,9 @@ class PullingRoute:
             raise ResourceError(f"mesh '{mesh_name}'", "vertex_count",
                                 f"material '{material_name}' pulls {faces} triangles from {buffers[0]!r}, so it needs "
                                 f"a non-indexed mesh of 3 x {faces} = {3 * faces} vertices; got {got}")
+
+
+# --8<-- [end:pulling_route]
 
 
 def validate_explosion(label: str, amount: float, period: float) -> tuple[float, float]:
@@ -165,6 +173,7 @@ class ExplodeComponent(Component):
         self.speed = float(speed)
 
 
+# --8<-- [start:clock]
 class ExplodeSystem(System):
     """Checks each exploding entity's mesh against its material, then every frame advances the explosion
     clock and writes it to the material's ``explode_time`` (no shader or pipeline is rebuilt)."""
@@ -188,6 +197,9 @@ class ExplodeSystem(System):
             return
         built = app.renderer.resolve_material(material.material, self.scene.assets)
         built.set_values({**built.data.uniform_values(), "explode_time": explode.time})
+
+
+# --8<-- [end:clock]
 
 
 def add_exploding_mesh(scene: Scene, route: ExplodeRoute, name: str, mesh: MeshData, *, time: float = 0.0,
