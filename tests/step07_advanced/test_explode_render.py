@@ -5,7 +5,7 @@ Graded per API, at 96×72: at t = 0 the exploding program draws exactly the unex
 the plain ``explode_lit`` shader; the solution measures inf, identical pictures); at the peak (half a period) the
 covered area grows by at least 25 % (the solution: +67 %) and the silhouette's bounding box matches the
 float64 numpy exploded triangles projected with the scene's camera within 1.5 pixels (the solution: 0.54 px in both).
-Not graded: the two APIs agree on the tour picture at 640×480 (PSNR ≥ 35 dB; measured about 55 dB), the clock
+Not graded: the two APIs agree on the tour picture at 640×480 (PSNR ≥ 35 dB; measured 68.8 dB), the clock
 system, and clear errors for bad parameters and mismatched meshes.
 """
 
