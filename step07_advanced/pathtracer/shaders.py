@@ -1,0 +1,47 @@
+"""Where the path tracer's shader files live, and where the student's (or the reference) shader functions are.
+
+The kernels include ``ray_sphere.*`` (exercise ``hit_sphere``) and ``dielectric.*`` (exercise
+``scatter_dielectric``) from the implementation package's folder, so ``--student`` runs the exercises and the
+default the solutions. Their own pieces (``rng``, ``sky``, ``trace``) sit next to them in ``shaders/``.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+from types import ModuleType
+
+from gandalf_core.render.shader_files import load_shader
+from gandalf_core.resources import ShaderSource
+
+SHADER_DIR = Path(__file__).resolve().parent / "shaders"
+#: The full-screen material that shows the accumulation (``display.vert`` + ``display.frag`` / ``display.wgsl``).
+DISPLAY_SHADER = "pathtracer_display"
+KERNEL_GLSL = SHADER_DIR / "pathtrace.comp"
+KERNEL_WGSL = SHADER_DIR / "pathtrace.wgsl"
+
+#: Line numbers in compiler logs: GLSL drivers ("0:12(5): error ..."), naga ("wgsl:12:5").
+_LINE = {
+    "glsl": re.compile(r"^\s*(?:ERROR:\s*)?\d+[:(](\d+)\)?"),
+    "wgsl": re.compile(r"(?:wgsl|<[^>]*>|\S+\.wgsl):(\d+):\d+"),
+}
+
+
+def impl_shader_dir(impl: ModuleType) -> Path:
+    """The folder holding ``impl``'s ``ray_sphere`` and ``dielectric`` shader files."""
+    return Path(impl.__file__).resolve().parent
+
+
+def kernel_source(backend: str, impl: ModuleType) -> ShaderSource:
+    """The path tracing kernel's expanded source for ``backend`` with ``impl``'s exercise files included."""
+    if backend == "opengl":
+        return load_shader(KERNEL_GLSL, "compute", "glsl", [impl_shader_dir(impl)])
+    return load_shader(KERNEL_WGSL, None, "wgsl", [impl_shader_dir(impl)])
+
+
+def explain_error(src: ShaderSource, message: str) -> str:
+    """A compiler log as ``file:line: message`` lines of the original files (the includes resolved)."""
+    pattern = _LINE[src.lang]
+    out = [src.format_error(int(m.group(1)), text.strip()) for text in message.splitlines()
+           if (m := pattern.search(text))]
+    return "\n".join(out) if out else f"{src.filename}: {message.strip()}"
