@@ -1,0 +1,41 @@
+"""Step 07 parallax, OpenGL variant: ``python -m step07_advanced.parallax.opengl [--student]``.
+
+Four tiles of one brick wall: normal mapping, parallax offset, steep parallax and parallax occlusion mapping, the
+last three calling the student's ``parallax_offset`` / ``parallax_steep`` / ``parallax_occlusion`` from
+``exercises/parallax.glsl`` (``--student``) or ``solutions/``.
+"""
+
+from __future__ import annotations
+
+from types import ModuleType
+
+from gandalf_core import Application
+from gandalf_core.app.cli import load_impl, run_variant
+
+from . import STEP
+from .scene import build_scene
+from .shaders import GL_FRAG, GL_VERT, SHADER, include_dirs
+
+
+# --8<-- [start:register]
+def register_shaders(app: Application, impl: ModuleType) -> None:
+    """The parallax program: the showcase's vertex stage, this technique's fragment stage with ``impl``'s
+    ``parallax.glsl``."""
+    app.renderer.shaders.build(SHADER, GL_VERT, GL_FRAG, include_dirs=include_dirs(impl))
+# --8<-- [end:register]
+
+
+def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480) -> Application:
+    impl = load_impl(STEP, student)
+    app = Application("opengl", width, height, title="step07 parallax · OpenGL", headless=headless, fixed_dt=1 / 60)
+    register_shaders(app, impl)
+    app.add_scene(build_scene(impl))
+    return app
+
+
+def main(argv: list[str] | None = None) -> int:
+    return run_variant(create_app, argv, description=__doc__)
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,162 @@
+"""Normal mapping and the parallax family side by side, the same scene for OpenGL and WebGPU.
+
+Four strips of the same brick wall (the showcase's procedural albedo, normal and height maps) lie flat under the
+same light, stacked along the camera's up vector so that an orthographic camera sees every one of them at the same
+grazing angle, 18° above the surface, where the methods differ most. From the top of the picture down:
+
+0. **normal mapping**: the normal map bends the shading normal, the uv stays put: flat bricks that are lit as if
+   they had relief;
+1. **parallax offset**: one height sample moves the uv against the view, ``uv − v.xy / v.z · scale · (1 − h)``;
+2. **steep parallax**: the view ray marches down through ``layers`` slabs and stops at the first one below the
+   height field: real occlusion, in stair steps;
+3. **parallax occlusion mapping**: the same march, then the linear interpolation between the last two layers.
+
+Every strip uses one material of the one shader ``parallax_surface``; its ``method`` parameter picks the
+function, its ``height_scale`` and ``layers`` the depth and the march (validated by :func:`parallax_material`).
+The study (``study.py``) renders the same view with all four strips read by one method (:func:`study_scene`).
+"""
+
+from __future__ import annotations
+
+import math
+from types import ModuleType
+
+from gandalf_core import Scene, TransformComponent
+from gandalf_core.components import (
+    CameraComponent,
+    ClearColorComponent,
+    InfoComponent,
+    LightComponent,
+    MaterialComponent,
+    MeshComponent,
+)
+from gandalf_core.math import look_at_rotation
+from gandalf_core.resources import MaterialData, ResourceError, plane
+
+from ..showcase.textures import brick_textures
+from .reference import MAX_LAYERS
+from .shaders import SHADER
+
+#: Frames the course tour renders before it takes the picture (the scene stands still).
+TOUR_FRAMES = 2
+#: The methods, in the order of the strips (top to bottom) and of the shader's ``method`` parameter.
+METHODS = ("normal", "offset", "steep", "occlusion")
+LABELS = {"normal": "normal mapping", "offset": "parallax offset", "steep": "steep parallax",
+          "occlusion": "parallax occlusion"}
+#: The depth of height 0 in uv units of the repeated texture, and the march's layers in the tour.
+HEIGHT_SCALE = 0.04
+LAYERS = 16
+TEXTURES = ("bricks_albedo", "bricks_normal", "bricks_height")
+#: Each strip: width (x) and depth (z) in world units; the texture repeats once per 2 units.
+STRIP = (4.4, 2.4)
+UV_SCALE = (STRIP[0] / 2.0, STRIP[1] / 2.0)
+COLOR = (1.0, 1.0, 1.0)
+SPECULAR = 0.25
+SHININESS = 24.0
+BACKGROUND = (0.06, 0.07, 0.09)
+#: An orthographic camera looks down at ELEVATION degrees from DISTANCE away and sees VIEW_HEIGHT world units
+#: from the bottom of the picture to the top: every strip is seen at the same grazing angle (the view vectors the
+#: shaders compute from the camera's position vary by less than 2° up and down, 4° across).
+ELEVATION = 18.0
+DISTANCE = 40.0
+VIEW_HEIGHT = 3.6
+TARGET = (0.0, 0.0, 0.0)
+#: The strips' spacing along the camera's up vector (world units): their projected depth plus a gap.
+SPACING = STRIP[1] * math.sin(math.radians(ELEVATION)) + 0.16
+#: Where the light comes from (a unit vector is made of it): low, from the back left, so the bricks cast light
+#: and shade on their sides.
+SUN = (-0.55, 0.55, -0.35)
+
+
+def _number(label: str, key: str, value, rule: str, ok) -> float:
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        raise ResourceError(label, key, f"expected a number, got {value!r}") from None
+    if not (math.isfinite(number) and ok(number)):
+        raise ResourceError(label, key, f"must be finite and {rule}, got {value!r}")
+    return number
+
+
+def validate_parallax(label: str, method: str, height_scale: float, layers: int) -> tuple[int, float, int]:
+    """(method index, height_scale, layers) checked, or a ResourceError naming ``label`` and the parameter.
+
+    ``method`` is one of :data:`METHODS`; ``height_scale`` a finite number ≥ 0; ``layers`` an int in
+    [1, :data:`MAX_LAYERS`] (the shaders' PARALLAX_MAX_LAYERS: the march never runs longer).
+    """
+    if method not in METHODS:
+        raise ResourceError(label, "method", f"{method!r} is not one of {', '.join(METHODS)}")
+    scale = _number(label, "height_scale", height_scale, ">= 0 (a depth in uv units)", lambda v: v >= 0.0)
+    if isinstance(layers, bool) or not isinstance(layers, int) or not 1 <= layers <= MAX_LAYERS:
+        raise ResourceError(label, "layers", f"must be an int from 1 to {MAX_LAYERS} (the shader's "
+                                             f"PARALLAX_MAX_LAYERS), got {layers!r}")
+    return METHODS.index(method), scale, layers
+
+
+def parallax_material(method: str, height_scale: float = HEIGHT_SCALE, layers: int = LAYERS, *,
+                      uv_scale=UV_SCALE, name: str = "") -> MaterialData:
+    """The brick material read by ``method``: the three brick maps and the shader's parameters."""
+    name = name or f"bricks_{method}"
+    index, scale, count = validate_parallax(f"material '{name}'", method, height_scale, layers)
+    params = {"method": float(index), "height_scale": scale, "layers": float(count), "uv_scale": tuple(uv_scale),
+              "specular": SPECULAR, "shininess": SHININESS}
+    return MaterialData(SHADER, TEXTURES, color=COLOR, params=params, name=name)
+
+
+def add_textures(scene: Scene, size: int = 256) -> None:
+    """The showcase's procedural brick maps (albedo, normal, height), ``size``² texels."""
+    for name, texture in brick_textures(size).items():
+        scene.assets.texture(name, texture)
+
+
+def add_light(scene: Scene) -> None:
+    """One directional light, low from the back left, and a little ambient light."""
+    scene.create_entity(InfoComponent("background"), ClearColorComponent(BACKGROUND))
+    length = math.sqrt(sum(c * c for c in SUN))
+    sun = tuple(4.0 * c / length for c in SUN)
+    scene.create_entity(InfoComponent("sun"), TransformComponent(sun, quaternion=look_at_rotation(sun, (0, 0, 0))),
+                        LightComponent("directional", (1.0, 0.95, 0.88), intensity=1.6))
+    scene.create_entity(InfoComponent("ambient"), TransformComponent(), LightComponent("ambient", (0.16, 0.17, 0.2)))
+
+
+def camera_eye() -> tuple[float, float, float]:
+    """Where the camera stands: DISTANCE from TARGET, ELEVATION degrees above the strips' planes."""
+    e = math.radians(ELEVATION)
+    return (TARGET[0], TARGET[1] + DISTANCE * math.sin(e), TARGET[2] + DISTANCE * math.cos(e))
+
+
+def strip_positions() -> list[tuple[float, float, float]]:
+    """The centres of the four strips, top of the picture to bottom: stacked along the camera's up vector, so
+    none hides another and all are seen at the same angle."""
+    e = math.radians(ELEVATION)
+    up = (0.0, math.cos(e), -math.sin(e))
+    return [tuple(TARGET[j] + (1.5 - k) * SPACING * up[j] for j in range(3)) for k in range(len(METHODS))]
+
+
+def build_scene(impl: ModuleType | None = None, *, methods: tuple[str, ...] = METHODS,
+                height_scale: float = HEIGHT_SCALE, layers: int = LAYERS) -> Scene:
+    """The demo: four strips, top to bottom read by ``methods`` (normal, offset, steep, occlusion). ``impl``
+    (exercises or solutions) is the package the variant file built the shader with."""
+    del impl  # the shader was built with it; the scene itself is the same for both
+    if len(methods) != len(METHODS):
+        raise ValueError(f"methods: expected {len(METHODS)} method names (one per strip), got {methods!r}")
+    scene = Scene("step07_parallax")
+    add_textures(scene)
+    scene.assets.mesh("strip", plane(1.0, 1))
+    for method, position in zip(methods, strip_positions(), strict=True):
+        material = parallax_material(method, height_scale, layers)
+        scene.assets.material(material.name, material)
+        scene.create_entity(InfoComponent(f"{LABELS[method]} strip"),
+                            TransformComponent(position, scale=(STRIP[0], 1.0, STRIP[1])),
+                            MeshComponent("strip"), MaterialComponent(material.name))
+    add_light(scene)
+    eye = camera_eye()
+    scene.create_entity(InfoComponent("camera"), TransformComponent(eye, quaternion=look_at_rotation(eye, TARGET)),
+                        CameraComponent(near=DISTANCE - 10.0, far=DISTANCE + 10.0, projection="orthographic",
+                                        height=VIEW_HEIGHT))
+    return scene
+
+
+def study_scene(method: str, layers: int = LAYERS, height_scale: float = HEIGHT_SCALE) -> Scene:
+    """The demo's view with all four strips read by ``method`` (the study's scene: the same angles)."""
+    return build_scene(methods=(method,) * len(METHODS), height_scale=height_scale, layers=layers)
