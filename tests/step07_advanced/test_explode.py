@@ -228,54 +228,52 @@ def test_huge_and_tiny_triangles_neither_overflow_nor_underflow(impl, backend):
 
 
 # --- mutants: plausible wrong answers, each must fail at least one graded check ---------------------------
-# name -> (GLSL body of explode_offset, WGSL body); `e1`, `e2`, `s`, `w` are set up as in the reference.
-_GLSL_HEAD = """vec3 face_normal(vec3 p0, vec3 p1, vec3 p2) { return vec3(0.0); }
-vec3 explode_offset(vec3 p0, vec3 p1, vec3 p2, float t, float amount, float period) {
-    vec3 e1 = p1 - p0;
-    vec3 e2 = p2 - p0;
-    vec3 m = max(abs(e1), abs(e2));
-    float s = max(max(m.x, m.y), max(m.z, 1e-38));
-    float w = 0.5 - 0.5 * cos(6.283185307179586 * t / period);
-"""
-_WGSL_HEAD = """fn face_normal(p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>) -> vec3<f32> { return vec3<f32>(0.0); }
-fn explode_offset(p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>, t: f32, amount: f32, period: f32) -> vec3<f32> {
-    let e1 = p1 - p0;
-    let e2 = p2 - p0;
-    let m = max(abs(e1), abs(e2));
-    let s = max(max(m.x, m.y), max(m.z, 1e-38));
-    let w = 0.5 - 0.5 * cos(6.283185307179586 * t / period);
-"""
-_SAFE = ("vec3 c = cross(e1 / s, e2 / s); float l = length(c); vec3 n = l > 1e-12 ? c / l : vec3(0.0);",
-         "let c = cross(e1 / s, e2 / s); let l = length(c); let n = select(vec3<f32>(0.0), c / l, l > 1e-12);")
-MUTANTS = {
-    "normal not normalised": ("return amount * w * cross(e1, e2);", "return amount * w * cross(e1, e2);"),
-    "clockwise normal": ("vec3 c = cross(e2 / s, e1 / s); float l = length(c); return l > 1e-12 ? amount * w * c / l"
-                         " : vec3(0.0);",
-                         "let c = cross(e2 / s, e1 / s); let l = length(c); return select(vec3<f32>(0.0), "
-                         "amount * w * c / l, l > 1e-12);"),
-    "degrees for radians": (_SAFE[0] + " return amount * (0.5 - 0.5 * cos(360.0 * t / period)) * n;",
-                            _SAFE[1] + " return amount * (0.5 - 0.5 * cos(360.0 * t / period)) * n;"),
-    "missing the half": (_SAFE[0] + " return amount * 2.0 * w * n;", _SAFE[1] + " return amount * 2.0 * w * n;"),
-    "sine pulse": (_SAFE[0] + " return amount * sin(3.141592653589793 * t / period) * n;",
-                   _SAFE[1] + " return amount * sin(3.141592653589793 * t / period) * n;"),
-    "no degenerate guard": (
-        "vec3 c = cross(e1 / s, e2 / s); return amount * w * c * inversesqrt(dot(c, c));",
-        "let c = cross(e1 / s, e2 / s); return amount * w * c * inverseSqrt(dot(c, c));"),
-    "no edge scaling": (
-        "vec3 c = cross(e1, e2); float l = length(c); return l > 0.0 ? amount * w * c / l : vec3(0.0);",
-        "let c = cross(e1, e2); let l = length(c); return select(vec3<f32>(0.0), amount * w * c / l, l > 0.0);"),
-    "a corner's position as the normal (like a vertex normal)": (
-        "return amount * w * normalize(p0);", "return amount * w * normalize(p0);"),
-}
+# (name, description, edits): ``(file, old, new)`` replacements in a copy of solutions/explode.*, the format of
+# gandalf_core.grading.mutants.shader_mutant (``old`` occurs exactly once, so a changed solution breaks a stale
+# mutant loudly). The step's mutation check can register them as they are:
+#     for name, description, edits in SHADER_MUTANTS:
+#         shader_mutant(MUTANTS, "step07_advanced", "explode_offset", name, description, edits)
+G, W = "explode.glsl", "explode.wgsl"
+SHADER_MUTANTS = [
+    ("explode-not-normalised", "the cross product is not normalised",
+     [(G, "return len > 1e-12 ? c / len : vec3(0.0);", "return c;"),
+      (W, "    return c / len;\n}", "    return c;\n}")]),
+    ("explode-clockwise", "the normal's sign is flipped (cross(e2, e1))",
+     [(G, "vec3 c = cross(e1 / s, e2 / s);", "vec3 c = cross(e2 / s, e1 / s);"),
+      (W, "let c = cross(e1 / s, e2 / s);", "let c = cross(e2 / s, e1 / s);")]),
+    ("explode-degrees", "360 for 2 pi: degrees given to cos",
+     [(G, "cos(6.283185307179586 * t / period)", "cos(360.0 * t / period)"),
+      (W, "cos(6.283185307179586 * t / period)", "cos(360.0 * t / period)")]),
+    ("explode-no-half", "(1 - cos) without the / 2: twice the amount at the peak",
+     [(G, "0.5 - 0.5 * cos(", "1.0 - cos("), (W, "0.5 - 0.5 * cos(", "1.0 - cos(")]),
+    ("explode-sine", "a sine pulse instead of (1 - cos) / 2",
+     [(G, "0.5 - 0.5 * cos(6.283185307179586 * t / period)", "sin(3.141592653589793 * t / period)"),
+      (W, "0.5 - 0.5 * cos(6.283185307179586 * t / period)", "sin(3.141592653589793 * t / period)")]),
+    ("explode-no-degenerate-guard", "normalises a zero cross product (NaN)",
+     [(G, "return len > 1e-12 ? c / len : vec3(0.0);", "return c / len;"), (W, "if (len <= 1e-12) {", "if (false) {")]),
+    ("explode-no-edge-scaling", "cross product of the raw edges: overflows (1e30) and underflows (1e-30)",
+     [(G, "vec3 c = cross(e1 / s, e2 / s);", "vec3 c = cross(e1, e2);"),
+      (W, "let c = cross(e1 / s, e2 / s);", "let c = cross(e1, e2);")]),
+    ("explode-vertex-direction", "a per-vertex direction (the first corner's) instead of the face normal",
+     [(G, "return amount * w * face_normal(p0, p1, p2);", "return amount * w * normalize(p0);"),
+      (W, "return amount * w * face_normal(p0, p1, p2);", "return amount * w * normalize(p0);")]),
+]
 
 
 @pytest.mark.parametrize("language", ["glsl", "wgsl"])
-@pytest.mark.parametrize("mutant", list(MUTANTS))
+@pytest.mark.parametrize("mutant", [m[0] for m in SHADER_MUTANTS])
 def test_every_mutant_fails_a_graded_check(tmp_path, mutant, language):
-    head = _GLSL_HEAD if language == "glsl" else _WGSL_HEAD
-    body = MUTANTS[mutant][0 if language == "glsl" else 1]
-    (tmp_path / f"explode.{language}").write_text(f"{head}    {body}\n}}\n")
+    from step07_advanced import solutions
+
+    _name, description, edits = next(m for m in SHADER_MUTANTS if m[0] == mutant)
+    source = _impl_dir(solutions) / f"explode.{language}"
+    text = source.read_text()
+    for file, old, new in edits:
+        if file == source.name:
+            assert text.count(old) == 1, f"mutant '{mutant}': {old!r} must occur once in {source}"
+            text = text.replace(old, new)
+    (tmp_path / source.name).write_text(text)
     for check in CHECKS.values():
         if check(language, tmp_path) is not None:
             return
-    pytest.fail(f"mutant '{mutant}' ({language}) passes every check: {list(CHECKS)}")
+    pytest.fail(f"mutant '{mutant}' ({description}, {language}) passes every check: {list(CHECKS)}")
