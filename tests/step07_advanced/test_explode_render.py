@@ -63,6 +63,8 @@ def render_bunny(backend: str, impl, t: float | None, size=SIZE) -> tuple[np.nda
         explode.add_view(scene)
         app.add_scene(scene)
         app.run(frames=1)
+        if backend == "opengl":
+            assert app.renderer.ctx.error == "GL_NO_ERROR"
         render = next(s for s in scene.systems if isinstance(s, RenderSystem))
         view, projection, _eye, _ = render.camera()
         return app.capture(), transform.world.copy(), projection @ view
