@@ -5,6 +5,7 @@ libraries turn into GPU objects. Pillow is imported only when an image file is r
 """
 
 from gandalf_core.resources.errors import ResourceError
+from gandalf_core.resources.gltf import GLTFModel, load_gltf
 from gandalf_core.resources.material_data import BLEND_MODES, CULL_MODES, MaterialData
 from gandalf_core.resources.mesh_data import (
     ATTRIBUTE_LOCATIONS,
@@ -35,7 +36,9 @@ from gandalf_core.resources.texture_data import (
 )
 
 __all__ = [
+    "GLTFModel",
     "MESH_EXTENSIONS",
+    "load_gltf",
     "load_mesh",
     "load_meshes",
     "ATTRIBUTE_LOCATIONS",

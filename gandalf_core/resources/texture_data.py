@@ -327,6 +327,11 @@ class CubeTextureData:
     The orientation of each face follows the OpenGL/WebGPU cube-map convention documented in
     :func:`cube_face_directions`; with faces stored top row first, both backends sample them identically.
     Cube maps always clamp at their edges, so there is no ``wrap`` setting.
+
+    ``levels`` optionally gives the mip levels below level 0 explicitly, each a (6, s, s, 4) uint8 array with
+    ``s = max(1, size >> k)`` for level ``k = 1, 2, ...``: a prefiltered environment stores one roughness per
+    level, which no box filter would produce. Fewer levels than the full chain are allowed (the texture then
+    has ``1 + len(levels)`` levels); they need ``mipmaps=True``.
     """
 
     faces: tuple[np.ndarray, ...]
@@ -334,6 +339,7 @@ class CubeTextureData:
     filter: str = "linear"
     mipmaps: bool = True
     name: str = "cubemap"
+    levels: tuple[np.ndarray, ...] | None = None
 
     def __post_init__(self) -> None:
         label = _label("cube texture", self.name)
@@ -352,6 +358,31 @@ class CubeTextureData:
         object.__setattr__(self, "faces", checked)
         object.__setattr__(self, "srgb", bool(self.srgb))
         object.__setattr__(self, "mipmaps", bool(self.mipmaps))
+        if self.levels is not None:
+            object.__setattr__(self, "levels", self._check_levels(label))
+
+    def _check_levels(self, label: str) -> tuple[np.ndarray, ...]:
+        if not self.mipmaps:
+            raise ResourceError(label, "levels", "explicit mip levels need mipmaps=True")
+        if isinstance(self.levels, np.ndarray) or not isinstance(self.levels, Sequence):
+            detail = f"expected a sequence of (6, s, s, 4) arrays, got {type(self.levels).__name__}"
+            raise ResourceError(label, "levels", detail)
+        size = self.size
+        if len(self.levels) > size.bit_length() - 1:
+            raise ResourceError(label, "levels", f"{len(self.levels)} levels below level 0, but a {size}x{size} cube "
+                                                 f"has at most {size.bit_length() - 1}")
+        checked = []
+        for k, level in enumerate(self.levels, start=1):
+            s = max(1, size >> k)
+            a = level if isinstance(level, np.ndarray) else None
+            if a is None or a.dtype != np.uint8 or a.shape != (6, s, s, 4):
+                got = f"{a.dtype} {a.shape}" if a is not None else type(level).__name__
+                detail = f"mip level {k} must be uint8 of shape (6, {s}, {s}, 4), got {got}"
+                raise ResourceError(label, f"levels[{k - 1}]", detail)
+            owned = np.array(a, dtype=np.uint8, order="C", copy=True)
+            owned.flags.writeable = False
+            checked.append(owned)
+        return tuple(checked)
 
     @classmethod
     def from_arrays(cls, faces: Sequence[Any], **settings: Any) -> CubeTextureData:
@@ -388,13 +419,18 @@ class CubeTextureData:
 
     @property
     def mip_levels(self) -> int:
-        """Number of mip levels: ``floor(log2(size)) + 1`` with mipmaps, else 1."""
+        """Number of mip levels: ``1 + len(levels)`` when given, ``floor(log2(size)) + 1`` with mipmaps, else 1."""
+        if self.levels is not None:
+            return 1 + len(self.levels)
         return self.size.bit_length() if self.mipmaps else 1
 
     def mip_chain(self) -> list[np.ndarray]:
-        """All mip levels as (6, s, s, 4) uint8 arrays, level 0 first (same filtering as TextureData)."""
+        """All mip levels as (6, s, s, 4) uint8 arrays, level 0 first: the explicit ``levels`` when given,
+        else box filtered as in TextureData."""
         if not self.mipmaps:
             return [self.pixels]
+        if self.levels is not None:
+            return [self.pixels, *self.levels]
         return _mip_chain(self.pixels, self.srgb)
 
     def save_png(self, path: str | Path) -> None:

@@ -1,5 +1,6 @@
 // Metallic-roughness shading with every light of the scene, plus an environment term from a sky cube map.
-// ggx_specular() and fresnel_schlick() come from brdf.glsl, found in exercises/ or solutions/;
+// ggx_specular(), fresnel_schlick(), base_reflectance() and diffuse_albedo() come from brdf.glsl (exercises/ or
+// solutions/);
 // shadow_factor() from the engine's shadow.glsl.
 #include "frame.glsl"
 #include "shadow.glsl"
@@ -34,12 +35,12 @@ void light_at(int i, vec3 p, vec3 n, out vec3 l, out vec3 radiance) {
     }
 }
 
-// Direct light: sum over the lights of (k_d · base/π + specular BRDF) · radiance · n·l, plus the lights
-// block's ambient. k_d = (1 - F)(1 - metallic): what the surface reflects specularly it cannot also scatter.
+// Direct light: sum over the lights of (diffuse_albedo/π + specular BRDF) · radiance · n·l, plus the lights
+// block's ambient. diffuse_albedo = base (1 - metallic)(1 - F): what is reflected specularly is not scattered.
 // `shadow` is the part of the shadow-casting light that reaches p (shadow_factor(); 1 without shadows).
 vec3 pbr_direct(vec3 p, vec3 n, vec3 v, vec3 base, float metallic, float roughness, float shadow) {
     float r = clamp(roughness, MIN_ROUGHNESS, 1.0);
-    vec3 f0 = mix(vec3(0.04), base, metallic);
+    vec3 f0 = base_reflectance(base, metallic);
     vec3 diffuse = base * (1.0 - metallic);
     vec3 color = u_ambient.rgb * (diffuse + f0);
     int count = min(u_light_count.x, MAX_LIGHTS);
@@ -54,8 +55,8 @@ vec3 pbr_direct(vec3 p, vec3 n, vec3 v, vec3 base, float metallic, float roughne
             continue;
         }
         vec3 h = safe_normalize(l + v, n);
-        vec3 k_d = (1.0 - fresnel_schlick(max(dot(h, v), 0.0), f0)) * (1.0 - metallic);
-        color += (k_d * base / PI + ggx_specular(n, v, l, r, f0)) * radiance * n_dot_l;
+        vec3 diffuse_part = diffuse_albedo(base, metallic, fresnel_schlick(max(dot(h, v), 0.0), f0));
+        color += (diffuse_part / PI + ggx_specular(n, v, l, r, f0)) * radiance * n_dot_l;
     }
     return color;
 }
@@ -64,7 +65,7 @@ vec3 pbr_direct(vec3 p, vec3 n, vec3 v, vec3 base, float metallic, float roughne
 // Karis' analytic fit of the pre-integrated BRDF); the diffuse part reads a nearly fully blurred level.
 vec3 pbr_environment(samplerCube env, vec3 n, vec3 v, vec3 base, float metallic, float roughness) {
     float r = clamp(roughness, MIN_ROUGHNESS, 1.0);
-    vec3 f0 = mix(vec3(0.04), base, metallic);
+    vec3 f0 = base_reflectance(base, metallic);
     float n_dot_v = clamp(dot(n, v), 1e-4, 1.0);
     float max_lod = log2(float(textureSize(env, 0).x));
     vec3 specular_light = textureLod(env, reflect(-v, n), r * max_lod).rgb;

@@ -1,5 +1,6 @@
 // Metallic-roughness shading with every light of the scene, plus an environment term from a sky cube map.
-// ggx_specular() and fresnel_schlick() come from brdf.wgsl, found in exercises/ or solutions/;
+// ggx_specular(), fresnel_schlick(), base_reflectance() and diffuse_albedo() come from brdf.wgsl (exercises/ or
+// solutions/);
 // shadow_factor() from the engine's shadow.wgsl.
 #include "frame.wgsl"
 #include "shadow.wgsl"
@@ -39,13 +40,13 @@ fn light_at(i: i32, p: vec3<f32>, n: vec3<f32>) -> LightSample {
     return LightSample(l, radiance);
 }
 
-// Direct light: sum over the lights of (k_d · base/π + specular BRDF) · radiance · n·l, plus the lights
-// block's ambient. k_d = (1 - F)(1 - metallic): what the surface reflects specularly it cannot also scatter.
+// Direct light: sum over the lights of (diffuse_albedo/π + specular BRDF) · radiance · n·l, plus the lights
+// block's ambient. diffuse_albedo = base (1 - metallic)(1 - F): what is reflected specularly is not scattered.
 // `shadow` is the part of the shadow-casting light that reaches p (shadow_factor(); 1 without shadows).
 fn pbr_direct(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>, metallic: f32, roughness: f32,
               shadow: f32) -> vec3<f32> {
     let r = clamp(roughness, MIN_ROUGHNESS, 1.0);
-    let f0 = mix(vec3<f32>(0.04), base, metallic);
+    let f0 = base_reflectance(base, metallic);
     let diffuse = base * (1.0 - metallic);
     var color = lights.ambient.rgb * (diffuse + f0);
     let count = min(lights.count.x, i32(MAX_LIGHTS));
@@ -57,8 +58,8 @@ fn pbr_direct(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>, metalli
         }
         let radiance = select(s.radiance, s.radiance * shadow, i == i32(lights.shadow.w));
         let h = safe_normalize(s.l + v, n);
-        let k_d = (1.0 - fresnel_schlick(max(dot(h, v), 0.0), f0)) * (1.0 - metallic);
-        color += (k_d * base / PI + ggx_specular(n, v, s.l, r, f0)) * radiance * n_dot_l;
+        let diffuse_part = diffuse_albedo(base, metallic, fresnel_schlick(max(dot(h, v), 0.0), f0));
+        color += (diffuse_part / PI + ggx_specular(n, v, s.l, r, f0)) * radiance * n_dot_l;
     }
     return color;
 }
@@ -68,7 +69,7 @@ fn pbr_direct(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>, metalli
 fn pbr_environment(env: texture_cube<f32>, env_sampler: sampler, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>,
                    metallic: f32, roughness: f32) -> vec3<f32> {
     let r = clamp(roughness, MIN_ROUGHNESS, 1.0);
-    let f0 = mix(vec3<f32>(0.04), base, metallic);
+    let f0 = base_reflectance(base, metallic);
     let n_dot_v = clamp(dot(n, v), 1e-4, 1.0);
     let max_lod = log2(f32(textureDimensions(env).x));
     let specular_light = textureSampleLevel(env, env_sampler, reflect(-v, n), r * max_lod).rgb;

@@ -1,0 +1,287 @@
+"""glTF 2.0 models with their metallic-roughness materials: ``load_gltf(path) -> GLTFModel``.
+
+trimesh reads the geometry (through :mod:`gandalf_core.resources.mesh_loader`: node transforms applied, UVs in
+the engine's convention, tangents computed); this module reads the file's JSON itself for what trimesh does
+not keep: which texture feeds which material field, and the samplers. Each glTF material becomes one
+:class:`MaterialData` whose textures are, in this order,
+
+    base colour (sRGB), metallic-roughness (linear: G = roughness, B = metallic), normal (linear),
+    occlusion (linear, R), emissive (sRGB)
+
+followed by the caller's ``extra_textures`` (an environment, say); a missing map is replaced by a 1×1 white
+(or flat-normal) texture, so one shader fits every material. Its params are ``metallic``, ``roughness``,
+``normal_scale``, ``occlusion_strength``, ``emissive`` (vec4) and the caller's ``params``; ``color`` is the
+base colour factor.
+
+What cannot be mapped raises :class:`ResourceError` naming the file, the material and the field: a missing
+image file, a mirrored-repeat or per-axis wrap mode (the engine has one wrap mode, repeat or clamp), a second
+UV set, a textured material on a mesh without UVs, factors out of range.
+"""
+
+from __future__ import annotations
+
+import base64
+import io
+import json
+import struct
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from gandalf_core.resources.errors import ResourceError
+from gandalf_core.resources.material_data import MaterialData
+from gandalf_core.resources.mesh_data import MeshData
+from gandalf_core.resources.texture_data import TextureData
+
+#: The material fields of a glTF material, in the order of MaterialData.textures, with their colour space.
+TEXTURE_FIELDS = (
+    ("baseColorTexture", True),
+    ("metallicRoughnessTexture", False),
+    ("normalTexture", False),
+    ("occlusionTexture", False),
+    ("emissiveTexture", True),
+)
+_REPEAT, _CLAMP, _MIRRORED = 10497, 33071, 33648
+_NEAREST = 9728
+_MIPMAP_FILTERS = (9984, 9985, 9986, 9987)
+_WRAP_NAMES = {_REPEAT: "REPEAT", _CLAMP: "CLAMP_TO_EDGE", _MIRRORED: "MIRRORED_REPEAT"}
+#: Defaults for missing maps: white (factor only) and a flat tangent-space normal.
+DEFAULT_TEXTURES = {
+    "gltf_white_srgb": TextureData(np.full((1, 1, 4), 255, np.uint8), name="gltf_white_srgb", mipmaps=False),
+    "gltf_white_linear": TextureData(np.full((1, 1, 4), 255, np.uint8), srgb=False, name="gltf_white_linear",
+                                     mipmaps=False),
+    "gltf_flat_normal": TextureData(np.array([[[128, 128, 255, 255]]], np.uint8), srgb=False,
+                                    name="gltf_flat_normal", mipmaps=False),
+}
+_DEFAULT_FOR = {"baseColorTexture": "gltf_white_srgb", "emissiveTexture": "gltf_white_srgb",
+                "normalTexture": "gltf_flat_normal"}
+
+
+@dataclass(frozen=True)
+class GLTFModel:
+    """What :func:`load_gltf` found: meshes, materials and textures by name (ready for a scene's assets), and
+    ``parts``: one (mesh name, material name) pair per drawn primitive."""
+
+    meshes: dict[str, MeshData]
+    materials: dict[str, MaterialData]
+    textures: dict[str, TextureData]
+    parts: tuple[tuple[str, str], ...]
+
+
+class _File:
+    """The JSON document and binary buffers of one .gltf or .glb file, with error labels naming it."""
+
+    def __init__(self, path: Path) -> None:
+        self.path = path
+        self.label = f"glTF file '{path}'"
+        if path.suffix.lower() not in (".gltf", ".glb"):
+            raise ResourceError(self.label, "path", f"expected a .gltf or .glb file, got {path.suffix or '(none)'!r}")
+        if not path.is_file():
+            raise ResourceError(self.label, "path", "file not found")
+        raw = path.read_bytes()
+        self.bin: bytes | None = None
+        try:
+            if path.suffix.lower() == ".glb":
+                magic, _version, _length = struct.unpack_from("<4sII", raw, 0)
+                if magic != b"glTF":
+                    raise ValueError("not a GLB file (no 'glTF' magic)")
+                offset, chunks = 12, []
+                while offset + 8 <= len(raw):
+                    size, kind = struct.unpack_from("<II", raw, offset)
+                    chunks.append((kind, raw[offset + 8 : offset + 8 + size]))
+                    offset += 8 + size
+                self.doc = json.loads(chunks[0][1].decode("utf-8"))
+                self.bin = next((data for kind, data in chunks[1:] if kind == 0x004E4942), None)
+            else:
+                self.doc = json.loads(raw.decode("utf-8"))
+        except (ValueError, struct.error, IndexError, UnicodeDecodeError) as exc:
+            raise ResourceError(self.label, "contents", f"cannot be read as glTF: {exc}") from None
+
+    def items(self, key: str) -> list[dict[str, Any]]:
+        return list(self.doc.get(key, []))
+
+    def _uri_bytes(self, uri: str, where: str) -> bytes:
+        if uri.startswith("data:"):
+            try:
+                return base64.b64decode(uri.split(",", 1)[1])
+            except (IndexError, ValueError) as exc:
+                raise ResourceError(self.label, where, f"bad data URI: {exc}") from None
+        file = self.path.parent / uri
+        if not file.is_file():
+            raise ResourceError(self.label, where, f"file not found: '{uri}' (looked for {file})")
+        return file.read_bytes()
+
+    def buffer(self, index: int, where: str) -> bytes:
+        buffer = self.items("buffers")[index]
+        if "uri" not in buffer:
+            if self.bin is None:
+                raise ResourceError(self.label, where, f"buffer {index} has no uri and the file no binary chunk")
+            return self.bin
+        return self._uri_bytes(buffer["uri"], where)
+
+    def image_bytes(self, index: int, where: str) -> bytes:
+        image = self.items("images")[index]
+        if "uri" in image:
+            return self._uri_bytes(image["uri"], where)
+        view = self.items("bufferViews")[image["bufferView"]]
+        data = self.buffer(view["buffer"], where)
+        start = view.get("byteOffset", 0)
+        return data[start : start + view["byteLength"]]
+
+
+def _texture(file: _File, material: str, field: str, info: Mapping[str, Any], srgb: bool,
+             name: str) -> TextureData:
+    """The TextureData of one material field (its image decoded, its sampler mapped)."""
+    where = f"material '{material}' {field}"
+    if info.get("texCoord", 0) != 0:
+        raise ResourceError(file.label, where, f"uses UV set {info['texCoord']}; only TEXCOORD_0 is supported")
+    textures = file.items("textures")
+    index = info.get("index")
+    if not isinstance(index, int) or not 0 <= index < len(textures):
+        raise ResourceError(file.label, where, f"texture index {index!r} does not exist ({len(textures)} textures)")
+    texture = textures[index]
+    if "source" not in texture:
+        raise ResourceError(file.label, where, f"texture {index} has no image source (extensions are not supported)")
+    settings: dict[str, Any] = {"wrap": "repeat", "filter": "linear", "mipmaps": True}
+    if "sampler" in texture:
+        sampler = file.items("samplers")[texture["sampler"]]
+        wrap_s, wrap_t = sampler.get("wrapS", _REPEAT), sampler.get("wrapT", _REPEAT)
+        for axis, mode in (("wrapS", wrap_s), ("wrapT", wrap_t)):
+            if mode not in (_REPEAT, _CLAMP):
+                raise ResourceError(file.label, f"{where} sampler {texture['sampler']} {axis}",
+                                    f"{_WRAP_NAMES.get(mode, mode)} is not supported (use REPEAT or CLAMP_TO_EDGE)")
+        if wrap_s != wrap_t:
+            raise ResourceError(file.label, f"{where} sampler {texture['sampler']}",
+                                f"wrapS {_WRAP_NAMES[wrap_s]} differs from wrapT {_WRAP_NAMES[wrap_t]}; the engine "
+                                "has one wrap mode for both axes")
+        settings["wrap"] = "repeat" if wrap_s == _REPEAT else "clamp"
+        if sampler.get("magFilter") == _NEAREST:
+            settings["filter"] = "nearest"
+        if "minFilter" in sampler and sampler["minFilter"] not in _MIPMAP_FILTERS:
+            settings["mipmaps"] = False
+    from PIL import Image
+
+    raw = file.image_bytes(texture["source"], f"{where} image {texture['source']}")
+    try:
+        with Image.open(io.BytesIO(raw)) as img:
+            pixels = np.array(img.convert("RGBA"), dtype=np.uint8)
+    except (OSError, ValueError) as exc:
+        raise ResourceError(file.label, f"{where} image {texture['source']}", f"cannot decode: {exc}") from None
+    return TextureData(pixels, srgb=srgb, name=name, **settings)
+
+
+def _factor(file: _File, material: str, field: str, value: Any, default: Any, size: int) -> np.ndarray:
+    v = np.asarray(default if value is None else value, dtype=np.float64).reshape(-1)
+    if v.size != size or not np.all(np.isfinite(v)):
+        detail = f"expected {size} finite numbers, got {value!r}"
+        raise ResourceError(file.label, f"material '{material}' {field}", detail)
+    if field != "emissiveFactor" and (v.min() < 0.0 or v.max() > 1.0):
+        raise ResourceError(file.label, f"material '{material}' {field}", f"{value!r} is outside [0, 1]")
+    if v.min() < 0.0:
+        raise ResourceError(file.label, f"material '{material}' {field}", f"{value!r} is negative")
+    return v
+
+
+def _material(file: _File, index: int, shader: str, extra_textures: Sequence[str],
+              params: Mapping[str, Any], textures: dict[str, TextureData]) -> tuple[str, MaterialData]:
+    m = file.items("materials")[index]
+    name = str(m.get("name") or f"material_{index}")
+    pbr = m.get("pbrMetallicRoughness", {})
+    color = _factor(file, name, "baseColorFactor", pbr.get("baseColorFactor"), [1.0, 1.0, 1.0, 1.0], 4)
+    metallic = _factor(file, name, "metallicFactor", pbr.get("metallicFactor"), 1.0, 1)
+    roughness = _factor(file, name, "roughnessFactor", pbr.get("roughnessFactor"), 1.0, 1)
+    emissive = _factor(file, name, "emissiveFactor", m.get("emissiveFactor"), [0.0, 0.0, 0.0], 3)
+    names = []
+    for field, srgb in TEXTURE_FIELDS:
+        info = (pbr if field in ("baseColorTexture", "metallicRoughnessTexture") else m).get(field)
+        if info is None:
+            default = _DEFAULT_FOR.get(field, "gltf_white_linear")
+            textures.setdefault(default, DEFAULT_TEXTURES[default])
+            names.append(default)
+            continue
+        tex_name = f"{file.path.stem}/{name}/{field}"
+        textures[tex_name] = _texture(file, name, field, info, srgb, tex_name)
+        names.append(tex_name)
+    normal_scale = float(m.get("normalTexture", {}).get("scale", 1.0))
+    occlusion = float(m.get("occlusionTexture", {}).get("strength", 1.0))
+    if not 0.0 <= occlusion <= 1.0:
+        raise ResourceError(file.label, f"material '{name}' occlusionTexture.strength",
+                            f"{occlusion} is outside [0, 1]")
+    values = {"metallic": float(metallic[0]), "roughness": float(roughness[0]), "normal_scale": normal_scale,
+              "occlusion_strength": occlusion, "emissive": (*emissive, 1.0), **params}
+    if m.get("alphaMode", "OPAQUE") != "OPAQUE":
+        raise ResourceError(file.label, f"material '{name}' alphaMode",
+                            f"{m['alphaMode']!r} is not supported (only OPAQUE)")
+    cull = "none" if m.get("doubleSided", False) else "back"
+    return name, MaterialData(shader, [*names, *extra_textures], color=tuple(color), params=values, cull=cull)
+
+
+def load_gltf(path: str | Path, shader: str = "pbr_model", extra_textures: Sequence[str] = (),
+              params: Mapping[str, Any] | None = None) -> GLTFModel:
+    """Read a .gltf/.glb file: meshes (with tangents), metallic-roughness materials for ``shader`` and their
+    textures. ``extra_textures`` are appended to every material's textures, ``params`` to its params."""
+    from gandalf_core.resources.mesh_loader import _parts, _to_mesh_data
+
+    file = _File(Path(path))
+    textures: dict[str, TextureData] = {}
+    materials: dict[str, MaterialData] = {}
+    by_index: dict[int, str] = {}
+    for i in range(len(file.items("materials"))):
+        name, data = _material(file, i, shader, tuple(extra_textures), dict(params or {}), textures)
+        if name in materials:
+            name = f"{name}.{i}"
+        materials[name], by_index[i] = data, name
+    # Primitives that use a textured material must have UVs.
+    for mesh_index, mesh in enumerate(file.items("meshes")):
+        for k, primitive in enumerate(mesh.get("primitives", [])):
+            material_index = primitive.get("material")
+            if material_index is None:
+                continue
+            if material_index not in by_index:
+                raise ResourceError(file.label, f"mesh '{mesh.get('name', mesh_index)}' primitive {k}",
+                                    f"material {material_index} does not exist")
+            data = materials[by_index[material_index]]
+            textured = [f for (f, _), t in zip(TEXTURE_FIELDS, data.textures) if t not in DEFAULT_TEXTURES]
+            if textured and "TEXCOORD_0" not in primitive.get("attributes", {}):
+                raise ResourceError(file.label, f"mesh '{mesh.get('name', mesh_index)}' primitive {k}",
+                                    f"material '{by_index[material_index]}' has {textured[0]} but the mesh has no "
+                                    "UVs (TEXCOORD_0)")
+    import trimesh
+
+    try:
+        loaded = trimesh.load(str(file.path), process=False, split_objects=True, group_material=False)
+    except Exception as exc:  # trimesh raises many types for bad files
+        raise ResourceError(file.label, "contents", f"trimesh cannot read it: {exc}") from None
+    meshes: dict[str, MeshData] = {}
+    parts = []
+    material_names = {data_name: data_name for data_name in materials}
+    for name, mesh, transform in _parts(loaded, file.path.stem):
+        data = _to_mesh_data(mesh, transform, name, file.label)
+        if data is None:
+            continue
+        material = getattr(getattr(mesh.visual, "material", None), "name", None)
+        if material not in material_names:
+            material = "gltf_default"
+            materials.setdefault(material, _material_default(shader, extra_textures, params or {}, textures))
+        mesh_name = name if name not in meshes else f"{name}.{len(meshes)}"
+        meshes[mesh_name] = data
+        parts.append((mesh_name, material))
+    if not parts:
+        raise ResourceError(file.label, "contents", "the file holds no triangles")
+    return GLTFModel(meshes, materials, textures, tuple(parts))
+
+
+def _material_default(shader: str, extra_textures: Sequence[str], params: Mapping[str, Any],
+                      textures: dict[str, TextureData]) -> MaterialData:
+    """glTF's default material (white, metallic 1, roughness 1) for primitives without one."""
+    names = []
+    for field, _ in TEXTURE_FIELDS:
+        default = _DEFAULT_FOR.get(field, "gltf_white_linear")
+        textures.setdefault(default, DEFAULT_TEXTURES[default])
+        names.append(default)
+    values = {"metallic": 1.0, "roughness": 1.0, "normal_scale": 1.0, "occlusion_strength": 1.0,
+              "emissive": (0.0, 0.0, 0.0, 1.0), **params}
+    return MaterialData(shader, [*names, *extra_textures], color=(1.0, 1.0, 1.0, 1.0), params=values)
