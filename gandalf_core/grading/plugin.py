@@ -55,6 +55,13 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     group.addoption("--grade-json", metavar="PATH", help="write the per-exercise score as JSON to PATH")
     group.addoption("--gradescope", metavar="PATH", help="write Gradescope's results.json format to PATH")
     group.addoption(
+        "--grade-only",
+        action="append",
+        default=[],
+        metavar="EXERCISE",
+        help="run only the graded tests of this exercise (repeatable; the mutation check uses it)",
+    )
+    group.addoption(
         "--grade-hard-timeout",
         type=float,
         default=0.0,
@@ -166,6 +173,19 @@ def _exercise_of(item: pytest.Item) -> dict[str, Any] | None:
         "exercise": str(name),
         "points": float(marker.kwargs.get("points", 1)),
     }
+
+
+def pytest_collection_modifyitems(session: pytest.Session, config: pytest.Config, items: list[pytest.Item]) -> None:
+    only = set(config.getoption("--grade-only") or ())
+    if not only:
+        return
+    keep, drop = [], []
+    for item in items:
+        info = _exercise_of(item)
+        (keep if info is not None and info["exercise"] in only else drop).append(item)
+    if drop:
+        config.hook.pytest_deselected(items=drop)
+        items[:] = keep
 
 
 def pytest_collection_finish(session: pytest.Session) -> None:
