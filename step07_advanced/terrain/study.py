@@ -15,10 +15,12 @@ and the scene's own distance-based level of detail (levels 1 to 16, ``lod_scale`
   true and the tessellated point projected with the tour's camera, over the points inside the view);
 * time: the median over ``--repeats`` of the frame time, each frame waited for with a one-pixel read-back (so
   the GPU's work — WebGPU's compute pass included — is inside the measurement); the first frames (compile,
-  upload) are not timed.
+  upload) are not timed; a setting stops repeating after ``--budget`` seconds (software tessellation of half a
+  million triangles takes many seconds per frame), with at least one frame timed.
 
-Writes ``terrain_study.json``, ``terrain_study.md`` (the table) and ``terrain_study.png`` (error against frame
-time) to ``--out``. Runs headless; prints progress.
+Writes ``terrain_study.json``, ``terrain_study.md`` (the table), ``terrain_study.png`` (error against frame
+time) and ``terrain_levels.png`` (the level each patch gets from the tour's camera) to ``--out``.
+Runs headless; prints progress.
 """
 
 from __future__ import annotations
@@ -91,8 +93,9 @@ def _to_pixels(points: np.ndarray, view_projection: np.ndarray, size: tuple[int,
     return (ndc + 1.0) * 0.5 * np.array(size, dtype=np.float64), inside
 
 
-def frame_time(backend: str, params, frames: int, repeats: int) -> float:
-    """Median seconds per frame over ``repeats`` frames (each waited for with a one-pixel read-back)."""
+def frame_time(backend: str, params, frames: int, repeats: int, budget: float) -> tuple[float, int]:
+    """Median seconds per frame over ``repeats`` frames (each waited for with a one-pixel read-back), fewer (at
+    least one) when they would take longer than ``budget`` seconds. Returns (median, frames timed)."""
     import importlib
 
     variant = importlib.import_module(f"{__package__}.{backend}")
@@ -100,16 +103,16 @@ def frame_time(backend: str, params, frames: int, repeats: int) -> float:
         app.run(frames=frames)  # compile, upload, first passes
         renderer = app.renderer
         renderer.read_pixel(0, 0)
-        times = []
-        for _ in range(repeats):
+        times: list[float] = []
+        while len(times) < repeats and (not times or sum(times) + times[-1] <= budget):
             start = time.perf_counter()
             app.run(frames=1)
             renderer.read_pixel(0, 0)
             times.append(time.perf_counter() - start)
-    return statistics.median(times)
+    return statistics.median(times), len(times)
 
 
-def run(out: Path, backends: list[str], quick: bool, repeats: int) -> dict:
+def run(out: Path, backends: list[str], levels: tuple[int, ...], repeats: int, budget: float) -> dict:
     from gandalf_core.math import look_at, perspective
 
     from . import scene
@@ -120,7 +123,7 @@ def run(out: Path, backends: list[str], quick: bool, repeats: int) -> dict:
     view_projection = perspective(scene.FOV, SIZE[0] / SIZE[1], 0.1, 100.0) @ look_at(eye, scene.TARGET)
     rows = []
     settings = [(f"uniform {level}", replace(scene.PARAMS, min_level=float(level), max_level=float(level)))
-                for level in (QUICK_LEVELS if quick else LEVELS)]
+                for level in levels]
     settings.append(("LOD 1-16", scene.PARAMS))
     for name, params in settings:
         start = time.perf_counter()
@@ -129,17 +132,19 @@ def run(out: Path, backends: list[str], quick: bool, repeats: int) -> dict:
         print(f"{name:10s}: {row['triangles']} triangles, largest error {row['max_error_world']:.4f} "
               f"world units, {row['max_error_pixels']:.2f} px ({time.perf_counter() - start:.1f} s)", flush=True)
         for backend in backends:
-            seconds = frame_time(backend, params, 3, repeats)
+            seconds, timed = frame_time(backend, params, 2, repeats, budget)
             row[f"{backend}_ms"] = 1000.0 * seconds
-            print(f"  {backend}: {1000.0 * seconds:.2f} ms per frame", flush=True)
+            row[f"{backend}_frames"] = timed
+            print(f"  {backend}: {1000.0 * seconds:.2f} ms per frame (median of {timed})", flush=True)
         rows.append(row)
-    result = {"study": "terrain", "size": SIZE, "repeats": repeats, "backends": backends,
+    result = {"study": "terrain", "size": SIZE, "repeats": repeats, "budget_s": budget, "backends": backends,
               "machine": platform.platform(), "processor": platform.processor() or platform.machine(),
               "reference": "the bilinear 16-bit heightfield (terrain_height) in float64", "rows": rows}
     out.mkdir(parents=True, exist_ok=True)
     (out / "terrain_study.json").write_text(json.dumps(result, indent=2) + "\n")
     (out / "terrain_study.md").write_text(markdown(result))
     plot(result, out / "terrain_study.png")
+    plot_levels(out / "terrain_levels.png")
     return result
 
 
@@ -190,16 +195,54 @@ def plot(result: dict, path: Path) -> None:
     plt.close(fig)
 
 
+def plot_levels(path: Path) -> None:
+    """The segments per patch side that the scene's LOD gives each patch from the tour's camera (a map seen
+    from above, the camera beyond the top edge)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from . import scene
+    from .heightfield import quantize
+    from .patches import patch_levels
+
+    params = scene.PARAMS
+    _outer, inner = patch_levels(quantize(scene.terrain_heights()), params, np.asarray(scene.EYE, dtype=np.float64))
+    segments = np.ceil(inner).reshape(params.patches, params.patches)
+    fig, ax = plt.subplots(figsize=(4.6, 4))
+    half = params.size / 2
+    image = ax.imshow(segments, origin="lower", extent=(-half, half, -half, half), cmap="viridis")
+    for (j, i), n in np.ndenumerate(segments):
+        x, z = -half + (i + 0.5) * params.size / params.patches, -half + (j + 0.5) * params.size / params.patches
+        ax.text(x, z, str(int(n)), ha="center", va="center", fontsize=6, color="white" if n < 9 else "black")
+    ax.plot([scene.EYE[0]], [min(scene.EYE[2], half - 0.3)], "rv", markersize=8)
+    ax.set_xlabel("world x")
+    ax.set_ylabel("world z (the camera looks towards -z)")
+    ax.set_title("segments per patch side (inner level)")
+    fig.colorbar(image, ax=ax)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m step07_advanced.terrain.study", description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", type=Path, required=True, help="folder for the JSON, markdown table and plot")
     parser.add_argument("--backends", nargs="+", choices=("opengl", "webgpu"), default=["opengl", "webgpu"])
     parser.add_argument("--quick", action="store_true", help="uniform levels 1, 4, 16 only, and fewer repeats")
+    parser.add_argument("--levels", type=int, nargs="+", default=None,
+                        help=f"the uniform levels (default {' '.join(map(str, LEVELS))})")
     parser.add_argument("--repeats", type=int, default=None, help="timed frames per setting (default 15, quick 5)")
+    parser.add_argument("--budget", type=float, default=60.0,
+                        help="seconds of timed frames per setting and API before it stops repeating (default 60)")
     args = parser.parse_args(argv)
     repeats = args.repeats or (5 if args.quick else 15)
-    result = run(args.out, args.backends, args.quick, repeats)
+    levels = tuple(args.levels) if args.levels else (QUICK_LEVELS if args.quick else LEVELS)
+    if any(not 1 <= level <= 64 for level in levels) or repeats < 1:
+        parser.error("levels must lie in [1, 64] and repeats be at least 1")
+    result = run(args.out, args.backends, levels, repeats, args.budget)
     print(markdown(result), end="")
     return 0
 
