@@ -57,6 +57,10 @@ class Renderer(ABC):
     def aspect(self) -> float:
         return self.width / self.height
 
+    def depth_range_for(self, reverse_z: bool) -> str:
+        """The NDC depth range a camera's projection must target (OpenGL switches to [0, 1] for reverse-Z)."""
+        return self.depth_range
+
     @abstractmethod
     def render(self, data: FrameData, assets: Assets) -> None:
         """Draw one frame: clear, upload the frame and light uniforms and the instance data once, draw

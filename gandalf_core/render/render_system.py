@@ -77,7 +77,7 @@ class RenderSystem(System):
             view = invert_affine(world)
         except ValueError as exc:
             raise ValueError(f"camera {self.scene.describe(entity)}: its world matrix is singular ({exc})") from None
-        projection = camera.projection_matrix(self.renderer.depth_range, self.renderer.aspect)
+        projection = camera.projection_matrix(self.renderer.depth_range_for(camera.reverse_z), self.renderer.aspect)
         return view, projection, world[:3, 3].copy(), camera.reverse_z
 
     def plan(self) -> None:
@@ -171,7 +171,7 @@ class RenderSystem(System):
         if self._plan_key != self._current_plan_key():
             self.plan()
         view, projection, eye, reverse_z = self.camera()
-        lo, hi = depth_range(self.renderer.depth_range)
+        lo, hi = depth_range(self.renderer.depth_range_for(reverse_z))
         depth_ends = (hi, lo) if reverse_z else (lo, hi)
         app = scene.app
         frame = pack_frame(view, projection, eye, app.clock.time if app is not None else 0.0, ts, depth_ends)

@@ -30,6 +30,7 @@ from ..frame import (
 )
 from ..patches import check_patch_draw
 from ..shader_files import SNIPPETS_DIR
+from . import raw_gl
 from .libs import (
     ENGINE_SAMPLERS,
     GL_SRGB8_ALPHA8,
@@ -74,6 +75,7 @@ class OpenGLRenderer(Renderer):
         self._vaos: dict[tuple[str, str], moderngl.VertexArray] = {}
         self._state: tuple[Any, ...] | None = None
         self._fbo: moderngl.Framebuffer | None = None
+        self._zero_to_one = False  # glClipControl's depth mode now (OpenGL's default: [-1, 1])
         # Filter across cube faces, as WebGPU always does (no seams in skyboxes and reflections).
         self.ctx.enable_direct(GL_TEXTURE_CUBE_MAP_SEAMLESS)
         self._create_targets()
@@ -86,6 +88,9 @@ class OpenGLRenderer(Renderer):
         # rgba8unorm-srgb does, so both backends store the same bytes.
         self._color = self.ctx.texture(size, 4, internal_format=GL_SRGB8_ALPHA8)
         self._depth = self.ctx.depth_texture(size)
+        if raw_gl.supported(self.ctx.version_code, self.ctx.extensions):
+            # 32-bit float depth, as WebGPU's depth32float: with reverse-Z the same precision in both APIs.
+            raw_gl.make_float_depth(self._depth.glo, *size)
         self._fbo = self.ctx.framebuffer([self._color], self._depth)
     # --8<-- [end:targets]
 
@@ -97,6 +102,18 @@ class OpenGLRenderer(Renderer):
     def _release_targets(self) -> None:
         for obj in (self._fbo, self._color, self._depth):
             obj.release()
+
+    def depth_range_for(self, reverse_z: bool) -> str:
+        """Reverse-Z frames use clip depth [0, 1] (glClipControl) and the float depth buffer: real precision."""
+        if reverse_z and not raw_gl.supported(self.ctx.version_code, self.ctx.extensions):
+            raise RuntimeError(f"reverse-Z needs OpenGL 4.5 or ARB_clip_control; this context is "
+                               f"{self.ctx.info.get('GL_VERSION', self.ctx.version_code)}")
+        return "webgpu" if reverse_z else "opengl"
+
+    def _clip_depth(self, zero_to_one: bool) -> None:
+        if zero_to_one != self._zero_to_one:
+            raw_gl.set_zero_to_one(zero_to_one)
+            self._zero_to_one = zero_to_one
 
     # --- a frame ------------------------------------------------------------------------------------
     def render(self, data: FrameData, assets: Assets) -> None:
@@ -119,7 +136,9 @@ class OpenGLRenderer(Renderer):
                                  "shadow pass cannot draw: turn off cast_shadows, or draw it with a blended material")
         sky = self._prepare_sky(data.skybox, assets) if data.skybox is not None else None
         if data.shadows:
+            self._clip_depth(False)  # the shadow map is projected for OpenGL's [-1, 1]
             self._draw_shadow_map(draws)
+        self._clip_depth(data.reverse_z)
         # --8<-- [start:clear]
         fbo = self._fbo
         fbo.use()
@@ -138,6 +157,7 @@ class OpenGLRenderer(Renderer):
             self._draw_batch(material.shader, mesh, batch)
         if sky is not None:
             self._draw_sky(sky, data.reverse_z)
+        self._clip_depth(False)  # overlays and other GL code expect OpenGL's default
         for overlay in self.overlays:
             overlay(self)
             self._state = None  # an overlay may change any GL state
@@ -252,7 +272,8 @@ class OpenGLRenderer(Renderer):
         if self.window is not None:
             # Copy the already-encoded bytes as they are: no second sRGB conversion on the way out.
             self.ctx.disable_direct(GL_FRAMEBUFFER_SRGB)
-            self.ctx.copy_framebuffer(self.ctx.screen, self._fbo)
+            raw_gl.blit_color(self._fbo.glo, self.ctx.screen.glo, (self.width, self.height),
+                                    self.ctx.screen.size)
             self.window.swap_buffers()
 
     def _vertex_array(self, shader: GLShader, mesh: GLMesh) -> moderngl.VertexArray:

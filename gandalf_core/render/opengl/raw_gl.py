@@ -1,0 +1,91 @@
+"""The few OpenGL calls moderngl does not wrap, made through ctypes: clip control and a float depth buffer for
+real reverse-Z, and a colour-only blit to the window.
+
+Clip control (OpenGL 4.5) sets clip-space depth to [0, 1] as in WebGPU.
+With OpenGL's default [-1, 1] clip depth, reverse-Z gains nothing: the mapping to the depth buffer adds 1 and
+halves, which rounds away the tiny depths near the far plane where reverse-Z keeps its precision. With
+``glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)`` and a float depth buffer, the clip depth is stored as it is, so
+one camera gives the same depths, and the same picture, in both APIs. The functions are loaded from the GL
+library (libglvnd dispatches them to the current context, EGL or GLX).
+"""
+
+from __future__ import annotations
+
+import ctypes
+import ctypes.util
+import functools
+from collections.abc import Callable
+
+GL_LOWER_LEFT = 0x8CA1
+GL_NEGATIVE_ONE_TO_ONE = 0x935E
+GL_ZERO_TO_ONE = 0x935F
+GL_TEXTURE_2D = 0x0DE1
+GL_TEXTURE_BINDING_2D = 0x8069
+GL_DEPTH_COMPONENT = 0x1902
+GL_DEPTH_COMPONENT32F = 0x8CAC
+GL_FLOAT = 0x1406
+GL_READ_FRAMEBUFFER = 0x8CA8
+GL_DRAW_FRAMEBUFFER = 0x8CA9
+GL_COLOR_BUFFER_BIT = 0x4000
+GL_NEAREST = 0x2600
+
+
+@functools.cache
+def _gl_function(name: str, argtypes: tuple[type, ...]) -> Callable[..., None]:
+    errors = []
+    for library in ("libGL.so.1", "libOpenGL.so.0", ctypes.util.find_library("GL")):
+        if not library:
+            continue
+        try:
+            function = getattr(ctypes.CDLL(library), name)
+        except (OSError, AttributeError) as exc:
+            errors.append(f"{library}: {exc}")
+            continue
+        function.argtypes = list(argtypes)
+        function.restype = None
+        return function
+    raise RuntimeError(f"reverse-Z in OpenGL needs {name}, which no GL library here exports "
+                       f"({'; '.join(errors) or 'no libGL found'})")
+
+
+def _gl_clip_control() -> Callable[[int, int], None]:
+    return _gl_function("glClipControl", (ctypes.c_uint, ctypes.c_uint))
+
+
+def make_float_depth(glo: int, width: int, height: int) -> None:
+    """Give the 2-D depth texture ``glo`` (made by moderngl, which only makes 24-bit ones) 32-bit float storage.
+
+    Reverse-Z keeps its precision only in a float depth buffer: fixed-point depth has the same steps everywhere.
+    """
+    get = _gl_function("glGetIntegerv", (ctypes.c_uint, ctypes.POINTER(ctypes.c_int)))
+    bind = _gl_function("glBindTexture", (ctypes.c_uint, ctypes.c_uint))
+    image = _gl_function("glTexImage2D", (ctypes.c_uint, ctypes.c_int, ctypes.c_int, ctypes.c_int, ctypes.c_int,
+                                          ctypes.c_int, ctypes.c_uint, ctypes.c_uint, ctypes.c_void_p))
+    previous = ctypes.c_int()
+    get(GL_TEXTURE_BINDING_2D, ctypes.byref(previous))
+    bind(GL_TEXTURE_2D, glo)
+    image(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, width, height, 0, GL_DEPTH_COMPONENT, GL_FLOAT, None)
+    bind(GL_TEXTURE_2D, previous.value)
+
+
+def supported(version_code: int, extensions: set[str]) -> bool:
+    """True when the context has clip control (OpenGL 4.5, or the ARB_clip_control extension)."""
+    return version_code >= 450 or "GL_ARB_clip_control" in extensions
+
+
+def set_zero_to_one(on: bool) -> None:
+    """Clip depth in [0, 1] (``on``) or OpenGL's default [-1, 1], for the context current on this thread."""
+    _gl_clip_control()(GL_LOWER_LEFT, GL_ZERO_TO_ONE if on else GL_NEGATIVE_ONE_TO_ONE)
+
+
+def blit_color(source_glo: int, target_glo: int, size: tuple[int, int], target_size: tuple[int, int]) -> None:
+    """Copy only the colour of framebuffer ``source_glo`` onto ``target_glo`` (0: the window).
+
+    moderngl's ``copy_framebuffer`` copies depth too, which fails (GL_INVALID_OPERATION, nothing copied) when the
+    two depth formats differ, as the float depth target and a window's 24-bit depth buffer do.
+    """
+    bind = _gl_function("glBindFramebuffer", (ctypes.c_uint, ctypes.c_uint))
+    blit = _gl_function("glBlitFramebuffer", (ctypes.c_int,) * 8 + (ctypes.c_uint, ctypes.c_uint))
+    bind(GL_READ_FRAMEBUFFER, source_glo)
+    bind(GL_DRAW_FRAMEBUFFER, target_glo)
+    blit(0, 0, *size, 0, 0, *target_size, GL_COLOR_BUFFER_BIT, GL_NEAREST)
