@@ -99,10 +99,15 @@ def glsl_source(prelude: str, expression: str, arrays: list[tuple[str, str, np.n
 def eval_glsl(prelude: str, expression: str, inputs: Inputs, output: str,
               include_dirs: Sequence[str | Path] = ()) -> np.ndarray:
     """``expression`` evaluated per element in a GLSL 4.30 compute shader; returns the ``output`` values."""
-    import moderngl
-
     count, arrays = _check(inputs, output)
     ctx = gl_context()
+    with ctx:  # another context (an app's, or wgpu's GL backend) may be current on this thread
+        return _run_glsl(ctx, count, arrays, prelude, expression, output, include_dirs)
+
+
+def _run_glsl(ctx, count, arrays, prelude, expression, output, include_dirs) -> np.ndarray:
+    import moderngl
+
     source = load_shader(glsl_source(prelude, expression, arrays, output), "compute", "glsl", include_dirs)
     try:
         program = ctx.compute_shader(source.text)
