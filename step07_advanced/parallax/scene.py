@@ -18,6 +18,7 @@ The study (``study.py``) renders the same view with all four strips read by one 
 
 from __future__ import annotations
 
+import functools
 import math
 from types import ModuleType
 
@@ -31,7 +32,7 @@ from gandalf_core.components import (
     MeshComponent,
 )
 from gandalf_core.math import look_at_rotation
-from gandalf_core.resources import MaterialData, ResourceError, plane
+from gandalf_core.resources import MaterialData, MeshData, ResourceError, TextureData, plane
 
 from ..showcase.textures import brick_textures
 from .reference import MAX_LAYERS
@@ -103,9 +104,20 @@ def parallax_material(method: str, height_scale: float = HEIGHT_SCALE, layers: i
     return MaterialData(SHADER, TEXTURES, color=COLOR, params=params, name=name)
 
 
+@functools.cache
+def _brick_maps(size: int) -> dict[str, TextureData]:
+    return brick_textures(size)
+
+
+@functools.cache
+def _strip_mesh() -> MeshData:
+    """The unit square every strip scales (one object, so one app can draw several of the scenes)."""
+    return plane(1.0, 1)
+
+
 def add_textures(scene: Scene, size: int = 256) -> None:
-    """The showcase's procedural brick maps (albedo, normal, height), ``size``² texels."""
-    for name, texture in brick_textures(size).items():
+    """The showcase's procedural brick maps (albedo, normal, height), ``size``² texels (made once per size)."""
+    for name, texture in _brick_maps(size).items():
         scene.assets.texture(name, texture)
 
 
@@ -134,17 +146,19 @@ def strip_positions() -> list[tuple[float, float, float]]:
 
 
 def build_scene(impl: ModuleType | None = None, *, methods: tuple[str, ...] = METHODS,
-                height_scale: float = HEIGHT_SCALE, layers: int = LAYERS) -> Scene:
+                height_scale: float = HEIGHT_SCALE, layers: int = LAYERS, name: str = "step07_parallax",
+                prefix: str = "bricks_") -> Scene:
     """The demo: four strips, top to bottom read by ``methods`` (normal, offset, steep, occlusion). ``impl``
-    (exercises or solutions) is the package the variant file built the shader with."""
+    (exercises or solutions) is the package the variant file built the shader with. The materials are called
+    ``prefix + method`` (one app can hold several such scenes when their prefixes differ)."""
     del impl  # the shader was built with it; the scene itself is the same for both
     if len(methods) != len(METHODS):
         raise ValueError(f"methods: expected {len(METHODS)} method names (one per strip), got {methods!r}")
-    scene = Scene("step07_parallax")
+    scene = Scene(name)
     add_textures(scene)
-    scene.assets.mesh("strip", plane(1.0, 1))
+    scene.assets.mesh("strip", _strip_mesh())
     for method, position in zip(methods, strip_positions(), strict=True):
-        material = parallax_material(method, height_scale, layers)
+        material = parallax_material(method, height_scale, layers, name=f"{prefix}{method}")
         scene.assets.material(material.name, material)
         scene.create_entity(InfoComponent(f"{LABELS[method]} strip"),
                             TransformComponent(position, scale=(STRIP[0], 1.0, STRIP[1])),
@@ -158,5 +172,8 @@ def build_scene(impl: ModuleType | None = None, *, methods: tuple[str, ...] = ME
 
 
 def study_scene(method: str, layers: int = LAYERS, height_scale: float = HEIGHT_SCALE) -> Scene:
-    """The demo's view with all four strips read by ``method`` (the study's scene: the same angles)."""
-    return build_scene(methods=(method,) * len(METHODS), height_scale=height_scale, layers=layers)
+    """The demo's view with all four strips read by ``method`` (the study's scene: the same angles). Its scene
+    and material names hold the method, layers and height_scale, so one app can switch between many of them."""
+    label = f"{method}_l{layers}_s{height_scale:g}"
+    return build_scene(methods=(method,) * len(METHODS), height_scale=height_scale, layers=layers,
+                       name=f"parallax study {label}", prefix=f"study_{label}_")
