@@ -19,8 +19,12 @@ def _hsv(hue, saturation, value, *, wrap_negative=True, offset=True, chroma_uses
     chroma = value * saturation if chroma_uses_value else saturation
     x = chroma * (1.0 - abs(math.fmod(sector, 2.0) - 1.0))
     r, g, b = [
-        (chroma, x, 0.0), (x, chroma, 0.0), (0.0, chroma, x),
-        (0.0, x, chroma), (x, 0.0, chroma), (chroma, 0.0, x),
+        (chroma, x, 0.0),
+        (x, chroma, 0.0),
+        (0.0, chroma, x),
+        (0.0, x, chroma),
+        (x, 0.0, chroma),
+        (chroma, 0.0, x),
     ][max(0, min(int(sector), 5))]
     m = value - chroma if offset else 0.0
     return (r + m, g + m, b + m)
