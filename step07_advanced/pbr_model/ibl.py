@@ -202,29 +202,29 @@ def irradiance_map(radiance: Radiance, size: int = IRRADIANCE_SIZE, source_size:
     return (cosines @ weighted / np.pi).reshape(6, size, size, 3)
 
 
+def split_sum(n_dot_v: np.ndarray, roughness: float, samples: int = LUT_SAMPLES) -> np.ndarray:
+    """(A, B) per n·v (S,) -> (S, 2) at one roughness: the mean over GGX-sampled half vectors of
+    ``(1 - Fc) G_vis`` and ``Fc G_vis`` with ``G_vis = G v·h / (n·h n·v)``, ``Fc = (1 - v·h)^5``, Smith-Schlick-GGX
+    with k = α/2 (α = roughness²)."""
+    nv = np.asarray(n_dot_v, dtype=np.float64)
+    alpha = roughness * roughness
+    k = alpha / 2.0
+    h = ggx_half_vectors(hammersley(samples), alpha)  # (M, 3), n = +z
+    v = np.stack([np.sqrt(1.0 - nv * nv), np.zeros_like(nv), nv], axis=-1)  # (S, 3)
+    v_dot_h = np.clip(v @ h.T, 0.0, 1.0)  # (S, M)
+    n_dot_l = np.clip(2.0 * v_dot_h * h[None, :, 2] - nv[:, None], 0.0, 1.0)  # l.z = 2(v·h)h.z - v.z
+    nv_col, nl = nv[:, None], np.maximum(n_dot_l, 1e-12)
+    g = nv_col / (nv_col * (1.0 - k) + k) * (nl / (nl * (1.0 - k) + k))
+    g_vis = np.where(n_dot_l > 0.0, g * v_dot_h / (h[None, :, 2] * nv_col), 0.0)
+    fc = (1.0 - v_dot_h) ** 5
+    return np.stack([((1.0 - fc) * g_vis).mean(axis=1), (fc * g_vis).mean(axis=1)], axis=-1)
+
+
 def brdf_lut(size: int = LUT_SIZE, samples: int = LUT_SAMPLES) -> np.ndarray:
     """(A, B) of the split sum, (size, size, 2) float64: row j at roughness (j + 0.5) / size, column i at
-    n·v = (i + 0.5) / size; ``∫ f_spec (n·l) dl = F0·A + B`` for a white environment (Smith, k = α/2)."""
-    nv = (np.arange(size) + 0.5) / size
-    xi = hammersley(samples)
-    out = np.zeros((size, size, 2))
-    for j in range(size):
-        roughness = (j + 0.5) / size
-        alpha = roughness * roughness
-        k = alpha / 2.0
-        h = ggx_half_vectors(xi, alpha)  # (M, 3), n = +z
-        v = np.stack([np.sqrt(1.0 - nv * nv), np.zeros(size), nv], axis=-1)  # (S, 3)
-        v_dot_h = np.clip(v @ h.T, 0.0, 1.0)  # (S, M)
-        n_dot_l = np.clip(2.0 * v_dot_h * h[None, :, 2] - nv[:, None], 0.0, 1.0)  # l.z = 2(v·h)h.z - v.z
-        lit = n_dot_l > 0.0
-
-        nv_col, nl = nv[:, None], np.maximum(n_dot_l, 1e-12)
-        g = nv_col / (nv_col * (1.0 - k) + k) * (nl / (nl * (1.0 - k) + k))
-        g_vis = np.where(lit, g * v_dot_h / (h[None, :, 2] * nv[:, None]), 0.0)
-        fc = (1.0 - v_dot_h) ** 5
-        out[j, :, 0] = ((1.0 - fc) * g_vis).mean(axis=1)
-        out[j, :, 1] = (fc * g_vis).mean(axis=1)
-    return out
+    n·v = (i + 0.5) / size; ``∫ f_spec (n·l) dl = F0·A + B`` for a white environment (:func:`split_sum`)."""
+    centres = (np.arange(size) + 0.5) / size
+    return np.stack([split_sum(centres, r, samples) for r in centres])
 
 
 def _encode_cube(linear: np.ndarray) -> np.ndarray:
