@@ -28,6 +28,9 @@ class WGPUImageFilter:
 
     def __init__(self, device: Any, impl: ModuleType) -> None:
         self.device = device
+        self.owns_device = False
+        adapter = getattr(device, "adapter", None)
+        self.device_name = str(getattr(adapter, "info", {}).get("device", "?")) if adapter is not None else "?"
         self.max_size = int(device.limits["max-texture-dimension-2d"])
         self.max_size_name = "maxTextureDimension2D"
         check_shared_memory(int(device.limits["max-compute-workgroup-storage-size"]),
@@ -63,6 +66,14 @@ class WGPUImageFilter:
         self.size: tuple[int, int] | None = None
         self.textures: dict[str, Any] = {}
         self.bind_groups: dict[str, Any] = {}
+
+    @classmethod
+    def standalone(cls, impl: ModuleType) -> WGPUImageFilter:
+        """A filter on its own device (the high-performance adapter, default limits), for the study and the tests."""
+        adapter = wgpu.gpu.request_adapter_sync(power_preference="high-performance")
+        flt = cls(adapter.request_device_sync(), impl)
+        flt.owns_device = True
+        return flt
 
     def _pipeline(self, kernel: str, impl: ModuleType, kind: str | None, layout: str | None = None) -> Any:
         src = kernel_source("webgpu", kernel, impl, None if kind is None else FORMATS["webgpu"][kind])
@@ -206,3 +217,5 @@ class WGPUImageFilter:
         for buffer in (self.weights, *self.params.values()):
             buffer.destroy()
         self.textures, self.bind_groups, self.size = {}, {}, None
+        if self.owns_device:
+            self.device.destroy()

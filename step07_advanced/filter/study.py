@@ -42,23 +42,16 @@ def taps(method: str, size: int, radius: int) -> int:
 
 
 def _open(backend: str):
-    """A headless app of ``backend`` and the filter on its context/device (the reference solution's shaders)."""
-    from gandalf_core import Application
+    """The filter of ``backend`` on its own headless context/device, with the reference solution's shaders."""
     from step07_advanced import solutions
 
-    app = Application(backend, 8, 8, headless=True)
     if backend == "opengl":
         from .compute_gl import GLImageFilter
 
-        flt = GLImageFilter(app.renderer.ctx, solutions)
-        device = str(app.renderer.ctx.info.get("GL_RENDERER", "?"))
-    else:
-        from .compute_wgpu import WGPUImageFilter
+        return GLImageFilter.standalone(solutions)
+    from .compute_wgpu import WGPUImageFilter
 
-        flt = WGPUImageFilter(app.renderer.device, solutions)
-        info = getattr(app.renderer.device, "adapter", None)
-        device = str(getattr(info, "info", {}).get("device", "?")) if info is not None else "?"
-    return app, flt, device
+    return WGPUImageFilter.standalone(solutions)
 
 
 def measure(flt, image: np.ndarray, expected255: np.ndarray, method: str, radius: int, repeats: int) -> dict:
@@ -83,7 +76,8 @@ def run_study(backends: list[str], sizes: tuple[int, ...], radii: tuple[int, ...
     devices = {}
     expected: dict[tuple[int, int], np.ndarray] = {}
     for backend in backends:
-        app, flt, devices[backend] = _open(backend)
+        flt = _open(backend)
+        devices[backend] = flt.device_name
         print(f"[{backend}] {devices[backend]}", flush=True)
         try:
             for size in sizes:
@@ -105,7 +99,6 @@ def run_study(backends: list[str], sizes: tuple[int, ...], radii: tuple[int, ...
                         rows.append(row)
         finally:
             flt.release()
-            app.close()
     return {"rows": rows, "devices": devices, "host": platform.platform(), "methods": list(METHODS),
             "reference": "float64 numpy separable Gaussian (sigma = radius / 2), clamp-to-edge; errors in 8-bit steps",
             "time": "median of the repeats: dispatch of the whole filter + wait (GL finish / WebGPU 4-byte read-back)",

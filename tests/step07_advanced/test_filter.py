@@ -21,7 +21,6 @@ from types import ModuleType, SimpleNamespace
 import numpy as np
 import pytest
 
-from gandalf_core import Application
 from gandalf_core.testing import psnr
 from step07_advanced import solutions
 from step07_advanced.filter import kernels, reference
@@ -42,25 +41,28 @@ HINT = {
 
 # --- filters on headless apps, one app per API for the whole module ---------------------------------------
 class _Filters:
+    """One headless context (OpenGL 4.3+) and one device (WebGPU) for the module, shared by the filters on them."""
+
     def __init__(self) -> None:
-        self.apps: dict[str, Application] = {}
+        self.base: dict[str, object] = {}
         self.filters: dict[tuple[str, str], object] = {}
 
     def get(self, backend: str, impl: ModuleType | SimpleNamespace, keep: bool = True):
         key = (backend, str(impl_shader_dir(impl)))
         if key in self.filters:
             return self.filters[key]
-        if backend not in self.apps:
-            self.apps[backend] = Application(backend, 8, 8, headless=True)
-        app = self.apps[backend]
         if backend == "opengl":
             from step07_advanced.filter.compute_gl import GLImageFilter
 
-            flt = GLImageFilter(app.renderer.ctx, impl)
+            if backend not in self.base:
+                self.base[backend] = GLImageFilter.standalone(solutions)
+            flt = GLImageFilter(self.base[backend].ctx, impl)
         else:
             from step07_advanced.filter.compute_wgpu import WGPUImageFilter
 
-            flt = WGPUImageFilter(app.renderer.device, impl)
+            if backend not in self.base:
+                self.base[backend] = WGPUImageFilter.standalone(solutions)
+            flt = WGPUImageFilter(self.base[backend].device, impl)
         if keep:
             self.filters[key] = flt
         return flt
@@ -68,8 +70,8 @@ class _Filters:
     def close(self) -> None:
         for flt in self.filters.values():
             flt.release()
-        for app in self.apps.values():
-            app.close()
+        for flt in self.base.values():
+            flt.release()
 
 
 @pytest.fixture(scope="module")
