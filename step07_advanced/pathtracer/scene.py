@@ -498,3 +498,29 @@ def tonemap_np(mean: np.ndarray, exposure: float = 1.0) -> np.ndarray:
     return np.clip((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0)
 
 
+
+
+def rng_seed_np(pixel: np.ndarray, sample_index: int, seed: int) -> np.ndarray:
+    """The shaders' ``rng_seed`` on uint32 arrays."""
+    inner = pcg_hash_np(np.uint32(sample_index & 0xFFFFFFFF) ^ pcg_hash_np(np.uint32(seed)))
+    return pcg_hash_np(np.asarray(pixel, np.uint32) ^ inner)
+
+
+def rng_next_np(state: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(new state, number in [0, 1)) as the shaders' ``rng_next``."""
+    state = pcg_hash_np(state)
+    return state, (state >> np.uint32(8)).astype(np.float64) / 16777216.0
+
+
+def camera_rays_np(packed: PackedScene, width: int, height: int, sample_index: int) -> np.ndarray:
+    """The unit directions (height, width, 3) of sample ``sample_index``'s camera rays, float64: the kernel's
+    jitter (its first two random numbers per pixel) and pinhole camera."""
+    y, x = np.mgrid[0:height, 0:width]
+    state = rng_seed_np((y * width + x).astype(np.uint32), sample_index, packed.seed)
+    state, jx = rng_next_np(state)
+    state, jy = rng_next_np(state)
+    sx = 2.0 * (x + jx) / width - 1.0
+    sy = 1.0 - 2.0 * (y + jy) / height
+    cam = packed.camera
+    d = cam[3, :3] + sx[..., None] * cam[1, :3] + sy[..., None] * cam[2, :3]
+    return d / np.linalg.norm(d, axis=-1, keepdims=True)
