@@ -8,8 +8,10 @@ and the tiled separable blur (the same passes reading a tile + apron from workgr
 
 * the error of the 8-bit result against the float64 numpy reference (``reference.blur``, clamp-to-edge): the
   largest and the RMS difference in 8-bit steps (0.5 is perfect rounding);
-* the GPU time: the median over ``--repeats`` runs of one dispatch of the whole filter (weights + passes) followed
-  by a wait (``ctx.finish()`` in OpenGL, a 4-byte read-back in WebGPU), after one warm-up run.
+* the GPU time: the median over ``--repeats`` runs of ``--batch`` dispatches of the whole filter (weights + passes)
+  followed by one wait (``ctx.finish()`` in OpenGL, a 4-byte read-back in WebGPU), divided by ``--batch``, after
+  one warm-up run. With ``--batch 1`` a fast GPU mostly measures the wait (about 0.25 ms for WebGPU's read-back);
+  a larger batch measures the throughput.
 
 Runs whose tap count (pixels · taps per pixel) exceeds ``--max-taps`` are skipped (the naive kernel at large radii
 takes minutes on a software rasteriser); pass ``--max-taps 0`` for no limit. Writes ``DIR/filter_study.json``,
@@ -54,8 +56,9 @@ def _open(backend: str):
     return WGPUImageFilter.standalone(solutions)
 
 
-def measure(flt, image: np.ndarray, expected255: np.ndarray, method: str, radius: int, repeats: int) -> dict:
-    """Error (8-bit steps) and median time (ms) of one method on one image."""
+def measure(flt, image: np.ndarray, expected255: np.ndarray, method: str, radius: int, repeats: int,
+            batch: int = 1) -> dict:
+    """Error (8-bit steps) and median time per dispatch (ms) of one method on one image."""
     flt.upload(image)
     flt.dispatch(method, radius)  # warm-up (first use compiles/allocates in some drivers)
     got = flt.read().astype(np.float64)
@@ -63,15 +66,16 @@ def measure(flt, image: np.ndarray, expected255: np.ndarray, method: str, radius
     times = []
     for _ in range(repeats):
         start = time.perf_counter()
-        flt.dispatch(method, radius)
+        for _ in range(batch):
+            flt.dispatch(method, radius)
         flt.finish()
-        times.append(time.perf_counter() - start)
+        times.append((time.perf_counter() - start) / batch)
     return {"max_error": float(error.max()), "rms_error": float(np.sqrt(np.mean(error**2))),
-            "time_ms": 1000.0 * statistics.median(times), "repeats": repeats}
+            "time_ms": 1000.0 * statistics.median(times), "repeats": repeats, "batch": batch}
 
 
 def run_study(backends: list[str], sizes: tuple[int, ...], radii: tuple[int, ...], repeats: int,
-              max_taps: float) -> dict:
+              max_taps: float, batch: int = 1) -> dict:
     rows = []
     devices = {}
     expected: dict[tuple[int, int], np.ndarray] = {}
@@ -93,7 +97,7 @@ def run_study(backends: list[str], sizes: tuple[int, ...], radii: tuple[int, ...
                             print(f"[{backend}] {size}² r={radius:<2} {method:<9} skipped ({row['taps']:.2g} taps)",
                                   flush=True)
                         else:
-                            row.update(measure(flt, image, expected[(size, radius)], method, radius, repeats))
+                            row.update(measure(flt, image, expected[(size, radius)], method, radius, repeats, batch))
                             print(f"[{backend}] {size}² r={radius:<2} {method:<9} {row['time_ms']:9.3f} ms  "
                                   f"max {row['max_error']:.3f}  rms {row['rms_error']:.3f}", flush=True)
                         rows.append(row)
@@ -101,7 +105,8 @@ def run_study(backends: list[str], sizes: tuple[int, ...], radii: tuple[int, ...
             flt.release()
     return {"rows": rows, "devices": devices, "host": platform.platform(), "methods": list(METHODS),
             "reference": "float64 numpy separable Gaussian (sigma = radius / 2), clamp-to-edge; errors in 8-bit steps",
-            "time": "median of the repeats: dispatch of the whole filter + wait (GL finish / WebGPU 4-byte read-back)",
+            "time": f"median of the repeats of {batch} dispatch(es) of the whole filter + one wait (GL finish / "
+                    f"WebGPU 4-byte read-back), per dispatch",
             "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())}
 
 
@@ -163,6 +168,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--backends", nargs="+", default=["opengl", "webgpu"], choices=["opengl", "webgpu"])
     parser.add_argument("--quick", action="store_true", help=f"sizes {QUICK_SIZES} and radii {QUICK_RADII} only")
     parser.add_argument("--repeats", type=int, default=None, help="timed runs per case (default 5, quick 3)")
+    parser.add_argument("--batch", type=int, default=1,
+                        help="dispatches per wait; the time is per dispatch (default 1: includes the wait)")
     parser.add_argument("--max-taps", type=float, default=3e8,
                         help="skip cases with more texel reads than this (default 3e8; 0 = no limit)")
     args = parser.parse_args(argv)
@@ -171,7 +178,9 @@ def main(argv: list[str] | None = None) -> int:
     repeats = args.repeats or (3 if args.quick else 5)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    result = run_study(args.backends, sizes, radii, repeats, args.max_taps)
+    if args.repeats is not None and args.repeats < 1 or args.batch < 1:
+        parser.error("--repeats and --batch must be >= 1")
+    result = run_study(args.backends, sizes, radii, repeats, args.max_taps, args.batch)
     (out / "filter_study.json").write_text(json.dumps(result, indent=1))
     table = markdown(result)
     (out / "filter_study.md").write_text(table)
