@@ -4,7 +4,7 @@ encoding into an RGBA8 texture, and float64 twins of the exercise functions (``t
 
 Encoding: a height h in [0, 1] is stored as the 16-bit integer q = round(h · 65535), its high byte in red and its
 low byte in green (blue 0, alpha 255), and decoded in the shaders as (256 · R + G) / 65535 with R, G the bytes.
-8 bits alone would give visible terraces (3 world units / 255 ≈ 1.2 cm steps lit like cliffs); 16 bits are
+8 bits alone would give visible terraces (3.2 world units / 255 ≈ 1.25 cm steps lit like cliffs); 16 bits are
 smooth. The shaders read texels with ``texelFetch`` / ``textureLoad`` and interpolate themselves (the exercise),
 so no filtering hardware touches the split bytes.
 """
