@@ -21,8 +21,8 @@ float tess_level(vec3 a, vec3 b, vec3 eye, vec3 lod) {
 
 // --8<-- [start:terrain_height]
 // The height in [0, 1] at uv (u, v in [0, 1]) by bilinear interpolation of the texels, whose centres lie at
-// uv = (texel + 0.5) / N. Clamp addressing: texel indices outside [0, N - 1] read the nearest edge texel
-// (never call heightmap_texel out of range), so any uv (also < 0 or > 1) gives a value.
+// uv = (texel + 0.5) / N (u picks the column, v the row). Clamp addressing: texel indices outside [0, N - 1]
+// read the nearest edge texel (never call heightmap_texel out of range), so any uv (also < 0 or > 1) gives a value.
 float terrain_height(vec2 uv) {
     int n = heightmap_size();
     vec2 st = uv * float(n) - 0.5;

@@ -21,8 +21,8 @@ fn tess_level(a: vec3<f32>, b: vec3<f32>, eye: vec3<f32>, lod: vec3<f32>) -> f32
 
 // --8<-- [start:terrain_height]
 // The height in [0, 1] at uv (u, v in [0, 1]) by bilinear interpolation of the texels, whose centres lie at
-// uv = (texel + 0.5) / N. Clamp addressing: texel indices outside [0, N - 1] read the nearest edge texel
-// (never call heightmap_texel out of range), so any uv (also < 0 or > 1) gives a value.
+// uv = (texel + 0.5) / N (u picks the column, v the row). Clamp addressing: texel indices outside [0, N - 1]
+// read the nearest edge texel (never call heightmap_texel out of range), so any uv (also < 0 or > 1) gives a value.
 fn terrain_height(uv: vec2<f32>) -> f32 {
     let n = heightmap_size();
     let st = uv * f32(n) - 0.5;
