@@ -13,8 +13,14 @@ def display_available() -> bool:
     return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
 
 
+#: OpenGL core versions a window asks for, newest first (the renderer needs 3.3; step 07 needs 4.x).
+GL_VERSIONS = ((4, 6), (4, 5), (4, 3), (4, 1), (3, 3))
+
+
 class Window:
-    """A window with a GL 3.3 core context (``api='opengl'``) or none (``api='webgpu'``: wgpu makes a surface)."""
+    """A window with the newest GL core context the driver gives, 4.6 down to 3.3 (``api='opengl'``: some drivers
+    give exactly the version asked for, and tessellation, compute and clip control need 4.x), or none
+    (``api='webgpu'``: wgpu makes a surface)."""
 
     def __init__(self, width: int, height: int, title: str, api: str, input: Input) -> None:
         import glfw
@@ -22,15 +28,24 @@ class Window:
         self._glfw = glfw
         if not _glfw_ready(glfw):
             raise RuntimeError("glfw could not initialise: is a display available?")
-        glfw.default_window_hints()  # hints persist between windows: start from a clean slate
-        if api == "opengl":
-            glfw.window_hint(glfw.CONTEXT_VERSION_MAJOR, 3)
-            glfw.window_hint(glfw.CONTEXT_VERSION_MINOR, 3)
-            glfw.window_hint(glfw.OPENGL_PROFILE, glfw.OPENGL_CORE_PROFILE)
-            glfw.window_hint(glfw.OPENGL_FORWARD_COMPAT, True)
-        else:
-            glfw.window_hint(glfw.CLIENT_API, glfw.NO_API)
-        self.handle = glfw.create_window(width, height, title, None, None)
+        self.handle = None
+        for major, minor in (GL_VERSIONS if api == "opengl" else [(0, 0)]):
+            glfw.default_window_hints()  # hints persist between windows: start from a clean slate
+            if api == "opengl":
+                glfw.window_hint(glfw.CONTEXT_VERSION_MAJOR, major)
+                glfw.window_hint(glfw.CONTEXT_VERSION_MINOR, minor)
+                glfw.window_hint(glfw.OPENGL_PROFILE, glfw.OPENGL_CORE_PROFILE)
+                glfw.window_hint(glfw.OPENGL_FORWARD_COMPAT, True)
+            else:
+                glfw.window_hint(glfw.CLIENT_API, glfw.NO_API)
+            reporting = glfw.ERROR_REPORTING
+            glfw.ERROR_REPORTING = "ignore"  # a version the driver refuses is expected: the next one is tried
+            try:
+                self.handle = glfw.create_window(width, height, title, None, None)
+            finally:
+                glfw.ERROR_REPORTING = reporting
+            if self.handle:
+                break
         if not self.handle:
             raise RuntimeError(f"glfw could not open a {width}x{height} {api} window")
         if api == "opengl":

@@ -48,6 +48,26 @@ GL_FRAMEBUFFER_SRGB = 0x8DB9
 GL_TEXTURE_CUBE_MAP_SEAMLESS = 0x884F
 
 
+#: OpenGL versions an offscreen context asks for, newest first: some drivers (NVIDIA's EGL) give exactly the version
+#: asked for, and step 07 needs 4.x (tessellation 4.0, compute and storage buffers 4.3, clip control 4.5).
+GL_VERSIONS = (460, 450, 430, 410, 330)
+
+
+_found_version: list[int] = []  # the version that worked first, so later contexts ask for it straight away
+
+
+def _standalone_context() -> moderngl.Context:
+    """The newest headless (EGL) context the driver gives, 4.6 down to the renderer's minimum, 3.3."""
+    for version in (_found_version or list(GL_VERSIONS[:-1])):
+        try:
+            ctx = moderngl.create_standalone_context(backend="egl", require=version)
+        except Exception:  # noqa: BLE001 - glcontext raises plain Exceptions for an unsupported version
+            continue
+        _found_version[:] = [version]
+        return ctx
+    return moderngl.create_standalone_context(backend="egl", require=GL_VERSIONS[-1])
+
+
 class OpenGLRenderer(Renderer):
     """moderngl render context. ``window`` is a :class:`gandalf_core.app.window.Window` or None (headless)."""
 
@@ -58,7 +78,7 @@ class OpenGLRenderer(Renderer):
         super().__init__(width, height)
         self.window = window
         if window is None:
-            self.ctx = moderngl.create_standalone_context(backend="egl", require=330)
+            self.ctx = _standalone_context()
         else:
             self.ctx = moderngl.create_context(require=330)
         self.textures = TextureLib(self.ctx, self.stats)
