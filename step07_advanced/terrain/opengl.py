@@ -63,8 +63,10 @@ class GLTerrain:
 
 
 def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480,
-               params: TerrainParams = PARAMS, **scene: Any) -> Application:
-    impl = load_impl(STEP, student)
+               params: TerrainParams = PARAMS, impl: ModuleType | None = None, **scene: Any) -> Application:
+    """The terrain app; ``params`` changes the terrain's levels, ``impl`` (a package holding ``terrain.*``)
+    overrides ``student``, ``scene`` goes to :func:`build_scene` (eye, target, heights)."""
+    impl = impl if impl is not None else load_impl(STEP, student)
     app = Application("opengl", width, height, title="step07 · terrain · OpenGL", headless=headless,
                       fixed_dt=1 / 60)
     app.add_scene(build_scene(impl, GLTerrain(app, impl, params), **scene))

@@ -29,22 +29,20 @@ NEAR_EYE, NEAR_TARGET = (0.0, 2.6, 6.0), (0.0, 0.8, -2.0)
 FAR_EYE, FAR_TARGET = (0.0, 14.0, 30.0), (0.0, 0.0, 0.0)
 
 
-def render(backend: str, impl_student: bool, size=SMALL, frames: int = 2, **scene_args) -> np.ndarray:
-    with VARIANT[backend].create_app(headless=True, student=impl_student, width=size[0], height=size[1],
-                                     **scene_args) as app:
+def render(backend: str, impl, size=SMALL, frames: int = 2, **scene_args) -> np.ndarray:
+    with VARIANT[backend].create_app(headless=True, impl=impl, width=size[0], height=size[1], **scene_args) as app:
         app.run(frames=frames)
         return app.capture()
 
 
-def _student(impl) -> bool:
-    return impl.__name__.endswith("exercises")
+REFERENCE = load_impl("step07_advanced", False)
 
 
 # --- graded ----------------------------------------------------------------------------------------------------
 @pytest.mark.exercise("terrain_height")
 def test_terrain_picture_matches_the_reference(impl, backend):
-    got = render(backend, _student(impl))
-    expected = render(backend, False)
+    got = render(backend, impl)
+    expected = render(backend, REFERENCE)
     value = psnr(got, expected)
     assert value >= 35.0, (f"{backend}: the terrain differs from the reference picture (PSNR {value:.1f} dB < 35 dB; "
                            f"mean colour got {got[..., :3].mean((0, 1)).round(1).tolist()}, expected "
@@ -60,9 +58,9 @@ def _predicted(eye) -> tuple[np.ndarray, np.ndarray]:
     return patches.patch_levels(FLAT, scene.PARAMS, np.asarray(eye, dtype=np.float64))
 
 
-def gl_triangles(impl_student: bool, eye, target) -> int:
+def gl_triangles(impl, eye, target) -> int:
     """Triangles the OpenGL tessellator generated for one frame (a GL_PRIMITIVES_GENERATED query)."""
-    with opengl.create_app(headless=True, student=impl_student, width=96, height=72, eye=eye,
+    with opengl.create_app(headless=True, impl=impl, width=96, height=72, eye=eye,
                            target=target, heights=FLAT) as app:
         app.run(frames=1)
         query = app.renderer.ctx.query(primitives=True)
@@ -71,9 +69,9 @@ def gl_triangles(impl_student: bool, eye, target) -> int:
         return int(query.primitives)
 
 
-def wgpu_segments(impl_student: bool, eye, target) -> np.ndarray:
+def wgpu_segments(impl, eye, target) -> np.ndarray:
     """Segments per patch side (n) that WebGPU's compute pass chose, read back from its levels buffer."""
-    with webgpu.create_app(headless=True, student=impl_student, width=96, height=72, eye=eye,
+    with webgpu.create_app(headless=True, impl=impl, width=96, height=72, eye=eye,
                            target=target, heights=FLAT) as app:
         app.run(frames=1)
         tessellator = app.scene.get_system(scene.TessellationSystem).backend.tessellator
@@ -82,18 +80,17 @@ def wgpu_segments(impl_student: bool, eye, target) -> np.ndarray:
 
 @pytest.mark.exercise("terrain_lod")
 def test_tessellation_follows_the_camera(impl, backend):
-    student = _student(impl)
     counts = {}
     for name, eye, target in (("near", NEAR_EYE, NEAR_TARGET), ("far", FAR_EYE, FAR_TARGET)):
         outer, inner = _predicted(eye)
         if backend == "opengl":
-            got, expected = gl_triangles(student, eye, target), patches.gl_triangle_count(outer, inner)
+            got, expected = gl_triangles(impl, eye, target), patches.gl_triangle_count(outer, inner)
             assert abs(got - expected) <= 0.01 * expected, (
                 f"camera {name} at {eye}: OpenGL generated {got} triangles, the reference levels give {expected}. "
                 "Hint: tess_level = clamp(scale * |b - a| / distance(eye, midpoint), min, max)")
             counts[name] = got
         else:
-            got = wgpu_segments(student, eye, target)
+            got = wgpu_segments(impl, eye, target)
             expected = np.ceil(inner).astype(np.int64)
             wrong = np.flatnonzero(got != expected)
             assert wrong.size <= 0.01 * got.size, (
@@ -106,8 +103,8 @@ def test_tessellation_follows_the_camera(impl, backend):
 
 # --- the engine side (not graded) ---------------------------------------------------------------------------------
 def test_both_apis_agree_on_the_tour_picture():
-    gl = render("opengl", False, size=(640, 480), frames=scene.TOUR_FRAMES)
-    wg = render("webgpu", False, size=(640, 480), frames=scene.TOUR_FRAMES)
+    gl = render("opengl", REFERENCE, size=(640, 480), frames=scene.TOUR_FRAMES)
+    wg = render("webgpu", REFERENCE, size=(640, 480), frames=scene.TOUR_FRAMES)
     value = psnr(gl, wg)
     assert value >= 35.0, f"OpenGL and WebGPU pictures differ: PSNR {value:.1f} dB < 35 dB"
 
