@@ -44,7 +44,7 @@ class WGPUPathTracer:
             compute={"module": module, "entry_point": "cs_main"}, label="path tracer")
         self.device, self.accum, self.width, self.height = device, accum, int(width), int(height)
         usage = wgpu.BufferUsage
-        self.params = device.create_buffer(size=PARAMS_BYTES, usage=usage.UNIFORM | usage.COPY_DST)
+        self.params = device.create_buffer(size=PARAMS_BYTES, usage=usage.UNIFORM | usage.COPY_DST | usage.COPY_SRC)
         self.buffers: list[Any] = []
         self.bind_group = None
         self.packed: PackedScene | None = None
