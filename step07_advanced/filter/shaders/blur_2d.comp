@@ -1,5 +1,5 @@
 #version 430
-// The naive 2-D convolution: (2r + 1)² taps per pixel with the weights w(i) * w(j), clamp-to-edge.
+// The naive 2-D convolution: (2r + 1)^2 taps per pixel with the weights w(i) * w(j), clamp-to-edge.
 layout(local_size_x = 16, local_size_y = 16) in;
 #include "io.glsl"
 layout(OUT_FORMAT, binding = 0) writeonly uniform image2D u_dst;

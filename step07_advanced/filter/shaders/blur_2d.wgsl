@@ -1,4 +1,4 @@
-// The naive 2-D convolution: (2r + 1)² taps per pixel with the weights w(i) * w(j), clamp-to-edge.
+// The naive 2-D convolution: (2r + 1)^2 taps per pixel with the weights w(i) * w(j), clamp-to-edge.
 #include "io.wgsl"
 
 @compute @workgroup_size(16, 16)
