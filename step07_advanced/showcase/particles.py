@@ -12,6 +12,7 @@ A particle is two vec4 (32 bytes, the same in std430 and WGSL): ``position.xyz``
 from __future__ import annotations
 
 import uuid
+import warnings
 from dataclasses import dataclass
 from typing import Any, Protocol
 
@@ -143,16 +144,43 @@ class ParticleComponent(Component):
 
 
 class ParticleSystem(System):
-    """Steps the kernel once per frame (the seed changes every step) and moves every particle's cube."""
+    """Steps the kernel with a fixed time step (``params.dt``) as often as the frame's time asks, then moves every
+    particle's cube: the fountain runs at the same speed at 30, 60 or 144 frames a second.
+
+    The steps owed carry over between frames. After a long hitch at most :attr:`max_steps` steps run in one frame
+    (so a stall cannot snowball); the simulated time left out is added to :attr:`dropped_time` and reported once
+    with a warning, never dropped silently. The seed changes every step.
+    """
+
+    #: The most kernel steps one frame may run (catching up after a slow frame).
+    max_steps = 8
 
     def __init__(self, kernel: ParticleKernel, params: SimParams = SimParams()) -> None:
         super().__init__((ParticleComponent, TransformComponent))
         self.kernel, self.params, self.steps = kernel, params, 0
+        self.owed = 0.0  # simulated seconds not stepped yet (less than one step, unless a frame hit max_steps)
+        self.dropped_time = 0.0
+        self._positions: np.ndarray | None = None
 
     def on_update_system(self, ts: float) -> None:
-        self.kernel.step(SimParams(**{**self.params.__dict__, "seed": self.steps}))
-        self.steps += 1
-        self._positions = self.kernel.read()[:, 0, :3].astype(np.float64)
+        dt = self.params.dt
+        self.owed += ts
+        steps = int(self.owed / dt + 1e-6)  # the tolerance keeps 60 steps of 1/60 s from rounding down to 59
+        if steps > self.max_steps:
+            dropped = (steps - self.max_steps) * dt
+            if self.dropped_time == 0.0:
+                warnings.warn(f"particles: a frame of {ts:.3f} s needs {steps} steps of {dt:.4f} s; running "
+                              f"{self.max_steps} and dropping {dropped:.3f} s of simulated time "
+                              "(ParticleSystem.dropped_time adds it up)", stacklevel=2)
+            self.dropped_time += dropped
+            self.owed -= dropped
+            steps = self.max_steps
+        for _ in range(steps):
+            self.kernel.step(SimParams(**{**self.params.__dict__, "seed": self.steps}))
+            self.steps += 1
+        self.owed = max(0.0, self.owed - steps * dt)
+        if steps or self._positions is None:
+            self._positions = self.kernel.read()[:, 0, :3].astype(np.float64)
         super().on_update_system(ts)  # then on_update_entity for every particle's cube
 
     def on_destroy_system(self) -> None:

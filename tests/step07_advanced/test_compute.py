@@ -103,3 +103,45 @@ def test_dead_particles_are_born_at_the_emitter_within_the_launch_cone():
     assert np.allclose(out[:, 0, :3], (1.0, 2.0, 3.0))
     assert np.all((out[:, 0, 3] >= 1.0) & (out[:, 0, 3] <= 2.0))
     assert np.all(np.abs(out[:, 1, [0, 2]]) <= 1.2) and np.all((out[:, 1, 1] >= 5.0) & (out[:, 1, 1] <= 6.5))
+
+
+# --- the fountain's time step: the same simulated time at any frame rate ------------------------------
+class _CountingKernel:
+    """Counts steps; holds a fixed state (the system reads positions after stepping)."""
+
+    def __init__(self) -> None:
+        self.steps = 0
+
+    def step(self, params: SimParams) -> None:
+        self.steps += 1
+
+    def read(self) -> np.ndarray:
+        return np.zeros((1, 2, 4), dtype=np.float32)
+
+    def release(self) -> None:
+        pass
+
+
+@pytest.mark.parametrize("fps", [30, 60, 120, 144, 47])
+def test_the_fountain_simulates_one_second_per_second_at_any_frame_rate(fps):
+    from step07_advanced.showcase.particles import ParticleSystem
+
+    kernel = _CountingKernel()
+    system = ParticleSystem(kernel, SimParams())
+    for _ in range(fps * 3):  # three seconds of frames
+        system.on_update_system(1.0 / fps)
+    simulated = kernel.steps * SimParams().dt + system.owed
+    assert abs(simulated - 3.0) < 1e-9, f"{fps} fps: {simulated} simulated seconds in 3 s"
+    assert abs(kernel.steps * SimParams().dt - 3.0) <= SimParams().dt
+    assert system.dropped_time == 0.0
+
+
+def test_a_hitch_is_capped_and_reported():
+    from step07_advanced.showcase.particles import ParticleSystem
+
+    kernel = _CountingKernel()
+    system = ParticleSystem(kernel, SimParams())
+    with pytest.warns(UserWarning, match="dropping"):
+        system.on_update_system(1.0)  # one frame of a whole second: 60 steps owed
+    assert kernel.steps == ParticleSystem.max_steps
+    assert abs(kernel.steps * SimParams().dt + system.dropped_time + system.owed - 1.0) < 1e-9
