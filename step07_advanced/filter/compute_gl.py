@@ -16,7 +16,7 @@ import moderngl
 import numpy as np
 
 from .kernels import MAX_RADIUS, check_image, check_op, check_radius, check_shared_memory, check_weights, groups
-from .shaders import FORMATS, explain_error, kernel_source
+from .shaders import FORMATS, PROGRAMS, explain_error, kernel_source
 
 #: Compute shaders and image load/store arrived in OpenGL 4.3.
 REQUIRED_VERSION = 430
@@ -55,7 +55,6 @@ class GLImageFilter:
         self.max_size_name = "GL_MAX_TEXTURE_SIZE"
         check_shared_memory(int(ctx.info.get("GL_MAX_COMPUTE_SHARED_MEMORY_SIZE", GL_MIN_SHARED_MEMORY)),
                             "GL_MAX_COMPUTE_SHARED_MEMORY_SIZE")
-        ctx.__enter__()  # current, and left current (see _current)
         self._build(impl)
         self.size: tuple[int, int] | None = None
         self.textures: dict[str, moderngl.Texture] = {}
@@ -73,20 +72,20 @@ class GLImageFilter:
         return flt
 
     def _build(self, impl: ModuleType) -> None:
-        fmt = FORMATS["opengl"]
-        self.programs = {
-            "weights": self._compile("weights", impl),
-            "pass_float": self._compile("pass", impl, fmt["float"]),
-            "pass_unorm8": self._compile("pass", impl, fmt["unorm8"]),
-            "tiled_float": self._compile("tiled", impl, fmt["float"]),
-            "tiled_unorm8": self._compile("tiled", impl, fmt["unorm8"]),
-            "naive": self._compile("naive", impl, fmt["unorm8"]),
-            "sobel": self._compile("sobel", impl, fmt["unorm8"]),
-        }
+        self.ctx.__enter__()  # current, and left current (see _current)
+        self.impl = impl
+        self.programs: dict[str, moderngl.ComputeShader] = {}
         self.weights = self.ctx.buffer(reserve=(2 * MAX_RADIUS + 1) * 4)
 
-    def _compile(self, kernel: str, impl: ModuleType, out_format: str | None = None) -> moderngl.ComputeShader:
-        src = kernel_source("opengl", kernel, impl, out_format)
+    def _program(self, name: str) -> moderngl.ComputeShader:
+        """The compiled program ``name`` of :data:`~.shaders.PROGRAMS`, built on first use."""
+        if name not in self.programs:
+            kernel, kind = PROGRAMS[name]
+            self.programs[name] = self._compile(kernel, None if kind is None else FORMATS["opengl"][kind])
+        return self.programs[name]
+
+    def _compile(self, kernel: str, out_format: str | None = None) -> moderngl.ComputeShader:
+        src = kernel_source("opengl", kernel, self.impl, out_format)
         try:
             return self.ctx.compute_shader(src.text)
         except moderngl.Error as exc:
@@ -144,7 +143,7 @@ class GLImageFilter:
         self._run(f"{kind}_unorm8", tex["mid"], tex["dst"], (0, 1), r, groups(w, h, op, (0, 1)))
 
     def _fill_weights(self, radius: int) -> None:
-        program = self.programs["weights"]
+        program = self._program("weights")
         program["u_radius"].value = radius
         self.weights.bind_to_storage_buffer(0)
         program.run(group_x=-(-(2 * radius + 1) // 64))
@@ -153,7 +152,7 @@ class GLImageFilter:
     # --8<-- [start:dispatch]
     def _run(self, name: str, src: moderngl.Texture, dst: moderngl.Texture, direction: tuple[int, int],
              radius: int, group_count: tuple[int, int]) -> None:
-        program = self.programs[name]
+        program = self._program(name)
         for uniform, value in (("u_radius", radius), ("u_direction", direction)):
             if program.get(uniform, None) is not None:
                 program[uniform].value = value

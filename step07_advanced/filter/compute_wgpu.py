@@ -16,7 +16,7 @@ import numpy as np
 import wgpu
 
 from .kernels import MAX_RADIUS, check_image, check_op, check_radius, check_shared_memory, check_weights, groups
-from .shaders import FORMATS, explain_error, kernel_source
+from .shaders import FORMATS, PROGRAMS, explain_error, kernel_source
 
 _PARAMS_BYTES = 16
 
@@ -49,15 +49,8 @@ class WGPUImageFilter:
             {"binding": 0, "visibility": stage, "buffer": {"type": "uniform"}},
             {"binding": 2, "visibility": stage, "buffer": {"type": "storage"}},
         ], label="filter weights")
-        self.pipelines = {
-            "weights": self._pipeline("weights", impl, None, "weights"),
-            "pass_float": self._pipeline("pass", impl, "float"),
-            "pass_unorm8": self._pipeline("pass", impl, "unorm8"),
-            "tiled_float": self._pipeline("tiled", impl, "float"),
-            "tiled_unorm8": self._pipeline("tiled", impl, "unorm8"),
-            "naive": self._pipeline("naive", impl, "unorm8"),
-            "sobel": self._pipeline("sobel", impl, "unorm8"),
-        }
+        self.impl = impl
+        self.pipelines: dict[str, Any] = {}
         usage = wgpu.BufferUsage
         self.weights = device.create_buffer(size=(2 * MAX_RADIUS + 2) * 4,
                                             usage=usage.STORAGE | usage.COPY_SRC | usage.COPY_DST)
@@ -75,8 +68,15 @@ class WGPUImageFilter:
         flt.owns_device = True
         return flt
 
-    def _pipeline(self, kernel: str, impl: ModuleType, kind: str | None, layout: str | None = None) -> Any:
-        src = kernel_source("webgpu", kernel, impl, None if kind is None else FORMATS["webgpu"][kind])
+    def _pipeline(self, name: str) -> Any:
+        """The compute pipeline ``name`` of :data:`~.shaders.PROGRAMS`, built on first use."""
+        if name not in self.pipelines:
+            kernel, kind = PROGRAMS[name]
+            self.pipelines[name] = self._build_pipeline(kernel, kind, "weights" if kind is None else None)
+        return self.pipelines[name]
+
+    def _build_pipeline(self, kernel: str, kind: str | None, layout: str | None = None) -> Any:
+        src = kernel_source("webgpu", kernel, self.impl, None if kind is None else FORMATS["webgpu"][kind])
         try:
             module = self.device.create_shader_module(code=src.text, label=src.filename)
         except wgpu.GPUError as exc:
@@ -152,22 +152,22 @@ class WGPUImageFilter:
         encoder = self.device.create_command_encoder()
         compute = encoder.begin_compute_pass()
         if op != "sobel" and table is None:
-            compute.set_pipeline(self.pipelines["weights"])
+            compute.set_pipeline(self._pipeline("weights"))
             compute.set_bind_group(0, self.bind_groups["weights"])
             compute.dispatch_workgroups(-(-(2 * r + 1) // 64))
         if op in ("horizontal", "vertical"):
-            compute.set_pipeline(self.pipelines["pass_unorm8"])
+            compute.set_pipeline(self._pipeline("pass_unorm8"))
             compute.set_bind_group(0, self.bind_groups["direct" if op == "horizontal" else "direct_vertical"])
             compute.dispatch_workgroups(*groups(w, h, op))
         elif op in ("sobel", "naive"):
-            compute.set_pipeline(self.pipelines[op])
+            compute.set_pipeline(self._pipeline(op))
             compute.set_bind_group(0, self.bind_groups["direct"])
             compute.dispatch_workgroups(*groups(w, h, op))
         else:
             # --8<-- [start:dispatch]
             kind = "pass" if op == "separable" else "tiled"
             for name, direction, fmt in (("horizontal", (1, 0), "float"), ("vertical", (0, 1), "unorm8")):
-                compute.set_pipeline(self.pipelines[f"{kind}_{fmt}"])
+                compute.set_pipeline(self._pipeline(f"{kind}_{fmt}"))
                 compute.set_bind_group(0, self.bind_groups[name])
                 compute.dispatch_workgroups(*groups(w, h, op, direction))
         compute.end()
@@ -203,7 +203,7 @@ class WGPUImageFilter:
         self.device.queue.write_buffer(self.params[(1, 0)], 0, np.array([1, 0, r, 0], dtype=np.int32).tobytes())
         encoder = self.device.create_command_encoder()
         compute = encoder.begin_compute_pass()
-        compute.set_pipeline(self.pipelines["weights"])
+        compute.set_pipeline(self._pipeline("weights"))
         compute.set_bind_group(0, self.bind_groups["weights"])
         compute.dispatch_workgroups(-(-(2 * r + 1) // 64))
         compute.end()

@@ -25,6 +25,17 @@ FORMATS = {
     "opengl": {"float": "rgba32f", "unorm8": "rgba8"},
     "webgpu": {"float": "rgba32float", "unorm8": "rgba8unorm"},
 }
+#: Compiled program -> (kernel, output kind). Each is built on first use, so a compile error in one exercise file
+#: does not stop the kernels that do not include it (the weight table alone, or the blur with given weights).
+PROGRAMS = {
+    "weights": ("weights", None),
+    "pass_float": ("pass", "float"),
+    "pass_unorm8": ("pass", "unorm8"),
+    "tiled_float": ("tiled", "float"),
+    "tiled_unorm8": ("tiled", "unorm8"),
+    "naive": ("naive", "unorm8"),
+    "sobel": ("sobel", "unorm8"),
+}
 #: Kernel name -> file stem (``.comp`` in GLSL, ``.wgsl`` in WGSL).
 KERNELS = {"weights": "weights", "pass": "blur_pass", "naive": "blur_2d", "tiled": "blur_tiled", "sobel": "sobel"}
 
