@@ -437,7 +437,7 @@ def build_scene(kernel: PathKernel, *, samples: int = 4096, max_bounces: int = 8
                                                                        seed=seed))
     camera_entity(scene)
     spheres = [
-        ("ground", (0.0, -1000.0, 0.0), 1000.0, lambert((0.55, 0.55, 0.52), "ground")),
+        ("ground", (0.0, -1000.0, 0.0), 1000.0, lambert((0.8, 0.76, 0.66), "ground")),
         ("glass ball", (-1.25, 0.5, 0.35), 0.5, glass(1.5)),
         ("metal ball", (1.25, 0.5, 0.1), 0.5, metal((0.9, 0.75, 0.45), 0.08, "gold")),
         ("blue ball", (0.55, 0.22, 1.15), 0.22, lambert((0.15, 0.3, 0.75), "blue")),

@@ -2,6 +2,7 @@
 // with a short stack), and the path loop with the three materials. trace.wgsl is the same in WGSL.
 const float T_MIN = 1e-4;
 const float T_FAR = 1e30;
+const float RAY_OFFSET = 5e-4;
 const uint LAMBERT = 0u;
 const uint METAL = 1u;
 const uint GLASS = 2u;
@@ -148,8 +149,11 @@ vec3 path_radiance(vec3 origin, vec3 dir, inout uint rng) {
             break;  // absorbed (a zero or broken direction)
         }
         throughput *= m0.rgb;
-        origin = origin + hit.t * dir;
+        // Start the next ray a little off the surface, on the side it leaves to: float32 knows a point on a
+        // sphere 1000 units from its centre only to ~1e-4, and a ray must not hit the surface it starts on.
+        vec3 p = origin + hit.t * dir;
         dir = next / sqrt(len2);
+        origin = p + (dot(dir, facing) > 0.0 ? facing : -facing) * RAY_OFFSET;
     }
     bool finite = is_finite(radiance.r) && is_finite(radiance.g) && is_finite(radiance.b);
     return finite ? radiance : vec3(0.0);

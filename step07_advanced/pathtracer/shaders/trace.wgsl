@@ -2,6 +2,7 @@
 // with a short stack), and the path loop with the three materials. trace.glsl is the same in GLSL.
 const T_MIN: f32 = 1e-4;
 const T_FAR: f32 = 1e30;
+const RAY_OFFSET: f32 = 5e-4;
 const LAMBERT: u32 = 0u;
 const METAL: u32 = 1u;
 const GLASS: u32 = 2u;
@@ -154,8 +155,11 @@ fn path_radiance(origin_in: vec3<f32>, dir_in: vec3<f32>, rng: ptr<function, u32
             break;  // absorbed (a zero or broken direction)
         }
         throughput *= m0.rgb;
-        origin = origin + hit.t * dir;
+        // Start the next ray a little off the surface, on the side it leaves to: float32 knows a point on a
+        // sphere 1000 units from its centre only to ~1e-4, and a ray must not hit the surface it starts on.
+        let p = origin + hit.t * dir;
         dir = next / sqrt(len2);
+        origin = p + select(-facing, facing, dot(dir, facing) > 0.0) * RAY_OFFSET;
     }
     let finite = is_finite(radiance.r) && is_finite(radiance.g) && is_finite(radiance.b);
     return select(vec3<f32>(0.0), radiance, finite);
