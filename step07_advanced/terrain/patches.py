@@ -40,8 +40,9 @@ class TerrainParams:
     max_level: float = 16.0
 
     def __post_init__(self) -> None:
-        if not (isinstance(self.patches, int) and 1 <= self.patches <= 256):
-            raise ValueError(f"TerrainParams.patches must be an int in [1, 256], got {self.patches!r}")
+        # WebGPU dispatches one work-group row per patch: patches² must stay within 65535 work groups.
+        if not (isinstance(self.patches, int) and 1 <= self.patches <= 128):
+            raise ValueError(f"TerrainParams.patches must be an int in [1, 128], got {self.patches!r}")
         for name in ("size", "height_scale", "lod_scale"):
             value = getattr(self, name)
             if not (np.isfinite(value) and value > 0):
