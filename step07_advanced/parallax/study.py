@@ -12,7 +12,8 @@ reference, **parallax occlusion mapping with 256 layers**:
   reference functions (:mod:`.reference`) on the same height map, sampled bilinearly at full resolution, for the
   pixel rays of the study's orthographic camera (the same view vectors the shader builds);
 * the frame time: the median over repeats of (``frames`` frames, then one read-back of the picture, which waits
-  for the GPU) / ``frames``, per API — with the engine's per-frame Python work, as an app sees it.
+  for the GPU) / ``frames``, per API — with the engine's per-frame Python work, as an app sees it. The repeats go
+  round all the configs, so a burst of other work on the machine does not spoil one of them.
 
 It prints a table, writes ``DIR/parallax_study.json``, ``DIR/parallax_study.md`` and ``DIR/parallax_study.png``.
 It needs no display.
@@ -130,7 +131,12 @@ def device_name(app) -> str:
 
 def measure_backend(backend: str, rows: list[tuple[str, int]], width: int, height: int, frames: int, repeats: int,
                     mask: np.ndarray, student: bool = False) -> tuple[str, dict[tuple[str, int], dict]]:
-    """(device name, {config: {"rmse", "ms"}}) of ``backend``: one app, one scene per config."""
+    """(device name, {config: {"rmse", "ms", "ms_all"}}) of ``backend``: one app, one scene per config.
+
+    The timed repeats go round the configs (config 1, 2, ..., n, then again), so that a burst of other work on
+    the machine spreads over all of them instead of spoiling one; each starts with an untimed frame after the
+    scene switch.
+    """
     from gandalf_core import Application
     from gandalf_core.app.cli import load_impl
 
@@ -141,26 +147,31 @@ def measure_backend(backend: str, rows: list[tuple[str, int]], width: int, heigh
     with Application(backend, width, height, headless=True, fixed_dt=1 / 60) as app:
         importlib.import_module(f"{__package__}.{backend}").register_shaders(app, impl)
         device = device_name(app)
+        scenes = {}
         reference = None
         for method, layers in rows:
-            scene = app.add_scene(study_scene(method, layers))
+            scene = scenes[(method, layers)] = app.add_scene(study_scene(method, layers))
             app.switch_scene(scene)
-            app.run(frames=2)  # switch, build the pipeline, warm up
+            app.run(frames=2)  # switch, build the pipeline, draw
             picture = app.capture()[..., :3].astype(np.float64)
-            times = []
-            for _ in range(repeats):
-                start = time.perf_counter()
-                app.run(frames=frames)
-                app.capture()  # waits for the GPU
-                times.append((time.perf_counter() - start) / frames * 1000.0)
             if reference is None:
                 reference = picture
             diff = (picture - reference)[mask]
-            results[(method, layers)] = {"rmse": float(np.sqrt(np.mean(diff * diff))),
-                                         "ms": float(statistics.median(times))}
-            print(f"  {backend:7s} {LABELS[method]:19s} {layers:4d} layers: "
-                  f"{results[(method, layers)]['ms']:8.2f} ms, RMSE {results[(method, layers)]['rmse']:6.2f}",
-                  flush=True)
+            results[(method, layers)] = {"rmse": float(np.sqrt(np.mean(diff * diff))), "ms_all": []}
+        for repeat in range(repeats):
+            for key, scene in scenes.items():
+                app.switch_scene(scene)
+                app.run(frames=1)
+                app.capture()
+                start = time.perf_counter()
+                app.run(frames=frames)
+                app.capture()  # waits for the GPU
+                results[key]["ms_all"].append((time.perf_counter() - start) / frames * 1000.0)
+            print(f"  {backend}: repeat {repeat + 1} of {repeats} done", flush=True)
+        for (method, layers), entry in results.items():
+            entry["ms"] = float(statistics.median(entry["ms_all"]))
+            print(f"  {backend:7s} {LABELS[method]:19s} {layers:4d} layers: {entry['ms']:8.2f} ms, "
+                  f"RMSE {entry['rmse']:6.2f}", flush=True)
     return device, results
 
 
@@ -234,14 +245,14 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--quick", action="store_true", help="fewer layer counts, 320x240, fewer repeats")
     parser.add_argument("--size", default=None, help="WIDTHxHEIGHT (default 640x480; --quick: 320x240)")
     parser.add_argument("--frames", type=int, default=None, help="frames per timed repeat (default 5; quick 3)")
-    parser.add_argument("--repeats", type=int, default=None, help="timed repeats per config (default 5; quick 3)")
+    parser.add_argument("--repeats", type=int, default=None, help="timed repeats per config (default 7; quick 3)")
     parser.add_argument("--student", action="store_true", help="measure your exercises/ instead of solutions/")
     args = parser.parse_args(argv)
     size = args.size or ("320x240" if args.quick else "640x480")
     width, height = (int(v) for v in size.lower().split("x"))
     layers = QUICK_LAYERS if args.quick else LAYERS
     frames = args.frames or (3 if args.quick else 5)
-    repeats = args.repeats or (3 if args.quick else 5)
+    repeats = args.repeats or (3 if args.quick else 7)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     rows = configs(layers)
