@@ -10,7 +10,7 @@ systems in their order — the scene's own systems, then the core ones the app a
 
 from __future__ import annotations
 
-import sys
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -24,6 +24,10 @@ from .window import Window, display_available
 
 #: Pressing this key closes the window (as closing it with the mouse does).
 CLOSE_KEY = "ESCAPE"
+
+
+def _never() -> bool:
+    return False
 
 
 class Application:
@@ -56,6 +60,12 @@ class Application:
         self.renderer: Renderer = create_renderer(self.backend, width, height, self.window)
         self._prepared: set[int] = set()
         self.running = False
+        #: Asked before a camera controller reads the mouse: a GUI layer (the editor) that has the pointer over
+        #: one of its panels sets this to say so. The app owns the flag, so no system needs to know the GUI.
+        self.gui_wants_mouse: Callable[[], bool] = _never
+        #: Called (newest first) when the app closes, before the scenes and the renderer go: layers added
+        #: on top of the app (the editor) tear themselves down here.
+        self.on_close: list[Callable[[], None]] = []
         if editor:  # imported only when asked for: ImGui is not needed otherwise
             from ..editor import enable_editor
 
@@ -148,11 +158,10 @@ class Application:
         return self.renderer.save_png(path)
 
     def close(self) -> None:
-        """Tear down the editor (if on), every scene's systems, the renderer and the window."""
-        if "gandalf_core.editor" in sys.modules:
-            from ..editor import disable_editor
-
-            disable_editor(self)
+        """Tear down the layers on top (the editor, if on), every scene's systems, the renderer and the window."""
+        for callback in reversed(list(self.on_close)):
+            callback()
+        self.on_close.clear()
         for scene in self.scenes.scenes:
             scene.teardown()
         self.renderer.release()

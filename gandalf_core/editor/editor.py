@@ -73,6 +73,10 @@ class Editor:
         self.enabled = True
         renderer.overlays.append(self._overlay)
         app.scenes.on_switch.append(self._on_switch)
+        # The app owns these hooks: its camera controllers ask whether a panel has the pointer, and closing
+        # the app takes the editor down first.
+        app.gui_wants_mouse = lambda: self.wants_mouse
+        app.on_close.append(self.disable)
         if app.scenes.active is not None:
             self.install(app.scenes.active)
 
@@ -239,6 +243,9 @@ class Editor:
             app.renderer.overlays.remove(self._overlay)
         if self._on_switch in app.scenes.on_switch:
             app.scenes.on_switch.remove(self._on_switch)
+        if self.disable in app.on_close:
+            app.on_close.remove(self.disable)
+        app.gui_wants_mouse = lambda: False
         for scene, _entities, _systems in list(self._installed.values()):
             self.uninstall(scene)
         self._imgui.set_current_context(self._context)

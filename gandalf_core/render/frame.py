@@ -18,19 +18,17 @@ import numpy as np
 
 from ..resources import MaterialData
 
+# The lights block's sizes live below the systems that pack it; the renderers read them from here too.
+from ..resources.blocks import LIGHTS_BLOCK_BYTES as LIGHTS_BLOCK_BYTES
+from ..resources.blocks import LIGHTS_BYTES as LIGHTS_BYTES
+from ..resources.blocks import MAX_LIGHTS as MAX_LIGHTS
+from ..resources.blocks import SHADOW_BYTES as SHADOW_BYTES
+from ..resources.blocks import SHADOW_MAP_SIZE as SHADOW_MAP_SIZE
+
 INSTANCE_FLOATS = 12
 INSTANCE_STRIDE = INSTANCE_FLOATS * 4
 # view, projection, camera_position, time, clip_to_direction, depth
 FRAME_FLOATS = 16 + 16 + 4 + 4 + 16 + 4
-MAX_LIGHTS = 64
-# count (ivec4), ambient, position[MAX_LIGHTS], color[MAX_LIGHTS]: what LightSystem.pack() returns
-LIGHTS_BYTES = 16 + 16 + 16 * MAX_LIGHTS * 2
-# light_view_projection (mat4), shadow (vec4): the shadow part at the block's end (LightSystem.shadow())
-SHADOW_BYTES = 64 + 16
-#: The whole lights uniform block as the shaders declare it.
-LIGHTS_BLOCK_BYTES = LIGHTS_BYTES + SHADOW_BYTES
-#: Side of the square shadow map in texels.
-SHADOW_MAP_SIZE = 2048
 
 
 #: The sky pass's shader name (core shaders ``render/shaders/skybox.*``) and fixed state: it is drawn

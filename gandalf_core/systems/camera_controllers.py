@@ -13,7 +13,6 @@ look-at rotation is undefined.
 from __future__ import annotations
 
 import math
-import sys
 from collections.abc import Sequence
 from typing import Any
 
@@ -57,12 +56,13 @@ def _input_of(system: System) -> Any:
     """The application's Input, or None for a scene that no application runs (or while the editor's
     panels have the mouse: dragging a slider must not also turn the camera)."""
     app = system.scene.app if system.scene is not None else None
-    editor_module = sys.modules.get("gandalf_core.editor")
-    if app is not None and editor_module is not None:
-        editor = editor_module.editor_of(app)
-        if editor is not None and editor.wants_mouse:
-            return None
+    if app is not None and getattr(app, "gui_wants_mouse", _never)():
+        return None
     return getattr(app, "input", None)
+
+
+def _never() -> bool:
+    return False
 
 
 class OrbitControllerComponent(Component):

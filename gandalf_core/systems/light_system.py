@@ -24,8 +24,8 @@ from ..components import TransformComponent
 from ..components.light import LightComponent
 from ..ecs import System
 from ..math import orthographic
-from ..render.color import srgb_rgba_to_linear
-from ..render.frame import LIGHTS_BYTES, MAX_LIGHTS, SHADOW_BYTES, SHADOW_MAP_SIZE
+from ..resources.blocks import LIGHTS_BYTES, MAX_LIGHTS, SHADOW_BYTES, SHADOW_MAP_SIZE
+from ..resources.color import srgb_rgba_to_linear
 
 
 class LightSystem(System):
