@@ -174,17 +174,24 @@ class RenderSystem(System):
         lo, hi = depth_range(self.renderer.depth_range_for(reverse_z))
         depth_ends = (hi, lo) if reverse_z else (lo, hi)
         app = scene.app
-        frame = pack_frame(view, projection, eye, app.clock.time if app is not None else 0.0, ts, depth_ends)
+        # --8<-- [start:camera_relative]
+        # Camera-relative: the GPU gets positions with the camera at the origin, made in float64 here.
+        origin = eye
+        relative_view = view.copy()
+        relative_view[:3, 3] += view[:3, :3] @ origin
+        frame = pack_frame(relative_view, projection, eye - origin, app.clock.time if app is not None else 0.0, ts,
+                           depth_ends, origin)
+        # --8<-- [end:camera_relative]
         batches = self.batches
         if batches:
             world = scene.store(TransformComponent).columns["world"]
             self._sort_transparent(world, view)
             batches = self._split_mirrored(world)
             rows = self._rows if batches is self.batches else np.concatenate([b.rows for b in batches])
-            self._instances = pack_instances(world, rows, self._instances)
+            self._instances = pack_instances(world, rows, self._instances, origin)
         light_systems = [s for s in scene.systems if isinstance(s, LightSystem)]
         # The light system knows the lights, the renderer the depth range their shadow projection needs.
-        lights = (light_systems[0].data + light_systems[0].shadow(self.renderer.depth_range)
+        lights = (light_systems[0].relative(origin) + light_systems[0].shadow(self.renderer.depth_range, origin)
                   if light_systems else _NO_LIGHTS)
         shadows = bool(np.frombuffer(lights, np.float32, count=1, offset=_SHADOW_ON_OFFSET)[0] == 1.0)
         skyboxes = self._skyboxes.components

@@ -41,13 +41,33 @@ class LightSystem(System):
     def pack(self, components: list[tuple[LightComponent, TransformComponent]]) -> bytes:
         return pack_lights(components)
 
-    def shadow(self, depth_range: str | tuple[float, float]) -> bytes:
-        """The shadow part of the block for this frame's lights, projected for ``depth_range``."""
-        return pack_shadow(self.components, depth_range)
+    def shadow(self, depth_range: str | tuple[float, float], origin: np.ndarray | None = None) -> bytes:
+        """The shadow part of the block for this frame's lights, projected for ``depth_range``, from positions
+        relative to ``origin``."""
+        return pack_shadow(self.components, depth_range, origin)
+
+    def relative(self, origin: np.ndarray) -> bytes:
+        """:attr:`data` with point lights relative to ``origin``. The stock packing recomputes them from the
+        float64 world matrices; a subclass's own :meth:`pack` (step 06's exercise) is moved by ``-origin`` from
+        its float32 values."""
+        if type(self).pack is LightSystem.pack:
+            return pack_lights(self.components, origin)
+        return relative_lights(self.data, origin)
 
 
-def pack_lights(components: list[tuple[Any, Any]]) -> bytes:
-    """The lights block for (LightComponent, TransformComponent) pairs (world matrices already computed)."""
+def relative_lights(block: bytes, origin: np.ndarray) -> bytes:
+    """A packed lights part with its point lights (w = 1) moved by ``-origin`` (in float64)."""
+    data = np.frombuffer(block, dtype=np.float32).copy()
+    count = int(data[0:1].view(np.int32)[0])
+    positions = data[8:8 + 4 * MAX_LIGHTS].reshape(MAX_LIGHTS, 4)[:count]
+    points = positions[:, 3] == 1.0
+    positions[points, :3] = positions[points, :3].astype(np.float64) - np.asarray(origin, dtype=np.float64)
+    return data.tobytes()
+
+
+def pack_lights(components: list[tuple[Any, Any]], origin: np.ndarray | None = None) -> bytes:
+    """The lights block for (LightComponent, TransformComponent) pairs (world matrices already computed); point
+    lights relative to ``origin`` (subtracted in float64)."""
     block = np.zeros(LIGHTS_BYTES // 4, dtype=np.float32)
     count = block[0:4].view(np.int32)
     ambient = block[4:8]
@@ -64,7 +84,8 @@ def pack_lights(components: list[tuple[Any, Any]]) -> bytes:
             continue
         world = transform.world
         if light.kind == "point":
-            positions[n] = (*world[:3, 3], 1.0)
+            position = world[:3, 3] if origin is None else world[:3, 3] - np.asarray(origin, dtype=np.float64)
+            positions[n] = (*position, 1.0)
         else:
             forward = -world[:3, 2]  # the light shines along its -Z axis
             length = np.linalg.norm(forward)
@@ -80,13 +101,14 @@ def pack_lights(components: list[tuple[Any, Any]]) -> bytes:
 
 
 # --8<-- [start:pack_shadow]
-def pack_shadow(components: list[tuple[Any, Any]], depth_range: str | tuple[float, float] = "opengl") -> bytes:
+def pack_shadow(components: list[tuple[Any, Any]], depth_range: str | tuple[float, float] = "opengl",
+                origin: np.ndarray | None = None) -> bytes:
     """The shadow part of the lights block: the first shadow-casting directional light's view-projection
     and shadow parameters (all zero, so ``shadow.x == 0``, when no light casts shadows).
 
     The light looks along its -Z axis from its world position, the centre of an orthographic box
     ``2 · shadow_extent`` wide and high and ``shadow_depth`` long; ``depth_range`` is the API's NDC depth
-    range, as for a camera.
+    range, as for a camera. With ``origin`` the matrix takes positions relative to it (camera-relative rendering).
     """
     block = np.zeros(SHADOW_BYTES // 4, dtype=np.float32)
     index = 0  # the light's slot in position[] and color[], counted as pack_lights() does
@@ -100,6 +122,9 @@ def pack_shadow(components: list[tuple[Any, Any]], depth_range: str | tuple[floa
             view = light_view(transform.world)
             projection = orthographic(-extent, extent, -extent, extent, -depth / 2, depth / 2,
                                       depth_range=depth_range)
+            if origin is not None:  # positions arrive relative to origin: move them back first (float64)
+                view = view.copy()
+                view[:3, 3] += view[:3, :3] @ np.asarray(origin, dtype=np.float64)
             block[0:16] = (projection @ view).T.ravel()
             texel = 2.0 * extent / SHADOW_MAP_SIZE
             # Depth is stored in [0, 1] over the box's length in both APIs: one texel's width in those units.

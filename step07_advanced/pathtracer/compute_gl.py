@@ -43,6 +43,22 @@ class GLPathTracer:
         self.params = ctx.buffer(reserve=PARAMS_BYTES)
         self.buffers: list[moderngl.Buffer] = []
         self.packed: PackedScene | None = None
+        self.owns_context = False
+
+    @classmethod
+    def standalone(cls, impl: ModuleType, width: int, height: int) -> GLPathTracer:
+        """A kernel on its own headless GL 4.3 context with its own accumulation buffer (the study: NVIDIA's EGL
+        gives exactly the 3.3 the renderer asks for, so the renderer's context may have no compute shaders)."""
+        ctx = moderngl.create_standalone_context(backend="egl", require=REQUIRED_VERSION)
+        accum = ctx.buffer(reserve=width * height * 16)
+        accum.clear()
+        tracer = cls(ctx, impl, accum, width, height)
+        tracer.owns_context = True
+        return tracer
+
+    @property
+    def device_name(self) -> str:
+        return str(self.ctx.info.get("GL_RENDERER", "?"))
 
     def load(self, packed: PackedScene) -> None:
         """Upload the scene's arrays (replacing the previous scene's)."""
@@ -83,3 +99,7 @@ class GLPathTracer:
         for obj in (*self.buffers, self.params, self.program):
             obj.release()
         self.buffers = []
+        if self.owns_context:
+            self.accum.release()
+            self.ctx.release()
+            self.owns_context = False

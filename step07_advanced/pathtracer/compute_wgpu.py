@@ -48,6 +48,25 @@ class WGPUPathTracer:
         self.buffers: list[Any] = []
         self.bind_group = None
         self.packed: PackedScene | None = None
+        self.owns_accum = False
+
+    @classmethod
+    def standalone(cls, impl: ModuleType, width: int, height: int) -> WGPUPathTracer:
+        """A kernel on its own headless device with its own accumulation buffer (the study)."""
+        from gandalf_core.render.webgpu.device import request_device
+
+        adapter, device = request_device()[:2]
+        usage = wgpu.BufferUsage
+        accum = device.create_buffer(size=width * height * 16, usage=usage.STORAGE | usage.COPY_SRC | usage.COPY_DST)
+        tracer = cls(device, impl, accum, width, height)
+        tracer.adapter = adapter
+        tracer.owns_accum = True
+        return tracer
+
+    @property
+    def device_name(self) -> str:
+        info = getattr(getattr(self, "adapter", None), "info", None) or {}
+        return str(info.get("device", "?"))
 
     def load(self, packed: PackedScene) -> None:
         """Upload the scene's arrays (replacing the previous scene's)."""
@@ -97,3 +116,6 @@ class WGPUPathTracer:
         for buf in (*self.buffers, self.params):
             buf.destroy()
         self.buffers = []
+        if self.owns_accum:
+            self.accum.destroy()
+            self.owns_accum = False

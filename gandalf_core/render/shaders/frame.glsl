@@ -4,9 +4,11 @@ layout(std140) uniform Frame {
     mat4 u_view;
     mat4 u_projection;
     vec4 u_camera_position;
-    vec4 u_time;               // x: seconds since start, y: this frame's time step
+    vec4 u_time;               // x: seconds since start, wrapped every 1024 s; y: this frame's step; z: wraps
     mat4 u_clip_to_direction;  // clip-space point on the far plane -> world direction (skyboxes)
     vec4 u_depth;              // x: NDC depth of the near plane, y: of the far plane
+    vec4 u_origin_high;        // xyz: the world position positions are relative to (the camera), float32 part
+    vec4 u_origin_low;         // xyz: the rest of it (absolute position = relative + high + low)
 };
 
 #define MAX_LIGHTS 64

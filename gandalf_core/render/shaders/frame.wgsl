@@ -4,9 +4,11 @@ struct Frame {
     view: mat4x4<f32>,
     projection: mat4x4<f32>,
     camera_position: vec4<f32>,
-    time: vec4<f32>,               // x: seconds since start, y: this frame's time step
+    time: vec4<f32>,               // x: seconds since start, wrapped every 1024 s; y: this frame's step; z: wraps
     clip_to_direction: mat4x4<f32>, // clip-space point on the far plane -> world direction (skyboxes)
     depth: vec4<f32>,              // x: NDC depth of the near plane, y: of the far plane
+    origin_high: vec4<f32>,        // xyz: the world position positions are relative to (the camera), float32 part
+    origin_low: vec4<f32>,         // xyz: the rest of it (absolute position = relative + high + low)
 };
 @group(0) @binding(0) var<uniform> frame: Frame;
 
