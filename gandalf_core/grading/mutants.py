@@ -183,7 +183,8 @@ def _tests_dir(step: str) -> Path:
     return ROOT / "tests" / step
 
 
-PRELOAD = ("numpy", "PIL.Image", "moderngl", "wgpu", "gandalf_core", "gandalf_core.testing", "pytest", "xdist")
+# wgpu is left out: its native library is loaded fresh in each grader (no shared driver state across a fork).
+PRELOAD = ("numpy", "PIL.Image", "pytest", "xdist", "gandalf_core", "gandalf_core.resources")
 
 
 @dataclass
