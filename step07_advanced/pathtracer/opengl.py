@@ -19,10 +19,11 @@ from .shaders import DISPLAY_SHADER, SHADER_DIR
 def create_tracer(app: Application, student: bool = False) -> GLPathTracer:
     """The display shader, the accumulation buffer (renderer.buffers) and the kernel writing it."""
     impl = load_impl(STEP, student)
-    app.renderer.shaders.build(DISPLAY_SHADER, SHADER_DIR / "display.vert", SHADER_DIR / "display.frag")
     width, height = app.renderer.width, app.renderer.height
     accum = app.renderer.buffers.build(ACCUM_BUFFER, width * height * 16)  # vec4 per pixel, zeros
-    return GLPathTracer(app.renderer.ctx, impl, accum, width, height)
+    tracer = GLPathTracer(app.renderer.ctx, impl, accum, width, height)  # first: it names a GL < 4.3 context
+    app.renderer.shaders.build(DISPLAY_SHADER, SHADER_DIR / "display.vert", SHADER_DIR / "display.frag")
+    return tracer
 # --8<-- [end:setup]
 
 
