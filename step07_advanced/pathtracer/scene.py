@@ -35,6 +35,7 @@ from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import CubeTextureData, MaterialData, MeshData, ResourceError, sky_cube, srgb_to_linear
 from gandalf_core.resources.mesh_loader import load_mesh
 from gandalf_core.systems import TransformSystem
+from gandalf_core.systems.camera_controllers import OrbitControllerComponent, OrbitControllerSystem
 
 from .bvh import build_bvh, usable_triangles
 from .shaders import DISPLAY_SHADER
@@ -420,10 +421,17 @@ def add_tracer(scene: Scene, kernel: PathKernel, exposure: float = 1.0) -> PathT
     return system
 
 
-def camera_entity(scene: Scene, eye=EYE, target=TARGET, fov: float = FOV) -> None:
-    scene.create_entity(InfoComponent("camera"),
-                        TransformComponent(eye, quaternion=look_at_rotation(eye, target)),
-                        CameraComponent(fov=fov, near=0.1, far=100.0))
+def camera_entity(scene: Scene, eye=EYE, target=TARGET, fov: float = FOV, orbit: bool = False) -> None:
+    """The primary camera at ``eye`` looking at ``target``; with ``orbit`` the mouse turns it around the target
+    (left drag) and zooms (scroll), and the accumulation restarts whenever it moves."""
+    components = [InfoComponent("camera"), TransformComponent(eye, quaternion=look_at_rotation(eye, target)),
+                  CameraComponent(fov=fov, near=0.1, far=100.0)]
+    if orbit:
+        offset = np.subtract(eye, target, dtype=np.float64)
+        distance = float(np.linalg.norm(offset))
+        components.append(OrbitControllerComponent(target, distance, math.degrees(math.atan2(offset[0], offset[2])),
+                                                   math.degrees(math.asin(offset[1] / distance))))
+    scene.create_entity(*components)
 
 
 def build_scene(kernel: PathKernel, *, samples: int = 4096, max_bounces: int = 8, seed: int = 1,
@@ -435,7 +443,8 @@ def build_scene(kernel: PathKernel, *, samples: int = 4096, max_bounces: int = 8
     scene.create_entity(InfoComponent("sky"), SkyboxComponent("sky"))
     scene.create_entity(InfoComponent("settings"), PathTracerComponent(samples=samples, max_bounces=max_bounces,
                                                                        seed=seed))
-    camera_entity(scene)
+    camera_entity(scene, orbit=True)
+    scene.add_system(OrbitControllerSystem())  # before add_tracer: the camera moves, then the tracer looks
     spheres = [
         ("ground", (0.0, -1000.0, 0.0), 1000.0, lambert((0.8, 0.76, 0.66), "ground")),
         ("glass ball", (-1.25, 0.5, 0.35), 0.5, glass(1.5)),
