@@ -8,6 +8,14 @@ never inverts a matrix per entity.
 
 The frame and light uniform blocks are the same bytes in GLSL (std140) and WGSL because they hold
 only mat4/vec4 members and vec4 arrays (see ``shaders/frame.glsl`` and ``shaders/frame.wgsl``).
+
+**Camera-relative positions.** Everything the GPU sees is relative to the camera: the instance rows' translations,
+the view matrix, point lights and the shadow projection are moved by ``-origin`` (the camera's world position) in
+float64 on the CPU, before they become float32. A world 1e6 units from the origin then draws like one at the
+origin; shaders that need absolute positions add ``origin_high + origin_low`` (the origin split into two float32s).
+
+**Time.** ``time.x`` is the time since start wrapped to :data:`TIME_WRAP` seconds, so float32 keeps 1/60 s steps
+exact to 1% for ever (at 3e7 s a plain float32 time steps by 2 s); ``time.z`` counts the wraps.
 """
 
 from __future__ import annotations
@@ -27,8 +35,10 @@ from ..resources.blocks import SHADOW_MAP_SIZE as SHADOW_MAP_SIZE
 
 INSTANCE_FLOATS = 12
 INSTANCE_STRIDE = INSTANCE_FLOATS * 4
-# view, projection, camera_position, time, clip_to_direction, depth
-FRAME_FLOATS = 16 + 16 + 4 + 4 + 16 + 4
+# view, projection, camera_position, time, clip_to_direction, depth, origin_high, origin_low
+FRAME_FLOATS = 16 + 16 + 4 + 4 + 16 + 4 + 4 + 4
+#: ``time.x`` wraps after this many seconds: float32's step at 1024 s is 1.2e-4 s, under 1% of 1/60 s.
+TIME_WRAP = 1024.0
 
 
 #: The sky pass's shader name (core shaders ``render/shaders/skybox.*``) and fixed state: it is drawn
@@ -78,8 +88,12 @@ def pack_frame(
     time: float,
     dt: float,
     depth_ends: tuple[float, float] = (-1.0, 1.0),
+    origin: np.ndarray | None = None,
 ) -> bytes:
     """The frame uniform block as bytes (matrices column-major, as both APIs expect).
+
+    ``view`` and ``camera_position`` are relative to ``origin`` (default: the world origin), which is stored split
+    into a float32 and the float32 of the remainder, so a shader can rebuild absolute positions.
 
     ``depth_ends`` are the NDC depths of the near and far planes (swapped by reverse-Z); the skybox
     draws at the far one. ``clip_to_direction`` maps a clip-space point on the far plane to a world
@@ -90,8 +104,10 @@ def pack_frame(
     data[16:32] = projection.T.ravel()
     data[32:35] = camera_position
     data[35] = 1.0
-    data[36] = time
+    wraps, wrapped = divmod(float(time), TIME_WRAP)
+    data[36] = wrapped
     data[37] = dt
+    data[38] = wraps
     rotation_only = np.eye(4)
     rotation_only[:3, :3] = view[:3, :3]
     if projection[3, 3] != 0.0 and projection[3, 2] == 0.0:
@@ -106,6 +122,11 @@ def pack_frame(
     data[40:56] = clip_to_direction.T.ravel()
     data[56] = depth_ends[0]
     data[57] = depth_ends[1]
+    if origin is not None:
+        origin = np.asarray(origin, dtype=np.float64)
+        high = origin.astype(np.float32)
+        data[60:63] = high
+        data[64:67] = (origin - high.astype(np.float64)).astype(np.float32)
     return data.tobytes()
 
 
@@ -114,13 +135,20 @@ def instance_capacity(nbytes: int) -> int:
     return 1 << max(12, (nbytes - 1).bit_length())
 
 
-def pack_instances(world: np.ndarray, rows: np.ndarray | slice, out: np.ndarray | None = None) -> np.ndarray:
-    """Gather the affine rows of ``world[rows]`` into a ``(count, 12)`` float32 array.
+def pack_instances(world: np.ndarray, rows: np.ndarray | slice, out: np.ndarray | None = None,
+                   origin: np.ndarray | None = None) -> np.ndarray:
+    """Gather the affine rows of ``world[rows]`` into a ``(count, 12)`` float32 array, translations relative to
+    ``origin`` (subtracted in float64, before the conversion to float32).
 
     ``rows`` is an index array, or a slice when the rows are consecutive (no gathering copy then).
     """
     count = len(range(*rows.indices(len(world)))) if isinstance(rows, slice) else len(rows)
     if out is None or out.shape[0] != count:
         out = np.empty((count, INSTANCE_FLOATS), dtype=np.float32)
-    out.reshape(-1, 3, 4)[:] = world[rows, :3, :]
+    packed = out.reshape(-1, 3, 4)
+    packed[:, :, :3] = world[rows, :3, :3]
+    if origin is None:
+        packed[:, :, 3] = world[rows, :3, 3]
+    else:
+        packed[:, :, 3] = world[rows, :3, 3] - np.asarray(origin, dtype=np.float64)
     return out

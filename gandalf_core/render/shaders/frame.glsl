@@ -20,3 +20,7 @@ layout(std140) uniform Lights {
     mat4 u_light_view_projection;       // world -> clip space of the shadow-casting light
     vec4 u_shadow;                      // x: 1 = shadow map on, y: depth bias, z: 1 / map size, w: light index
 };
+
+// A world position made relative to the camera, as every position the engine hands the GPU is (instance rows,
+// lights): for shaders that build absolute world positions themselves (a terrain at the world's origin).
+vec3 world_to_relative(vec3 p) { return p - u_origin_high.xyz - u_origin_low.xyz; }

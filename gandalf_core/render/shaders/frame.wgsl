@@ -12,6 +12,10 @@ struct Frame {
 };
 @group(0) @binding(0) var<uniform> frame: Frame;
 
+// A world position made relative to the camera, as every position the engine hands the GPU is (instance rows,
+// lights): for shaders that build absolute world positions themselves (a terrain at the world's origin).
+fn world_to_relative(p: vec3<f32>) -> vec3<f32> { return p - frame.origin_high.xyz - frame.origin_low.xyz; }
+
 const MAX_LIGHTS: u32 = 64u;
 struct Lights {
     count: vec4<i32>,                          // x: number of lights in use

@@ -13,5 +13,5 @@ void main() {
     vec3 n = terrain_normal(v_uv, vec2(u_size, u_height_scale));
     float h = terrain_height(v_uv);
     vec3 world = vec3((v_uv.x - 0.5) * u_size, u_height_scale * h, (v_uv.y - 0.5) * u_size);
-    f_color = vec4(shade_terrain(h, n, world, u_color.rgb), 1.0);
+    f_color = vec4(shade_terrain(h, n, world_to_relative(world), u_color.rgb), 1.0);
 }

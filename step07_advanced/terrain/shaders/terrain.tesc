@@ -22,7 +22,8 @@ void main() {
     tc_uv[gl_InvocationID] = vc_uv[gl_InvocationID];
     if (gl_InvocationID == 0) {
         vec3 c0 = corner(0), c1 = corner(1), c2 = corner(2), c3 = corner(3);
-        vec3 eye = u_camera_position.xyz;
+        // The terrain is built at the world's origin; the frame's positions are camera-relative.
+        vec3 eye = u_camera_position.xyz + u_origin_high.xyz + u_origin_low.xyz;
         // OpenGL's quad edges: 0 is u = u0, 1 is v = v0, 2 is u = u1, 3 is v = v1.
         float o0 = tess_level(c0, c3, eye, u_lod.xyz);
         float o1 = tess_level(c0, c1, eye, u_lod.xyz);

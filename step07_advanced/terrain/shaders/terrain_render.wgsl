@@ -26,7 +26,7 @@ fn vs_main(@builtin(vertex_index) index: u32) -> TerrainOut {
     let v = vertices[index];
     let world = vec3<f32>((v.x - 0.5) * material.size, v.z, (v.y - 0.5) * material.size);
     var out: TerrainOut;
-    out.position = frame.projection * frame.view * vec4<f32>(world, 1.0);
+    out.position = frame.projection * frame.view * vec4<f32>(world_to_relative(world), 1.0);
     out.uv = v.xy;
     return out;
 }
@@ -37,5 +37,5 @@ fn fs_main(in: TerrainOut) -> @location(0) vec4<f32> {
     let n = terrain_normal(in.uv, vec2<f32>(material.size, material.height_scale));
     let h = terrain_height(in.uv);
     let world = vec3<f32>((in.uv.x - 0.5) * material.size, material.height_scale * h, (in.uv.y - 0.5) * material.size);
-    return vec4<f32>(shade_terrain(h, n, world, material.color.rgb), 1.0);
+    return vec4<f32>(shade_terrain(h, n, world_to_relative(world), material.color.rgb), 1.0);
 }

@@ -7,5 +7,5 @@ void main() {
     vec4 a = mix(gl_in[0].gl_Position, gl_in[1].gl_Position, uv.x);
     vec4 b = mix(gl_in[3].gl_Position, gl_in[2].gl_Position, uv.x);
     vec4 p = mix(a, b, uv.y);
-    gl_Position = u_projection * u_view * p;
+    gl_Position = u_projection * u_view * vec4(world_to_relative(p.xyz), 1.0);
 }
