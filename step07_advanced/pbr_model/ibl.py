@@ -6,7 +6,9 @@ or any :class:`~gandalf_core.resources.CubeTextureData`. From it:
 * the **irradiance map** ``E(n)/π = 1/π ∫ L(l) max(n·l, 0) dω``: exact quadrature over a 32² cube of the
   environment (every texel weighted by its solid angle), stored at 16² per face;
 * the **prefiltered environment**: level ``k`` of ``levels`` holds roughness ``k / (levels - 1)``, the GGX lobe
-  around ``n = v = r`` integrated by importance sampling (Hammersley points, weights ``n·l``, Karis 2013);
+  around ``n = v = r`` integrated by importance sampling (Hammersley points, weights ``n·l``, Karis 2013),
+  each sample reading a float mip level of the environment that matches its share of the lobe (filtered
+  importance sampling: 64 such samples are about as accurate as 512 plain ones; see ``study.py``);
 * the **BRDF lookup table** ``(A, B)(n·v, roughness)`` with ``∫ f_spec cos = F0·A + B`` (Smith-Schlick-GGX with
   ``k = α/2``), stored as R and G of a linear RGBA8 texture: column = n·v, row = roughness (top row first).
 
@@ -37,7 +39,7 @@ SUN_DIRECTION = np.array([0.45, 0.55, 0.70]) / np.linalg.norm([0.45, 0.55, 0.70]
 #: Prefiltered levels: 128² (roughness 0) down to 4² (roughness 1).
 PREFILTER_SIZE = 128
 PREFILTER_LEVELS = 6
-PREFILTER_SAMPLES = 128
+PREFILTER_SAMPLES = 64
 IRRADIANCE_SIZE = 16
 LUT_SIZE = 32
 LUT_SAMPLES = 256
@@ -93,29 +95,50 @@ def cube_radiance(cube: CubeTextureData) -> Radiance:
     texels = cube.pixels[..., :3].astype(np.float64) / 255.0
     if cube.srgb:
         texels = srgb_to_linear(texels)
-    size = cube.size
 
     def radiance(d: np.ndarray) -> np.ndarray:
-        d = np.asarray(d, dtype=np.float64)
-        flat = d.reshape(-1, 3)
-        x, y, z = flat.T
-        ax, ay, az = np.abs(flat).T
-        face = np.where((ax >= ay) & (ax >= az), np.where(x > 0, 0, 1),
-                        np.where(ay >= az, np.where(y > 0, 2, 3), np.where(z > 0, 4, 5)))
-        ma = np.choose(face, [ax, ax, ay, ay, az, az])
-        sc = np.choose(face, [-z, z, x, x, x, -x])
-        tc = np.choose(face, [-y, -y, z, -z, -y, -y])
-        s = np.clip(((sc / ma + 1.0) * 0.5) * size - 0.5, 0.0, size - 1.0)
-        t = np.clip(((tc / ma + 1.0) * 0.5) * size - 0.5, 0.0, size - 1.0)
-        s0, t0 = np.minimum(np.floor(s).astype(int), size - 2 if size > 1 else 0), np.minimum(
-            np.floor(t).astype(int), size - 2 if size > 1 else 0)
-        fs, ft = (s - s0)[:, None], (t - t0)[:, None]
-        s1, t1 = np.minimum(s0 + 1, size - 1), np.minimum(t0 + 1, size - 1)
-        top = texels[face, t0, s0] * (1 - fs) + texels[face, t0, s1] * fs
-        bottom = texels[face, t1, s0] * (1 - fs) + texels[face, t1, s1] * fs
-        return (top * (1 - ft) + bottom * ft).reshape(d.shape)
+        return sample_cube(texels, d)
 
     return radiance
+
+
+def sample_cube(texels: np.ndarray, d: np.ndarray) -> np.ndarray:
+    """Bilinear lookup (within a face, clamped at its edges) of float cube texels (6, s, s, C) at directions
+    ``d`` (..., 3), with the cube-map convention of :func:`~gandalf_core.resources.cube_face_directions`."""
+    size = texels.shape[1]
+    d = np.asarray(d, dtype=np.float64)
+    flat = d.reshape(-1, 3)
+    x, y, z = flat.T
+    ax, ay, az = np.abs(flat).T
+    face = np.where((ax >= ay) & (ax >= az), np.where(x > 0, 0, 1),
+                    np.where(ay >= az, np.where(y > 0, 2, 3), np.where(z > 0, 4, 5)))
+    ma = np.maximum(np.choose(face, [ax, ax, ay, ay, az, az]), 1e-300)
+    sc = np.choose(face, [-z, z, x, x, x, -x])
+    tc = np.choose(face, [-y, -y, z, -z, -y, -y])
+    s = np.clip(((sc / ma + 1.0) * 0.5) * size - 0.5, 0.0, size - 1.0)
+    t = np.clip(((tc / ma + 1.0) * 0.5) * size - 0.5, 0.0, size - 1.0)
+    s0 = np.minimum(np.floor(s).astype(np.int64), max(size - 2, 0))
+    t0 = np.minimum(np.floor(t).astype(np.int64), max(size - 2, 0))
+    fs, ft = (s - s0)[:, None], (t - t0)[:, None]
+    s1, t1 = np.minimum(s0 + 1, size - 1), np.minimum(t0 + 1, size - 1)
+    top = texels[face, t0, s0] * (1 - fs) + texels[face, t0, s1] * fs
+    bottom = texels[face, t1, s0] * (1 - fs) + texels[face, t1, s1] * fs
+    return (top * (1 - ft) + bottom * ft).reshape(d.shape[:-1] + (texels.shape[-1],))
+
+
+class RadianceMips:
+    """A float64 cube mip chain of a radiance function (``size``² at level 0, each texel the mean of
+    ``supersample``² samples, then 2×2 box averages): the source of filtered importance sampling."""
+
+    def __init__(self, radiance: Radiance, size: int = 128, supersample: int = 2) -> None:
+        fine = radiance(cube_face_directions(size * supersample))
+        level = fine.reshape(6, size, supersample, size, supersample, 3).mean(axis=(2, 4))
+        self.levels = [level]
+        while level.shape[1] > 1:
+            s = level.shape[1] // 2
+            level = level.reshape(6, s, 2, s, 2, 3).mean(axis=(2, 4))
+            self.levels.append(level)
+        self.size = size
 
 
 def hammersley(count: int) -> np.ndarray:
@@ -138,6 +161,7 @@ def _basis(n: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return t, np.cross(n, t)
 
 
+# --8<-- [start:sampling]
 def ggx_half_vectors(xi: np.ndarray, alpha: float) -> np.ndarray:
     """Tangent-space half vectors (M, 3) distributed by GGX's D(h)·(n·h) for the points ``xi`` (M, 2)."""
     phi = 2.0 * np.pi * xi[:, 0]
@@ -146,38 +170,69 @@ def ggx_half_vectors(xi: np.ndarray, alpha: float) -> np.ndarray:
     return np.stack([sin_theta * np.cos(phi), sin_theta * np.sin(phi), cos_theta], axis=-1)
 
 
-def prefilter_directions(radiance: Radiance, n: np.ndarray, roughness: float, samples: int) -> np.ndarray:
+def prefilter_directions(radiance: Radiance, n: np.ndarray, roughness: float, samples: int,
+                         source: RadianceMips | None = None) -> np.ndarray:
     """The GGX-prefiltered radiance (P, 3) around the unit directions ``n`` (P, 3), with ``n = v = r``:
-    ``Σ L(l) (n·l) / Σ (n·l)`` over ``samples`` importance-sampled half vectors (Karis' split sum)."""
+    ``Σ L(l) (n·l) / Σ (n·l)`` over ``samples`` importance-sampled half vectors (Karis' split sum).
+
+    Without ``source`` each sample reads ``radiance`` itself (unbiased, but a small bright sun makes it noisy).
+    With ``source`` it reads the mip level whose texels cover the sample's share of the lobe (filtered importance
+    sampling, Křivánek & Colbert 2008): ``lod = ½ log2(Ω_sample / Ω_texel) + 1`` with
+    ``Ω_sample = 1 / (M · pdf)``, ``pdf = D(h) / 4`` for n = v: far less noise, slightly more blur.
+    """
     n = np.asarray(n, dtype=np.float64).reshape(-1, 3)
     if roughness <= 0.0:
         return radiance(n)
-    h_local = ggx_half_vectors(hammersley(samples), roughness * roughness)
+    alpha = roughness * roughness
+    h_local = ggx_half_vectors(hammersley(samples), alpha)
+    cos_h = h_local[:, 2]
+    lookups: list[tuple[int, np.ndarray]] = []  # (level, per-sample weight) of the filtered route
+    if source is not None:
+        a2 = alpha * alpha
+        pdf = a2 / (np.pi * (cos_h**2 * (a2 - 1.0) + 1.0) ** 2) / 4.0
+        texel = 4.0 * np.pi / (6.0 * source.size**2)
+        top = len(source.levels) - 1
+        lod = np.clip(0.5 * np.log2(1.0 / (samples * pdf) / texel) + 1.0, 0.0, top)
+        low = np.floor(lod).astype(int)
+        frac = lod - low
+        high = np.minimum(low + 1, top)
+        for level in range(top + 1):
+            w = np.where(low == level, 1.0 - frac, 0.0) + np.where(high == level, frac, 0.0)
+            if np.any(w > 0.0):
+                lookups.append((level, w))
     t, b = _basis(n)
     out = np.empty_like(n)
     step = max(1, _CHUNK // samples)
+    weight = np.clip(2.0 * cos_h**2 - 1.0, 0.0, None)  # n·l for each sample (the same for every texel)
     for start in range(0, n.shape[0], step):
         sl = slice(start, start + step)
         frame = np.stack([t[sl], b[sl], n[sl]], axis=-1)  # (P, 3, 3), columns t, b, n
         h = np.einsum("pij,mj->pmi", frame, h_local)
-        cos_h = h_local[None, :, 2:3]  # n·h = v·h with n = v
-        light = 2.0 * cos_h * h - n[sl, None, :]
-        weight = np.clip(2.0 * cos_h[..., 0] ** 2 - 1.0, 0.0, None)  # n·l
-        total = np.einsum("pm,pmc->pc", weight, radiance(light))
-        out[sl] = total / np.maximum(weight.sum(axis=1), 1e-12)[:, None]
+        light = 2.0 * cos_h[None, :, None] * h - n[sl, None, :]
+        if source is None:
+            values = radiance(light)
+        else:
+            values = np.zeros(light.shape)
+            for level, w in lookups:
+                used = w > 0.0
+                values[:, used] += w[used][None, :, None] * sample_cube(source.levels[level], light[:, used])
+        out[sl] = np.einsum("m,pmc->pc", weight, values) / max(weight.sum(), 1e-12)
     return out
+# --8<-- [end:sampling]
 
 
 def prefilter_levels(radiance: Radiance, size: int = PREFILTER_SIZE, levels: int = PREFILTER_LEVELS,
-                     samples: int = PREFILTER_SAMPLES) -> list[np.ndarray]:
-    """Linear radiance per level, (6, size >> k, size >> k, 3) float64, level k at roughness k / (levels - 1)."""
+                     samples: int = PREFILTER_SAMPLES, filtered: bool = True) -> list[np.ndarray]:
+    """Linear radiance per level, (6, size >> k, size >> k, 3) float64, level k at roughness k / (levels - 1);
+    ``filtered`` samples a :class:`RadianceMips` of the environment (see :func:`prefilter_directions`)."""
     if levels < 2 or size >> (levels - 1) < 1:
         raise ValueError(f"{levels} levels do not fit a {size}² cube (need 2 <= levels <= log2(size) + 1)")
+    source = RadianceMips(radiance, size) if filtered else None
     out = []
     for k in range(levels):
         s = size >> k
         d = cube_face_directions(s).reshape(-1, 3)
-        out.append(prefilter_directions(radiance, d, k / (levels - 1), samples).reshape(6, s, s, 3))
+        out.append(prefilter_directions(radiance, d, k / (levels - 1), samples, source).reshape(6, s, s, 3))
     return out
 
 
@@ -233,6 +288,12 @@ def _encode_cube(linear: np.ndarray) -> np.ndarray:
     return np.rint(rgba * 255.0).astype(np.uint8)
 
 
+def encode_prefiltered(levels: list[np.ndarray], name: str = "ibl_prefiltered") -> CubeTextureData:
+    """Linear prefiltered levels (from :func:`prefilter_levels`) as one sRGB cube map with explicit mip levels."""
+    chain = [_encode_cube(level) for level in levels]
+    return CubeTextureData(tuple(chain[0]), levels=tuple(chain[1:]), name=name)
+
+
 @dataclass(frozen=True)
 class IBLMaps:
     """The textures of image-based light: ``sky`` (the background), ``irradiance``, ``prefiltered`` (one
@@ -259,14 +320,14 @@ def build_ibl(environment: Radiance | CubeTextureData | None = None, samples: in
         radiance = cube_radiance(environment)  # raises: not a cube map
     if sky_pixels is None:
         sky_pixels = tuple(_encode_cube(radiance(cube_face_directions(SKY_SIZE))))
-    chain = [_encode_cube(level) for level in prefilter_levels(radiance, size, levels, samples)]
+    prefiltered = encode_prefiltered(prefilter_levels(radiance, size, levels, samples), f"{prefix}_prefiltered")
     lut = brdf_lut()
     lut_rgba = np.concatenate([lut, np.zeros(lut.shape[:2] + (1,)), np.ones(lut.shape[:2] + (1,))], axis=-1)
     return IBLMaps(
         sky=CubeTextureData(tuple(sky_pixels), name=f"{prefix}_sky"),
         irradiance=CubeTextureData(tuple(_encode_cube(irradiance_map(radiance))), mipmaps=False,
                                    name=f"{prefix}_irradiance"),
-        prefiltered=CubeTextureData(tuple(chain[0]), levels=tuple(chain[1:]), name=f"{prefix}_prefiltered"),
+        prefiltered=prefiltered,
         brdf_lut=TextureData.from_array(np.clip(lut_rgba, 0.0, 1.0), srgb=False, wrap="clamp", mipmaps=False,
                                         name=f"{prefix}_brdf_lut"),
         levels=levels,
