@@ -245,3 +245,18 @@ def test_an_environment_that_is_not_a_cube_map_names_the_texture():
                                                    "ibl_prefiltered": flat})
     with pytest.raises(ResourceError, match=r"texture 'panorama'.*cube map"):
         ibl.build_ibl(flat)
+
+
+# --- scripts --------------------------------------------------------------------------------------------
+def test_make_model_refuses_to_overwrite_and_help_only_prints(tmp_path, capsys):
+    from step07_advanced.pbr_model import make_model, study
+
+    target = tmp_path / "cell.glb"
+    target.write_bytes(b"keep")
+    assert make_model.main(["--out", str(target)]) == 1
+    assert target.read_bytes() == b"keep" and "--force" in capsys.readouterr().err
+    for module in (make_model, study):
+        with pytest.raises(SystemExit) as info:
+            module.main(["--help"])
+        assert info.value.code == 0 and "usage" in capsys.readouterr().out
+    assert not (tmp_path / "out").exists()
