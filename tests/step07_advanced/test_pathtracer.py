@@ -363,64 +363,66 @@ def test_scatter_ior_one_goes_straight_through(impl, backend):
 
 
 # --- mutants: plausible wrong answers, each must fail at least one graded check ---------------------------
-G, W = "glsl", "wgsl"
+# Edits are (file, old, new) in the solution files, as tests/mutants/ registers them with shader_mutant.
+HG, HW = "ray_sphere.glsl", "ray_sphere.wgsl"
+SG, SW = "dielectric.glsl", "dielectric.wgsl"
 HIT_MUTANTS = [
     ("far-root-first", "returns the far root when both are in range",
-     [(G, "    if (t0 > t_min && t0 < t_max) {\n        return t0;\n    }\n    if (t1 > t_min && t1 < t_max) {\n"
+     [(HG, "    if (t0 > t_min && t0 < t_max) {\n        return t0;\n    }\n    if (t1 > t_min && t1 < t_max) {\n"
           "        return t1;\n    }",
        "    if (t1 > t_min && t1 < t_max) {\n        return t1;\n    }\n    if (t0 > t_min && t0 < t_max) {\n"
        "        return t0;\n    }"),
-      (W, "    if (t0 > t_min && t0 < t_max) {\n        return t0;\n    }\n    if (t1 > t_min && t1 < t_max) {\n"
+      (HW, "    if (t0 > t_min && t0 < t_max) {\n        return t0;\n    }\n    if (t1 > t_min && t1 < t_max) {\n"
           "        return t1;\n    }",
        "    if (t1 > t_min && t1 < t_max) {\n        return t1;\n    }\n    if (t0 > t_min && t0 < t_max) {\n"
        "        return t0;\n    }")]),
     ("ignores-t-min", "takes the near root even behind t_min",
-     [(G, "if (t0 > t_min && t0 < t_max)", "if (t0 < t_max)"),
-      (W, "if (t0 > t_min && t0 < t_max)", "if (t0 < t_max)")]),
+     [(HG, "if (t0 > t_min && t0 < t_max)", "if (t0 < t_max)"),
+      (HW, "if (t0 > t_min && t0 < t_max)", "if (t0 < t_max)")]),
     ("ignores-t-max", "takes the near root even beyond t_max",
-     [(G, "if (t0 > t_min && t0 < t_max)", "if (t0 > t_min)"),
-      (W, "if (t0 > t_min && t0 < t_max)", "if (t0 > t_min)")]),
+     [(HG, "if (t0 > t_min && t0 < t_max)", "if (t0 > t_min)"),
+      (HW, "if (t0 > t_min && t0 < t_max)", "if (t0 > t_min)")]),
     ("naive-discriminant", "half_b^2 - a*c: catastrophic cancellation for a far sphere",
-     [(G, "a * (radius * radius - dot(to_line, to_line))", "half_b * half_b - a * (dot(oc, oc) - radius * radius)"),
-      (W, "a * (radius * radius - dot(to_line, to_line))", "half_b * half_b - a * (dot(oc, oc) - radius * radius)")]),
+     [(HG, "a * (radius * radius - dot(to_line, to_line))", "half_b * half_b - a * (dot(oc, oc) - radius * radius)"),
+      (HW, "a * (radius * radius - dot(to_line, to_line))", "half_b * half_b - a * (dot(oc, oc) - radius * radius)")]),
     ("unit-direction-assumed", "a = 1: wrong t for a direction that is not unit length",
-     [(G, "float a = dot(dir, dir);", "float a = 1.0;"), (W, "let a = dot(dir, dir);", "let a = 1.0;")]),
+     [(HG, "float a = dot(dir, dir);", "float a = 1.0;"), (HW, "let a = dot(dir, dir);", "let a = 1.0;")]),
     ("full-b-as-half-b", "b = 2 dot(oc, dir) used in the half-b formulas",
-     [(G, "float half_b = dot(oc, dir);", "float half_b = 2.0 * dot(oc, dir);"),
-      (W, "let half_b = dot(oc, dir);", "let half_b = 2.0 * dot(oc, dir);")]),
+     [(HG, "float half_b = dot(oc, dir);", "float half_b = 2.0 * dot(oc, dir);"),
+      (HW, "let half_b = dot(oc, dir);", "let half_b = 2.0 * dot(oc, dir);")]),
     ("tangent-misses", "a zero discriminant (a tangent ray) counted as a miss",
-     [(G, "if (discriminant < 0.0) {", "if (discriminant <= 0.0) {"),
-      (W, "if (discriminant < 0.0) {", "if (discriminant <= 0.0) {")]),
+     [(HG, "if (discriminant < 0.0) {", "if (discriminant <= 0.0) {"),
+      (HW, "if (discriminant < 0.0) {", "if (discriminant <= 0.0) {")]),
     ("zero-on-miss", "returns 0 instead of -1 for a miss",
-     [(G, "    return -1.0;\n}", "    return 0.0;\n}"), (W, "    return -1.0;\n}", "    return 0.0;\n}")]),
+     [(HG, "    return -1.0;\n}", "    return 0.0;\n}"), (HW, "    return -1.0;\n}", "    return 0.0;\n}")]),
 ]
 SCATTER_MUTANTS = [
     ("eta-inverted", "eta = ior when entering and 1/ior when leaving",
-     [(G, "float eta = entering ? 1.0 / ior : ior;", "float eta = entering ? ior : 1.0 / ior;"),
-      (W, "let eta = select(ior, 1.0 / ior, entering);", "let eta = select(1.0 / ior, ior, entering);")]),
+     [(SG, "float eta = entering ? 1.0 / ior : ior;", "float eta = entering ? ior : 1.0 / ior;"),
+      (SW, "let eta = select(ior, 1.0 / ior, entering);", "let eta = select(1.0 / ior, ior, entering);")]),
     ("eta-always-entering", "eta = 1/ior on both sides",
-     [(G, "float eta = entering ? 1.0 / ior : ior;", "float eta = 1.0 / ior;"),
-      (W, "let eta = select(ior, 1.0 / ior, entering);", "let eta = 1.0 / ior;")]),
+     [(SG, "float eta = entering ? 1.0 / ior : ior;", "float eta = 1.0 / ior;"),
+      (SW, "let eta = select(ior, 1.0 / ior, entering);", "let eta = 1.0 / ior;")]),
     ("normal-not-flipped", "uses the outward normal when leaving the glass",
-     [(G, "vec3 n = entering ? normal : -normal;", "vec3 n = normal;"),
-      (W, "let n = select(-normal, normal, entering);", "let n = normal;")]),
+     [(SG, "vec3 n = entering ? normal : -normal;", "vec3 n = normal;"),
+      (SW, "let n = select(-normal, normal, entering);", "let n = normal;")]),
     ("no-total-internal-reflection", "refracts beyond the critical angle",
-     [(G, "if (sin2_t > 1.0 || u < reflectance)", "if (u < reflectance)"),
-      (W, "if (sin2_t > 1.0 || u < reflectance)", "if (u < reflectance)")]),
+     [(SG, "if (sin2_t > 1.0 || u < reflectance)", "if (u < reflectance)"),
+      (SW, "if (sin2_t > 1.0 || u < reflectance)", "if (u < reflectance)")]),
     ("no-schlick", "never reflects below the critical angle",
-     [(G, "if (sin2_t > 1.0 || u < reflectance)", "if (sin2_t > 1.0)"),
-      (W, "if (sin2_t > 1.0 || u < reflectance)", "if (sin2_t > 1.0)")]),
+     [(SG, "if (sin2_t > 1.0 || u < reflectance)", "if (sin2_t > 1.0)"),
+      (SW, "if (sin2_t > 1.0 || u < reflectance)", "if (sin2_t > 1.0)")]),
     ("schlick-inverted", "reflects when u > R",
-     [(G, "u < reflectance", "u > reflectance"), (W, "u < reflectance", "u > reflectance")]),
+     [(SG, "u < reflectance", "u > reflectance"), (SW, "u < reflectance", "u > reflectance")]),
     ("dir-not-normalised", "uses dir as given",
-     [(G, "vec3 d = normalize(dir);", "vec3 d = dir;"), (W, "let d = normalize(dir);", "let d = dir;")]),
+     [(SG, "vec3 d = normalize(dir);", "vec3 d = dir;"), (SW, "let d = normalize(dir);", "let d = dir;")]),
     ("result-not-normalised", "no sqrt clamp and no normalisation of the refracted ray",
-     [(G, "-sqrt(max(0.0, 1.0 - dot(t_perp, t_perp))) * n;\n    return normalize(t_perp + t_par);",
+     [(SG, "-sqrt(max(0.0, 1.0 - dot(t_perp, t_perp))) * n;\n    return normalize(t_perp + t_par);",
        "-sqrt(1.0 - dot(t_perp, t_perp)) * n;\n    return (t_perp + t_par) * length(dir);"),
-      (W, "-sqrt(max(0.0, 1.0 - dot(t_perp, t_perp))) * n;\n    return normalize(t_perp + t_par);",
+      (SW, "-sqrt(max(0.0, 1.0 - dot(t_perp, t_perp))) * n;\n    return normalize(t_perp + t_par);",
        "-sqrt(1.0 - dot(t_perp, t_perp)) * n;\n    return (t_perp + t_par) * length(dir);")]),
     ("schlick-cubed", "(1 - cos)^3 in Schlick's formula",
-     [(G, "pow(1.0 - cos_i, 5.0)", "pow(1.0 - cos_i, 3.0)"), (W, "pow(1.0 - cos_i, 5.0)", "pow(1.0 - cos_i, 3.0)")]),
+     [(SG, "pow(1.0 - cos_i, 5.0)", "pow(1.0 - cos_i, 3.0)"), (SW, "pow(1.0 - cos_i, 5.0)", "pow(1.0 - cos_i, 3.0)")]),
 ]
 
 
@@ -429,8 +431,8 @@ def _mutant_fails(tmp_path: Path, stem: str, language: str, edits, checks: dict)
 
     source = _impl_dir(solutions) / f"{stem}.{language}"
     text = source.read_text()
-    for lang, old, new in edits:
-        if lang == language:
+    for file, old, new in edits:
+        if file == source.name:
             assert text.count(old) == 1, f"{old!r} must occur once in {source}"
             text = text.replace(old, new)
     (tmp_path / source.name).write_text(text)
