@@ -15,7 +15,7 @@ base colour factor.
 
 What cannot be mapped raises :class:`ResourceError` naming the file, the material and the field: a missing
 image file, a mirrored-repeat or per-axis wrap mode (the engine has one wrap mode, repeat or clamp), a second
-UV set, a textured material on a mesh without UVs, factors out of range.
+UV set, a textured material on a mesh without UVs, factors out of range, a required extension.
 """
 
 from __future__ import annotations
@@ -226,6 +226,9 @@ def load_gltf(path: str | Path, shader: str = "pbr_model", extra_textures: Seque
     from gandalf_core.resources.mesh_loader import _parts, _to_mesh_data
 
     file = _File(Path(path))
+    required = file.doc.get("extensionsRequired", [])
+    if required:
+        raise ResourceError(file.label, "extensionsRequired", f"{', '.join(map(str, required))} not supported")
     textures: dict[str, TextureData] = {}
     materials: dict[str, MaterialData] = {}
     by_index: dict[int, str] = {}

@@ -198,3 +198,11 @@ def test_the_step07_model_loads_with_all_five_maps():
     mesh = model.meshes[mesh_name]
     assert mesh.tangents is not None and mesh.uvs is not None
     assert MODEL.stat().st_size < 300_000
+
+
+def test_required_extensions_are_refused(tmp_path):
+    path = write_gltf(tmp_path, {"name": "Plain"})
+    doc = json.loads(path.read_text())
+    doc["extensionsRequired"] = ["KHR_texture_transform"]
+    path.write_text(json.dumps(doc))
+    assert "KHR_texture_transform" in _error(path)

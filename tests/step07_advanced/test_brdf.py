@@ -5,7 +5,9 @@ camera, same lights; environment light off).
 Tolerance (8-bit steps, all channels of the pixels at least 2 pixels inside the silhouette): mean absolute
 error <= 1.0 and 99th percentile <= 3. The reference solution measures at most 0.09 and 1 (largest error 2)
 in both APIs.
-The cases include the extremes roughness 0 (clamped to 0.045) and 1, metallic 0 and 1.
+The cases include the extremes roughness 0 (clamped to 0.045) and 1, metallic 0 and 1. The sphere's shader
+(``pbr_lighting.*``) also calls ``base_reflectance`` and ``diffuse_albedo`` from the same file, so this render
+passes once those are written too; ``test_pbr_model_brdf.py`` grades every function on its own.
 """
 
 from __future__ import annotations
