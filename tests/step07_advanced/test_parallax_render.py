@@ -5,9 +5,10 @@ of the student's three functions must move the picture away from plain normal ma
 solution measures about 11), and parallax occlusion mapping must converge faster with layers than steep parallax
 (RMSE of 8 against 64 layers below half of steep's; the solution measures about 0.2 against 1.6).
 Not graded: the two APIs agree on the tour picture at 640×480 (PSNR ≥ 35 dB; measured 74 dB: 0.6 % of the
-pixels differ, by at most 4 8-bit steps), with height_scale 0 every method draws the normal-mapped picture exactly, bad parameters
-get a ResourceError naming the material and the parameter, the study's numpy camera sees exactly the pixels the
-strips are drawn on (≥ 99.5 %; measured 100 % in both APIs at 128×96), and the study runs (``--quick`` at 64×48).
+pixels differ, by at most 4 8-bit steps), with height_scale 0 every method draws the normal-mapped picture
+exactly, bad parameters get a ResourceError naming the material and the parameter, the study's numpy camera sees
+exactly the pixels the strips are drawn on (≥ 99.5 %; measured 100 % in both APIs at 128×96), and the study runs
+(``--quick`` at 64×48).
 """
 
 from __future__ import annotations
