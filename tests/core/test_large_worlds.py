@@ -118,3 +118,25 @@ def test_time_steps_stay_exact_for_a_year():
             assert 0.0 <= a < TIME_WRAP
             step = b - a + (wraps_b - wraps_a) * TIME_WRAP  # across a wrap, the wrap count makes up the jump
             assert abs(step - 1 / 60) <= 0.01 / 60, f"a step of {step} s near t = {start} s"
+
+
+def scaled_scene(s: float) -> Scene:
+    """A lit sphere of radius s, seen from 3 s away: the same picture at every scale."""
+    scene = Scene("scaled")
+    scene.assets.mesh("sphere", uv_sphere(1.0, 32, 16))
+    scene.assets.material("M", MaterialData("lit", color=(0.9, 0.6, 0.3)))
+    scene.create_entity(TransformComponent(scale=s), MeshComponent("sphere"), MaterialComponent("M"))
+    sun = np.array([-2.0, 4.0, 3.0])
+    scene.create_entity(TransformComponent(sun, quaternion=look_at_rotation(sun, (0, 0, 0))),
+                        LightComponent("directional", intensity=1.5))
+    eye = np.array([0.0, 0.0, 3.0 * s])
+    scene.create_entity(TransformComponent(eye), CameraComponent(50.0, 0.1 * s, 10.0 * s))
+    return scene
+
+
+@pytest.mark.parametrize("s", [1e-20, 1e-12, 1e15])
+def test_tiny_and_huge_objects_keep_their_normals(backend, s):
+    reference = render(backend, scaled_scene(1.0))[0]
+    scaled = render(backend, scaled_scene(s))[0]
+    worst = int(np.abs(reference.astype(int) - scaled.astype(int)).max())
+    assert worst <= 2, f"{backend}: a sphere of radius {s} shades differently from one of radius 1 (up to {worst}/255)"
