@@ -339,6 +339,24 @@ SHADER_MUTANTS = [
 ]
 
 
+#: The exercise each mutant breaks, for registering them:
+#:     for name, description, edits in SHADER_MUTANTS:
+#:         shader_mutant(MUTANTS, "step07_advanced", MUTANT_EXERCISE[name], name, description, edits)
+MUTANT_EXERCISE = {
+    "brdf-d-no-pi": "ggx_distribution", "brdf-d-alpha-is-roughness": "ggx_distribution",
+    "brdf-d-no-clamp": "ggx_distribution", "brdf-k-swapped": "smith_geometry",
+    "brdf-k-ibl-perceptual": "smith_geometry", "brdf-g-no-clamp": "smith_geometry", "brdf-f-no-clamp": "fresnel",
+    "brdf-f-roughness-ignored": "fresnel", "brdf-f0-base-for-dielectrics": "metallic_roughness",
+    "brdf-diffuse-ignores-fresnel": "metallic_roughness", "brdf-diffuse-metals": "metallic_roughness",
+    "brdf-specular-no-4": "ggx_specular", "brdf-specular-unclamped": "ggx_specular",
+    "brdf-specular-no-half-guard": "ggx_specular", "brdf-specular-f-of-n-dot-v": "ggx_specular",
+}
+
+
+def test_every_mutant_names_its_exercise():
+    assert set(MUTANT_EXERCISE) == {m[0] for m in SHADER_MUTANTS}
+
+
 @pytest.mark.parametrize("language", ["glsl", "wgsl"])
 @pytest.mark.parametrize("mutant", [m[0] for m in SHADER_MUTANTS])
 def test_every_mutant_fails_a_graded_check(tmp_path, mutant, language):
