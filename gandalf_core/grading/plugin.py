@@ -389,7 +389,7 @@ def pytest_sessionstart(session: pytest.Session) -> None:
 
 
 def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pytest.Config) -> None:
-    if _is_worker(config):
+    if _is_worker(config) or config.getoption("collectonly"):
         return
     _merge_worker_lists(config)
     if not _graded:

@@ -1,0 +1,251 @@
+"""``python -m gandalf_core.grading.batch SUBMISSIONS_DIR --out DIR [--jobs N] [--steps step01 ...]``: grade a class.
+
+**Layout.** ``SUBMISSIONS_DIR`` holds one folder per student (its name is the student's id in the gradebook).
+Each holds the student's ``stepNN_topic/exercises/`` folders — either just those (what a Classroom or LMS
+download of the exercise folders gives) or a whole checkout of the repository (only its
+``step*/exercises/`` folders are used; nothing else of it is imported). A step a student did not hand in is
+graded on this checkout's own ``exercises/`` (the untouched stubs: CI checks they fail every graded test).
+
+**Isolation.** This process never imports a student's code. Each submission is graded by its own
+``python -m gandalf_core.grading`` process with ``GANDALF_IMPL`` pointing every step's ``exercises`` at the
+submission's folder, and that process runs the tests in a pytest-xdist worker, so a crash or a runaway
+test fails only that test (see the front end).
+
+**Output** in ``--out``: ``gradebook.csv`` (one row per student: total, percent and every exercise's points),
+``gradebook.json`` (the same plus failed-test counts), and per student ``<id>/grade.json`` (the plugin's
+JSON), ``<id>/results.json`` (Gradescope's format), ``<id>/report.md`` (score per exercise and every failed
+test with its message) and ``<id>/log.txt`` (the grader's output).
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import os
+import subprocess
+import sys
+import time
+from concurrent.futures import ThreadPoolExecutor, as_completed
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def step_packages(root: Path = ROOT) -> list[str]:
+    """The step packages of the checkout that have exercises and tests (``step01_window``, ...)."""
+    return sorted(
+        p.parent.parent.name
+        for p in root.glob("step*/exercises/__init__.py")
+        if (root / "tests" / p.parent.parent.name).is_dir()
+    )
+
+
+def find_steps(submission: Path, steps: list[str]) -> dict[str, Path]:
+    """Step package -> the submission's ``exercises`` folder, for the steps it hands in."""
+    found = {}
+    for step in steps:
+        for candidate in (submission / step / "exercises", submission / "exercises" / step):
+            if (candidate / "__init__.py").is_file():
+                found[step] = candidate.resolve()
+                break
+    return found
+
+
+@dataclass
+class Graded:
+    student: str
+    steps: list[str]
+    seconds: float = 0.0
+    result: dict[str, Any] = field(default_factory=dict)
+    error: str = ""
+
+    @property
+    def earned(self) -> float:
+        return float(self.result.get("earned", 0.0))
+
+    @property
+    def possible(self) -> float:
+        return float(self.result.get("possible", 0.0))
+
+
+def grade_submission(
+    student: str,
+    folder: Path,
+    out: Path,
+    steps: list[str],
+    *,
+    workers: int = 1,
+    timeout: float = 60.0,
+    limit: float = 1800.0,
+) -> Graded:
+    """Grade one submission in its own process; write its files under ``out/<student>/``."""
+    target = out / student
+    target.mkdir(parents=True, exist_ok=True)
+    handed_in = find_steps(folder, steps)
+    start = time.perf_counter()
+    cmd = [sys.executable, "-m", "gandalf_core.grading", *[str(ROOT / "tests" / s) for s in steps]]
+    cmd += ["--json", str(target / "grade.json"), "--gradescope", str(target / "results.json")]
+    cmd += ["--jobs", str(workers), "--timeout", f"{timeout:g}"]
+    env = {k: v for k, v in os.environ.items() if k != "GANDALF_IMPL"}
+    env["GANDALF_IMPL"] = os.pathsep.join(f"{step}={path}" for step, path in handed_in.items())
+    env["PYTHONDONTWRITEBYTECODE"] = "1"
+    graded = Graded(student, sorted(handed_in))
+    for stale in ("grade.json", "results.json"):
+        (target / stale).unlink(missing_ok=True)
+    with open(target / "log.txt", "w") as log:
+        try:
+            proc = subprocess.run(cmd, cwd=ROOT, env=env, stdout=log, stderr=subprocess.STDOUT, timeout=limit)
+            if proc.returncode != 0:
+                graded.error = f"the grader exited with {proc.returncode} (see {student}/log.txt)"
+        except subprocess.TimeoutExpired:
+            graded.error = f"grading took over {limit:g} s and was stopped"
+    graded.seconds = time.perf_counter() - start
+    grade_file = target / "grade.json"
+    if grade_file.exists():
+        graded.result = json.loads(grade_file.read_text())
+    elif not graded.error:
+        graded.error = "no grade was written (see log.txt)"
+    write_report(graded, target / "report.md")
+    return graded
+
+
+def write_report(graded: Graded, path: Path) -> None:
+    """A short markdown report for one student: points per exercise and each failed test's message."""
+    result = graded.result
+    lines = [f"# {graded.student}", ""]
+    if graded.error:
+        lines += [f"**Grading problem:** {graded.error}", ""]
+    if result:
+        lines += [
+            f"Score: **{result['earned']:.2f} / {result['possible']:.2f}** ({result['score']:.0%}); "
+            f"steps handed in: {', '.join(graded.steps) or 'none'}.",
+            "",
+            "| step | exercise | points | tests passed |",
+            "|---|---|---|---|",
+        ]
+        for x in result["exercises"]:
+            lines.append(
+                f"| {x['step']} | {x['exercise']} | {x['earned']:.2f} / {x['possible']:.2f} "
+                f"| {int(x['passed'])} / {int(x['tests'])} |"
+            )
+        failed = [t for t in result["tests"] if not t["passed"]]
+        if failed:
+            lines += ["", f"## Failed tests ({len(failed)})", ""]
+            for t in failed:
+                message = " ".join(t["message"].split())[:400]
+                lines.append(f"- `{t['test'].split('::', 1)[-1]}` ({t['exercise']}): {message}")
+    path.write_text("\n".join(lines) + "\n")
+
+
+def write_gradebook(graded: list[Graded], out: Path) -> tuple[Path, Path]:
+    """``gradebook.csv`` and ``gradebook.json`` for every student."""
+    columns: list[tuple[str, str]] = sorted(
+        {(x["step"], x["exercise"]) for g in graded for x in g.result.get("exercises", [])}
+    )
+    csv_path = out / "gradebook.csv"
+    with open(csv_path, "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["student", "earned", "possible", "percent", *[f"{s}:{e}" for s, e in columns], "error"])
+        for g in graded:
+            points = {(x["step"], x["exercise"]): x["earned"] for x in g.result.get("exercises", [])}
+            percent = 100.0 * g.earned / g.possible if g.possible else 0.0
+            writer.writerow(
+                [
+                    g.student,
+                    f"{g.earned:.4f}",
+                    f"{g.possible:.4f}",
+                    f"{percent:.2f}",
+                    *[f"{points.get(c, 0.0):.4f}" for c in columns],
+                    g.error,
+                ]
+            )
+    json_path = out / "gradebook.json"
+    json_path.write_text(
+        json.dumps(
+            [
+                {
+                    "student": g.student,
+                    "earned": g.earned,
+                    "possible": g.possible,
+                    "score": g.result.get("score", 0.0),
+                    "steps_handed_in": g.steps,
+                    "exercises": {f"{x['step']}:{x['exercise']}": x["earned"] for x in g.result.get("exercises", [])},
+                    "failed_tests": sum(1 for t in g.result.get("tests", []) if not t["passed"]),
+                    "seconds": round(g.seconds, 2),
+                    "error": g.error,
+                }
+                for g in graded
+            ],
+            indent=2,
+        )
+    )
+    return csv_path, json_path
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(
+        prog="python -m gandalf_core.grading.batch", description=__doc__.splitlines()[0].split(": ", 1)[-1]
+    )
+    parser.add_argument("submissions", type=Path, help="a folder with one folder per student")
+    parser.add_argument("--out", type=Path, required=True, help="where the gradebook and reports go")
+    parser.add_argument(
+        "--jobs", "-j", type=int, default=max(1, (os.cpu_count() or 2) // 2), help="submissions graded at once"
+    )
+    parser.add_argument("--workers", type=int, default=1, help="xdist workers per submission (default 1)")
+    parser.add_argument("--steps", nargs="+", default=None, help="step packages to grade (default: all; prefixes ok)")
+    parser.add_argument("--students", nargs="+", default=None, help="only these students (folder names)")
+    parser.add_argument("--timeout", type=float, default=60.0, help="seconds per test (default 60)")
+    parser.add_argument("--limit", type=float, default=1800.0, help="seconds per submission (default 1800)")
+    args = parser.parse_args(argv)
+
+    if not args.submissions.is_dir():
+        parser.error(f"SUBMISSIONS_DIR {args.submissions} is not a folder")
+    all_steps = step_packages()
+    steps = all_steps if not args.steps else [s for s in all_steps if any(s.startswith(p) for p in args.steps)]
+    if not steps:
+        parser.error(f"--steps {args.steps} matches none of {all_steps}")
+    students = sorted(p for p in args.submissions.iterdir() if p.is_dir() and not p.name.startswith("."))
+    if args.students:
+        students = [p for p in students if p.name in set(args.students)]
+    if not students:
+        parser.error(f"no student folders in {args.submissions}")
+    args.out.mkdir(parents=True, exist_ok=True)
+    print(f"grading {len(students)} submissions, steps {', '.join(steps)}, {args.jobs} at a time", flush=True)
+    start = time.perf_counter()
+    graded: list[Graded] = []
+    with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        futures = [
+            pool.submit(
+                grade_submission,
+                p.name,
+                p,
+                args.out,
+                steps,
+                workers=args.workers,
+                timeout=args.timeout,
+                limit=args.limit,
+            )
+            for p in students
+        ]
+        for done, future in enumerate(as_completed(futures), 1):
+            g = future.result()
+            graded.append(g)
+            elapsed = time.perf_counter() - start
+            eta = elapsed / done * (len(students) - done)
+            status = f"{g.earned:6.2f} / {g.possible:<6.2f}" if g.result else "  no grade     "
+            print(
+                f"[{done:>3}/{len(students)}] {g.student:<24} {status} {g.seconds:6.1f} s"
+                f"  (elapsed {elapsed:5.0f} s, ~{eta:4.0f} s left){'  ' + g.error if g.error else ''}",
+                flush=True,
+            )
+    graded.sort(key=lambda g: g.student)
+    csv_path, json_path = write_gradebook(graded, args.out)
+    print(f"gradebook: {csv_path} and {json_path}; reports in {args.out}/<student>/report.md")
+    return 1 if any(g.error for g in graded) else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
