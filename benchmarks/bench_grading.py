@@ -1,0 +1,112 @@
+"""How long grading one student's whole submission takes: ``python benchmarks/bench_grading.py``.
+
+The submission is the reference solutions of every step (a complete one: every graded test runs to its end,
+which is the slow case), overlaid as each step's ``exercises`` through ``GANDALF_IMPL`` — exactly how the
+batch grader grades a student. Each configuration runs ``python -m gandalf_core.grading`` on all the steps'
+tests in a fresh process and is timed wall-clock (the median of ``--repeat`` runs); the slowest tests and
+the time per step come from pytest's own durations.
+
+Configurations (``--configs``): ``serial`` (``--jobs 0``: one process, no isolation), ``n1`` (one xdist
+worker: isolation, no parallelism), ``n2`` (two workers, the front end's default) and ``n4``.
+
+Prints a table and, with ``--json FILE``, writes the figures.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from collections import defaultdict
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+CONFIGS = {"serial": ["--jobs", "0"], "n1": ["--jobs", "1"], "n2": ["--jobs", "2"], "n4": ["--jobs", "4"]}
+DURATION = re.compile(r"^\s*([\d.]+)s (call|setup|teardown)\s+(\S+)")
+
+
+def steps(selected: list[str] | None) -> list[str]:
+    found = sorted(p.parent.parent.name for p in ROOT.glob("step*/solutions/__init__.py"))
+    found = [s for s in found if (ROOT / "tests" / s).is_dir()]
+    return [s for s in found if not selected or any(s.startswith(x) for x in selected)]
+
+
+def run(config: str, chosen: list[str], durations: int) -> dict:
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "grade.json"
+        env = {**os.environ, "GANDALF_IMPL": os.pathsep.join(f"{s}={ROOT / s / 'solutions'}" for s in chosen)}
+        cmd = [sys.executable, "-m", "gandalf_core.grading", *[f"tests/{s}" for s in chosen], "--json", str(out)]
+        cmd += [*CONFIGS[config], "--durations=0", "--durations-min=0"]
+        start = time.perf_counter()
+        proc = subprocess.run(cmd, cwd=ROOT, env=env, capture_output=True, text=True)
+        seconds = time.perf_counter() - start
+        result = json.loads(out.read_text()) if out.exists() else {}
+    per_test: dict[str, float] = defaultdict(float)
+    for line in proc.stdout.splitlines():
+        m = DURATION.match(line)
+        if m:
+            per_test[m.group(3)] += float(m.group(1))
+    return {
+        "config": config,
+        "seconds": seconds,
+        "exit": proc.returncode,
+        "graded_tests": result.get("graded_tests", 0),
+        "passed": result.get("graded_tests_passed", 0),
+        "score": result.get("score", 0.0),
+        "slowest": sorted(per_test.items(), key=lambda kv: -kv[1])[:durations],
+        "per_step": {
+            step: round(sum(v for k, v in per_test.items() if k.startswith(f"tests/{step}/")), 2) for step in chosen
+        },
+        "tail": proc.stdout.strip().splitlines()[-3:],
+    }
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--configs", nargs="+", default=["serial", "n2"], choices=sorted(CONFIGS))
+    parser.add_argument("--steps", nargs="+", default=None, help="step prefixes (default: every step)")
+    parser.add_argument("--repeat", type=int, default=1, help="runs per configuration (median reported)")
+    parser.add_argument("--durations", type=int, default=15, help="how many of the slowest tests to show")
+    parser.add_argument("--json", type=Path, help="write the figures to this file")
+    args = parser.parse_args(argv)
+    chosen = steps(args.steps)
+    print(f"grading the solutions of {', '.join(chosen)} as one student's submission; cpu_count={os.cpu_count()}")
+    rows = []
+    for config in args.configs:
+        runs = []
+        for i in range(args.repeat):
+            print(f"  {config} run {i + 1}/{args.repeat} ...", flush=True)
+            runs.append(run(config, chosen, args.durations))
+        best = sorted(runs, key=lambda r: r["seconds"])[len(runs) // 2]
+        best["median_seconds"] = statistics.median(r["seconds"] for r in runs)
+        rows.append(best)
+        print(
+            f"  {config:<7} {best['median_seconds']:7.1f} s  {best['passed']}/{best['graded_tests']} graded tests "
+            f"passed (score {best['score']:.0%}, exit {best['exit']})",
+            flush=True,
+        )
+    print("\n| configuration | seconds (median) | graded tests | passed |")
+    print("|---|---|---|---|")
+    for r in rows:
+        print(f"| {r['config']} | {r['median_seconds']:.1f} | {r['graded_tests']} | {r['passed']} |")
+    slow = rows[0]["slowest"]
+    if slow:
+        print(f"\nslowest tests ({rows[0]['config']}; setup + call + teardown):")
+        for nodeid, seconds in slow:
+            print(f"  {seconds:6.2f} s  {nodeid}")
+    print(f"\ntest time per step ({rows[0]['config']}; summed over tests, excluding start-up and collection):")
+    for step, seconds in rows[0]["per_step"].items():
+        print(f"  {seconds:7.2f} s  {step}")
+    if args.json:
+        args.json.write_text(json.dumps(rows, indent=2))
+    return 0 if all(r["exit"] == 0 for r in rows) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
