@@ -5,8 +5,9 @@ only stable and repeatable at a fixed ``dt``. The accumulator pattern turns each
 number of fixed steps and keeps the remainder for the next frame:
 
 * a frame time above ``max_frame_time`` is clamped (a two-second stall must not fire 240 steps at once);
-* at most ``max_steps`` steps run per frame; time beyond that is dropped (counted in ``dropped``) so a slow
-  simulation cannot fall further and further behind (the "spiral of death");
+* at most ``max_steps`` steps run per frame; time beyond that is dropped (counted in ``dropped`` and reported
+  once with a warning, never silently) so a slow simulation cannot fall further and further behind (the
+  "spiral of death");
 * ``alpha`` (in [0, 1)) tells how far the frame lies between the last two simulated states, so a renderer
   can interpolate ``previous + alpha * (current - previous)`` and motion looks smooth at any frame rate.
 """
@@ -14,6 +15,7 @@ number of fixed steps and keeps the remainder for the next frame:
 from __future__ import annotations
 
 import math
+import warnings
 
 # Frame times are sums of floats: 1/60 seconds at dt = 1/120 must give 2 steps even when rounding makes the
 # ratio 1.9999999999999998.
@@ -41,6 +43,7 @@ class FixedStep:
         """Add one frame's time (seconds) and return the number of fixed steps to run for it."""
         if not (math.isfinite(frame_ts) and frame_ts >= 0.0):
             raise ValueError(f"FixedStep.advance: frame time must be a finite number >= 0, got {frame_ts!r}")
+        dropped_before = self.dropped
         if frame_ts > self.max_frame_time:
             self.dropped += frame_ts - self.max_frame_time
             frame_ts = self.max_frame_time
@@ -50,6 +53,10 @@ class FixedStep:
         if n > self.max_steps:
             self.dropped += (n - self.max_steps) * self.dt
             n = self.max_steps
+        if self.dropped > dropped_before and dropped_before == 0.0:
+            warnings.warn(f"FixedStep: {self.dropped:.3f} s of simulated time dropped (frames longer than "
+                          f"{self.max_frame_time} s or more than {self.max_steps} steps of {self.dt} s); "
+                          "FixedStep.dropped adds it up", stacklevel=2)
         self.steps += n
         return n
 

@@ -1,9 +1,16 @@
-"""The frame clock: real time in a window, a fixed step when asked (deterministic tests and captures)."""
+"""The frame clock: real time in a window, a fixed step when asked (deterministic tests and captures).
+
+The time-step policy, one for every system: each frame's step (measured, fixed, or given to ``app.step(dt)``) is
+at most :attr:`Clock.max_dt` (0.25 s, or ``fixed_dt`` when that is larger), so a stall cannot hand a
+physics system a step it explodes on. What a clamp cuts off is added to :attr:`Clock.dropped` and reported once
+with a warning: simulated time is never lost silently.
+"""
 
 from __future__ import annotations
 
 import math
 import time
+import warnings
 
 
 class Clock:
@@ -18,6 +25,10 @@ class Clock:
         if fixed_dt is not None and not (math.isfinite(fixed_dt) and fixed_dt > 0):
             raise ValueError(f"fixed_dt must be positive seconds (and finite), got {fixed_dt!r}")
         self.fixed_dt = fixed_dt
+        #: The largest step any system sees in one frame.
+        self.max_dt = max(self.MAX_DT, fixed_dt or 0.0)
+        #: Seconds of frame time the clamp has cut off so far.
+        self.dropped = 0.0
         self.time = 0.0  # simulated seconds since start
         self.frame = 0
         self._last = time.perf_counter()
@@ -35,11 +46,17 @@ class Clock:
             elif self.frame == 0:
                 dt = self.FIRST_DT  # the time since start-up (loading, compiling) is not a frame
             else:
-                dt = min(now - self._last, self.MAX_DT)
+                dt = now - self._last
         elif not math.isfinite(dt):
             raise ValueError(f"a frame's dt must be finite, got {dt!r}")
         elif dt < 0:
             raise ValueError(f"a frame's dt cannot be negative, got {dt!r}")
+        if dt > self.max_dt:
+            if self.dropped == 0.0:
+                warnings.warn(f"a frame of {dt:.3f} s is clamped to {self.max_dt:.3f} s, so no system gets a step "
+                              "it cannot handle; Clock.dropped adds up the time cut off", stacklevel=3)
+            self.dropped += dt - self.max_dt
+            dt = self.max_dt
         self._last = now
         self.time += dt
         self.frame += 1

@@ -141,10 +141,23 @@ def test_huge_real_frame_times_are_clamped(fake_time: list[float]) -> None:
     clock = Clock()
     clock.tick()
     fake_time[0] += 30.0  # a breakpoint or a dragged window
-    assert clock.tick() == Clock.MAX_DT
+    with pytest.warns(UserWarning, match="clamped to 0.250 s"):
+        assert clock.tick() == Clock.MAX_DT
+    assert clock.dropped == pytest.approx(30.0 - Clock.MAX_DT)
     fake_time[0] += 0.01
     assert clock.tick() == pytest.approx(0.01, abs=1e-9)  # the next frame measures from the stall's end
     assert clock.time == pytest.approx(Clock.FIRST_DT + Clock.MAX_DT + 0.01, abs=1e-9)
+
+
+def test_every_step_sees_the_same_clamp(fake_time: list[float]) -> None:
+    """app.step(1.0) gets the same clamp as a measured stall; the cut-off time is counted, and reported once."""
+    clock = Clock(fixed_dt=1 / 60)
+    with pytest.warns(UserWarning, match="Clock.dropped"):
+        assert clock.tick(1.0) == Clock.MAX_DT
+    assert clock.tick(2.0) == Clock.MAX_DT  # reported once: no second warning
+    assert clock.dropped == pytest.approx(0.75 + 1.75)
+    assert clock.time == pytest.approx(2 * Clock.MAX_DT)
+    assert Clock(fixed_dt=0.5).max_dt == 0.5  # a chosen large fixed step is the limit itself
 
 
 def test_explicit_dt_and_negative_dt(fake_time: list[float]) -> None:

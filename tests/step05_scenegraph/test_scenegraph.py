@@ -138,8 +138,10 @@ def test_springs_survive_a_huge_frame_time():
     scene = Scene("stall")
     e = scene.create_entity(TransformComponent((0, 1, 0)), SpringComponent(rest=(0, 0, 0), integrator="rk4"))
     system = scene.add_system(SpringSystem())
-    run_scene(scene, 1, dt=5.0)  # a five-second stall: clamped, capped at max_steps
+    with pytest.warns(UserWarning, match="dropped"):  # never silently
+        run_scene(scene, 1, dt=5.0)  # a five-second stall: clamped, capped at max_steps
     assert system.clock.steps == system.clock.max_steps
+    assert system.clock.dropped > 4.0
     assert np.all(np.isfinite(scene.get_component(e, TransformComponent).translation))
 
 
@@ -158,7 +160,8 @@ def test_fixed_step_counts_whole_steps_and_keeps_the_rest():
 
 def test_fixed_step_clamps_and_caps():
     clock = FixedStep(0.01, max_frame_time=0.25, max_steps=8)
-    assert clock.advance(10.0) == 8
+    with pytest.warns(UserWarning, match="9.920 s of simulated time dropped"):  # reported, never silent
+        assert clock.advance(10.0) == 8
     assert clock.dropped == pytest.approx(10.0 - 0.08, abs=1e-9)
     assert 0.0 <= clock.alpha < 1.0
     for bad in (-1.0, float("nan"), float("inf")):
