@@ -17,7 +17,10 @@ the mutant as the step's ``exercises``. A mutant that passes every graded test o
 the tests have a gap. Before the mutants, an unchanged copy of each step's solutions (the control) must
 pass every graded test, so a failure is the mutation's doing and not the copying's.
 
-The run exits with 1 when a mutant survives, a control fails or a mutant cannot be built.
+The run exits with 1 when a mutant survives, a control fails or a mutant cannot be built. Survivors already
+reported to the test authors are listed in ``tests/mutants/known_gaps.txt``: they are printed as KNOWN GAP and
+do not fail the run (``--strict`` fails on them too), and an entry whose mutant is killed now is STALE and
+fails the run, so the list shrinks as the tests improve.
 """
 
 from __future__ import annotations
@@ -131,6 +134,18 @@ def load_mutants(folder: Path = DEFAULT_DIR) -> list[Mutant]:
             m.source = str(path)
             mutants.append(m)
     return mutants
+
+
+def load_known_gaps(path: Path) -> dict[str, str]:
+    """``known_gaps.txt``: one ``step:exercise:mutant  # why`` per line, survivors already reported."""
+    gaps: dict[str, str] = {}
+    if not path.is_file():
+        return gaps
+    for line in path.read_text().splitlines():
+        ident, _, why = line.partition("#")
+        if ident.strip():
+            gaps[ident.strip()] = why.strip() or "known gap"
+    return gaps
 
 
 def apply_mutant(package_name: str, definitions: str, ident: str) -> None:
@@ -381,6 +396,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--jobs", "-j", type=int, default=os.cpu_count() or 2, help="mutants graded at once")
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per test (default 60)")
     parser.add_argument("--no-control", action="store_true", help="skip the unchanged-solutions control runs")
+    parser.add_argument(
+        "--known-gaps",
+        type=Path,
+        default=None,
+        help="survivors already reported (default: <dir>/known_gaps.txt); they are listed but do not fail the run",
+    )
+    parser.add_argument("--strict", action="store_true", help="fail on every survivor, known gaps too")
     parser.add_argument("--list", action="store_true", help="list the mutants and exit")
     parser.add_argument("--json", type=Path, help="write the outcomes as JSON to this file")
     args = parser.parse_args(argv)
@@ -417,6 +439,11 @@ def main(argv: list[str] | None = None) -> int:
 
     controls = [o for o in outcomes if o.mutant.name == "control" and o.mutant.exercise == "*"]
     results = [o for o in outcomes if o not in controls]
+    known = {} if args.strict else load_known_gaps(args.known_gaps or args.dir / "known_gaps.txt")
+    for o in results:
+        if o.status == "survived" and o.mutant.ident in known:
+            o.status = "known-gap"
+    stale = [o for o in results if o.mutant.ident in known and o.status == "killed"]
     survivors = [o for o in results if o.status == "survived"]
     errors = [o for o in results if o.status == "error"] + [o for o in controls if o.status != "passed"]
     results.sort(key=lambda o: o.mutant.ident)
@@ -432,8 +459,13 @@ def main(argv: list[str] | None = None) -> int:
         f"\n{killed}/{len(results)} mutants killed, {len(survivors)} survived, {len(errors)} errors "
         f"in {time.perf_counter() - start:.1f} s"
     )
+    for o in results:
+        if o.status == "known-gap":
+            print(f"KNOWN GAP {o.mutant.ident}: {o.mutant.description} ({known[o.mutant.ident]})")
     for o in survivors:
         print(f"SURVIVED {o.mutant.ident}: {o.mutant.description} (passed all {o.tests} graded tests)")
+    for o in stale:
+        print(f"STALE {o.mutant.ident} is listed in known_gaps.txt but a test kills it now: remove the line")
     for o in errors:
         print(f"ERROR {o.mutant.ident}: {o.detail}")
     if args.json:
@@ -456,7 +488,7 @@ def main(argv: list[str] | None = None) -> int:
                 indent=2,
             )
         )
-    return 1 if survivors or errors else 0
+    return 1 if survivors or errors or stale else 0
 
 
 if __name__ == "__main__":

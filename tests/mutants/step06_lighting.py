@@ -82,6 +82,7 @@ def _dot(a, b):
     return np.sum(a * b, axis=-1, keepdims=True)
 
 
+# --8<-- [start:python-example]
 @mutant(MUTANTS, STEP, "reflect_refract", "reflect-sign", "reflect: i + 2 (n.i) n (the sign of the correction)")
 def _(pkg):
     def reflect(i, n):
@@ -91,6 +92,7 @@ def _(pkg):
     patch(pkg, "optics.reflect", reflect)
 
 
+# --8<-- [end:python-example]
 @mutant(MUTANTS, STEP, "reflect_refract", "reflect-no-2", "reflect: i - (n.i) n (forgets the factor 2)")
 def _(pkg):
     def reflect(i, n):
@@ -197,6 +199,7 @@ shader_mutant(
 
 # --- blinn_phong: shaders --------------------------------------------------------------------------
 
+# --8<-- [start:shader-example]
 shader_mutant(
     MUTANTS,
     STEP,
@@ -208,6 +211,7 @@ shader_mutant(
         ("shading.wgsl", "let n_dot_l = max(dot(n, l), 0.0);", "let n_dot_l = dot(n, l);"),
     ],
 )
+# --8<-- [end:shader-example]
 shader_mutant(
     MUTANTS,
     STEP,
