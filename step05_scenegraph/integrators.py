@@ -24,6 +24,20 @@ import numpy as np
 State = tuple[np.ndarray, np.ndarray]
 Acceleration = Callable[[np.ndarray, np.ndarray], np.ndarray]
 
+#: The largest ``omega * dt`` (omega = sqrt(k / m)) at which each integrator keeps an undamped spring bounded:
+#: explicit Euler never does, implicit Euler always does.
+STABLE_OMEGA_DT = {
+    "explicit_euler": 0.0,
+    "semi_implicit_euler": 2.0,
+    "rk4": 2.0 * math.sqrt(2.0),
+    "implicit_euler": math.inf,
+}
+
+
+def omega_dt(k: float, m: float, dt: float) -> float:
+    """``sqrt(k / m) * dt``: the angle a spring turns through in one step, which decides its stability."""
+    return math.sqrt(k / m) * dt
+
 
 def _check_spring(k: float | np.ndarray, m: float | np.ndarray, c: float | np.ndarray) -> None:
     if type(k) is float and type(m) is float and type(c) is float:  # the common case, checked cheaply

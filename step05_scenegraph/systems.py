@@ -8,6 +8,7 @@ time step, so the fall is the same at 30 or 300 frames per second.
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 
@@ -18,8 +19,10 @@ from gandalf_core.systems.transform_system import set_parent_keep_world
 from .components import GravityComponent, ReparentOnKeyComponent, SpinComponent, SpringComponent
 from .fixed_step import FixedStep
 from .integrators import (
+    STABLE_OMEGA_DT,
     explicit_euler_step,
     implicit_euler_spring_step,
+    omega_dt,
     spring_acceleration,
 )
 from .solutions.integrators import rk4_step, semi_implicit_euler_step
@@ -94,7 +97,13 @@ class SpringSystem(_FixedStepSystem):
 
     def on_create_entity(self, entity, components) -> None:
         super().on_create_entity(entity, components)
-        components[0].start = components[0].position.copy()
+        spring = components[0]
+        spring.start = spring.position.copy()
+        angle, limit = omega_dt(spring.stiffness, spring.mass, self.clock.dt), STABLE_OMEGA_DT[spring.integrator]
+        if angle >= limit and spring.integrator != "explicit_euler":  # explicit Euler's growth is the lesson
+            warnings.warn(f"spring {self.scene.describe(entity)}: omega*dt = {angle:.3g} at dt = {self.clock.dt:.4g} s "
+                          f"is beyond {spring.integrator}'s stability limit {limit:.3g}: it will blow up "
+                          "(use implicit_euler, a smaller dt, or a softer spring)", stacklevel=2)
 
     def step(self, body: SpringComponent, dt: float) -> None:
         x, v = body.position, body.velocity
@@ -109,6 +118,12 @@ class SpringSystem(_FixedStepSystem):
             }[body.integrator]
             x, v = step(x, v, spring_acceleration(k, m, c, body.rest), dt)
         if not np.all(np.isfinite(x)) or np.linalg.norm(x - body.rest) > body.reset_distance:
+            if body.resets == 0:  # the reset shows the blow-up again; it must not hide that there was one
+                limit = STABLE_OMEGA_DT[body.integrator]
+                why = "never stable for an undamped spring" if limit == 0.0 else f"stable below {limit:.3g}"
+                warnings.warn(f"a spring with {body.integrator} (omega*dt = {omega_dt(k, m, dt):.3g}; {why}) ran "
+                              "away and is put back to its start; SpringComponent.resets counts the resets",
+                              stacklevel=2)
             x, v = body.start.copy(), np.zeros(3)
             body.previous = x.copy()
             body.resets += 1

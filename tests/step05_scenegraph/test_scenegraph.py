@@ -123,7 +123,8 @@ def test_gravity_bounces_lose_height():
 
 def test_springs_each_integrator_behaves_as_taught():
     scene = build_springs_scene()
-    run_scene(scene, 60 * 30)  # 30 seconds
+    with pytest.warns(UserWarning, match="explicit_euler .* ran away"):  # the reset never hides the blow-up
+        run_scene(scene, 60 * 30)  # 30 seconds
     springs = {c.integrator: (c, scene.get_component(e, TransformComponent)) for e, (c,) in scene.view(SpringComponent)}
     assert springs["explicit_euler"][0].resets >= 1  # it blew up (and was put back)
     for name in ("semi_implicit_euler", "rk4", "implicit_euler"):
@@ -132,6 +133,25 @@ def test_springs_each_integrator_behaves_as_taught():
     for name in ("semi_implicit_euler", "rk4"):
         spring, transform = springs[name]
         assert transform.translation[1] - 2.0 == pytest.approx(exact, abs=0.02)
+
+
+@pytest.mark.parametrize(("integrator", "stiffness", "warns"), [
+    ("semi_implicit_euler", 14400.0 * 4.1, True),  # omega*dt = 2.02 at dt = 1/120: beyond 2
+    ("semi_implicit_euler", 14400.0 * 3.9, False),
+    ("rk4", 14400.0 * 8.2, True),  # beyond 2*sqrt(2)
+    ("implicit_euler", 1e12, False),  # stable at any stiffness
+])
+def test_a_stiff_spring_says_it_will_blow_up(integrator, stiffness, warns):
+    import warnings
+
+    scene = Scene("stiff")
+    scene.add_system(SpringSystem())
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        scene.create_entity(TransformComponent((0, 1, 0)), SpringComponent(rest=(0, 0, 0), stiffness=stiffness,
+                                                                           integrator=integrator))
+    said = [w for w in caught if "stability limit" in str(w.message)]
+    assert bool(said) == warns, [str(w.message) for w in caught]
 
 
 def test_springs_survive_a_huge_frame_time():
