@@ -2,7 +2,10 @@
 
 All local matrices are built in one vectorised pass (``TRSBatch``); the hierarchy is then resolved
 level by level (every entity at depth *d* in one batched matrix product), so a child is always
-recomputed after any ancestor moved and 100k entities cost a few numpy calls.
+recomputed after any ancestor moved and 100k entities cost a few numpy calls. A deep hierarchy (more than
+:data:`DEEP` levels: a 1,000-link chain) would cost one call per level; it is resolved by pointer jumping
+instead: each round composes every entity with its current ancestor's product and jumps to that ancestor's
+ancestor, so ``ceil(log2(depth))`` batched rounds give every world matrix.
 """
 
 from __future__ import annotations
@@ -17,6 +20,8 @@ from ..math import TRSBatch, decompose_trs, invert_affine, quat_normalize, trs
 
 # Quaternions shorter than this carry no usable rotation and count as the identity.
 _MIN_QUAT_NORM = 1e-12
+#: Hierarchies deeper than this are resolved by pointer jumping (log2(depth) rounds) rather than level by level.
+DEEP = 12
 
 
 class TransformSystem(System):
@@ -26,6 +31,7 @@ class TransformSystem(System):
         super().__init__([TransformComponent])
         self._plan_key: tuple[int, int, int] | None = None
         self._levels: list[tuple[np.ndarray, np.ndarray]] = []
+        self._jumps: tuple[np.ndarray, np.ndarray] | None = None  # (rows with a parent, their parent rows)
         self._trs = TRSBatch()
         self._local: np.ndarray | None = None
 
@@ -39,6 +45,10 @@ class TransformSystem(System):
         key = (scene.hierarchy_version, self.version, store.layout_version)
         if key != self._plan_key:
             self._levels = self._plan(scene)
+            self._jumps = None
+            if len(self._levels) > DEEP:
+                self._jumps = (np.concatenate([rows for rows, _ in self._levels]),
+                               np.concatenate([parents for _, parents in self._levels]))
             self._plan_key = key
         q = store.column("quaternion")
         # TRSBatch builds the exact rotation for any non-zero quaternion length, so no renormalising pass;
@@ -55,8 +65,24 @@ class TransformSystem(System):
             self._local = np.empty((n, 4, 4))
         local = self._build(store, q, self._local)
         world[:] = local
+        if self._jumps is not None:
+            self._resolve_by_jumping(world, n, *self._jumps)
+            return
         for rows, parent_rows in self._levels:
             world[rows] = world[parent_rows] @ local[rows]
+
+    @staticmethod
+    def _resolve_by_jumping(world: np.ndarray, n: int, rows: np.ndarray, parents: np.ndarray) -> None:
+        """``world`` holds the local matrices; afterwards the world ones. Round k makes each entity's matrix the
+        product of its 2^k nearest ancestors' and its own, so the number of rounds grows with log2(depth)."""
+        ancestor = np.full(n, -1, dtype=np.intp)
+        ancestor[rows] = parents
+        active = rows
+        while len(active):
+            up = ancestor[active]
+            world[active] = world[up] @ world[active]  # right side read before the write: one simultaneous step
+            ancestor[active] = ancestor[up]
+            active = active[ancestor[active] >= 0]
 
     def _build(self, store: ColumnStore, q: np.ndarray, out: np.ndarray) -> np.ndarray:
         """The local matrices; TRSBatch checks the columns are finite, and a failure is told per entity here

@@ -259,3 +259,29 @@ def test_a_non_finite_value_written_through_a_view_names_the_entity() -> None:
     scene.get_component(broken, TransformComponent).translation[1] = float("nan")
     with pytest.raises(ValueError, match=r"entity 'broken'.*TransformComponent.translation is not finite"):
         system.on_update_system(0.0)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_deep_forests_resolved_by_pointer_jumping_match_the_reference(seed: int, monkeypatch) -> None:
+    """Deeper than DEEP levels the system jumps pointers instead of walking levels: a forest of a long chain,
+    random branches off it and shallow trees (with Transform-less links) must give the same world matrices."""
+    import gandalf_core.systems.transform_system as module
+
+    scene, entities = random_hierarchy(seed, n=60)
+    rng = np.random.default_rng(seed)
+    chain = entities[-1]
+    for i in range(40):  # a chain well past DEEP, hanging off the random tree
+        chain = scene.create_entity(LinkComponent(chain), InfoComponent(f"c{i}"),
+                                    TransformComponent(rng.uniform(-0.2, 0.2, 3), quaternion=random_quaternion(rng),
+                                                       scale=rng.uniform(0.9, 1.1)))
+        if rng.random() < 0.3:  # side branches
+            scene.create_entity(LinkComponent(chain), TransformComponent(rng.uniform(-1, 1, 3)))
+    system = next(s for s in scene.systems if isinstance(s, TransformSystem))
+    scene.update(0.0)
+    assert system._jumps is not None, "the forest should be deep enough for pointer jumping"
+    assert_worlds_match_reference(scene, atol=1e-8)
+    monkeypatch.setattr(module, "DEEP", 10**6)  # the level-by-level walk gives the same matrices
+    system._plan_key = None
+    scene.update(0.0)
+    assert system._jumps is None
+    assert_worlds_match_reference(scene, atol=1e-8)
