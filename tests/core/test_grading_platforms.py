@@ -1,7 +1,7 @@
 """The grader's outputs for course platforms: the batch grader's gradebook, GitHub Classroom's configuration.
 
-* ``scripts/make_sample_submissions.py`` makes 3 seeded submissions of step 01 (each exercise file either the
-  solution or the stub); ``python -m gandalf_core.grading.batch`` grades them in parallel, a process per
+* ``scripts/make_sample_submissions.py`` makes 30 seeded submissions of step 01 (each exercise file either the
+  solution or the stub); ``python -m gandalf_core.grading.batch`` grades 3 of them in parallel, a process per
   submission, and its gradebook must give exactly the points the manifest says (2 for ``hue.py`` done, else 0).
 * ``.github/classroom/autograding.json`` parses, has one entry per step with points, and each entry's command
   really runs the grader: run with ``--collect-only`` it collects that step's graded tests.
@@ -26,12 +26,13 @@ ENV = {k: v for k, v in os.environ.items() if k != "GANDALF_IMPL"}
 def test_batch_grades_three_sample_submissions(tmp_path):
     subs, out = tmp_path / "subs", tmp_path / "out"
     make = [sys.executable, str(ROOT / "scripts" / "make_sample_submissions.py"), "--out", str(subs)]
-    subprocess.run(make + ["--count", "3", "--seed", "1", "--steps", "step01"], check=True, env=ENV, timeout=60)
+    subprocess.run(make + ["--count", "30", "--seed", "1", "--steps", "step01"], check=True, env=ENV, timeout=60)
     manifest = json.loads((subs / "manifest.json").read_text())
-    assert sorted(manifest) == ["student_01", "student_02", "student_03"]
+    assert len(manifest) == 30 and len(list(subs.glob("student_*/step01_window/exercises/hue.py"))) == 30
+    manifest = {k: manifest[k] for k in ("student_01", "student_02", "student_03")}
     proc = subprocess.run(
         [sys.executable, "-m", "gandalf_core.grading.batch", str(subs), "--out", str(out), "--steps", "step01"]
-        + ["--jobs", "2"],
+        + ["--jobs", "2", "--students", *manifest],
         cwd=ROOT,
         env=ENV,
         capture_output=True,
