@@ -58,8 +58,9 @@ class System:
 
     def on_update_system(self, ts: float) -> None:
         """Called once per frame. The default calls :meth:`on_update_entity` for every matching entity."""
+        update = self.on_update_entity  # bound once: one attribute lookup per frame, not per entity
         for entity, components in zip(*self._cached_lists()):
-            self.on_update_entity(ts, entity, components)
+            update(ts, entity, components)
 
     def on_update_entity(self, ts: float, entity: uuid.UUID, components: tuple[Any, ...]) -> None:
         """Per-entity update; ``ts`` is the frame time step in seconds."""
