@@ -1,0 +1,173 @@
+"""The fixed-step study: ``python -m step05_scenegraph.study_fixed_step --out DIR [--quick]``.
+
+:class:`~step05_scenegraph.fixed_step.FixedStep` has two knobs: the step ``dt`` and ``max_steps``, the most steps
+one frame may run (time beyond that is dropped). This study sets the error of what the player SEES against the
+cost of the simulation, for each pair of knobs:
+
+* the case: a projectile (launched at (3, 10, 0) m/s from the origin, gravity -9.81 m/s², no floor) stepped with
+  the reference semi-implicit Euler integrator inside ``FixedStep(dt, max_steps=...)``, driven by a stream of
+  frame times: 60 Hz with ±25 % jitter and a 0.1 s hitch once a second (a stall, a loading spike), for
+  ``DURATION`` seconds (the same seeded stream for every case);
+* what is seen: after each frame, the interpolated position ``previous + alpha · (current - previous)``;
+* the reference: the exact float64 projectile ``v0 t + g t² / 2`` at the frame's wall-clock time;
+* the error: the largest distance (metres) over all frames. It has three parts: Euler's ``|g| dt t / 2``, the
+  interpolation's lag of one step (about ``|v| dt``) and the time ``max_steps`` drops (the simulation falls
+  behind the clock for good when a hitch needs more steps than allowed);
+* the time: the median over ``--repeats`` runs of the CPU time for the whole run, per simulated second.
+
+Writes ``step05_study_fixed_step.json``, ``.md`` (the table) and ``.png`` (error against time, one line per
+``max_steps``) to ``--out``. No GPU is needed; prints progress.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import platform
+import statistics
+import time
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+from .fixed_step import FixedStep
+from .solutions.integrators import semi_implicit_euler_step
+
+STEM = "step05_study_fixed_step"
+DTS = (1 / 30, 1 / 60, 1 / 120, 1 / 240, 1 / 480, 1 / 960)
+QUICK_DTS = (1 / 30, 1 / 120, 1 / 480)
+MAX_STEPS = (2, 4, 8, 32)
+QUICK_MAX_STEPS = (2, 8)
+DURATION = 2.0
+V0 = np.array([3.0, 10.0, 0.0])
+GRAVITY = np.array([0.0, -9.81, 0.0])
+
+
+def frame_times(duration: float = DURATION, seed: int = 5) -> np.ndarray:
+    """A seeded stream of frame times: 60 Hz ± 25 % jitter, a 0.1 s hitch at 0.5 s and once a second after."""
+    rng = np.random.default_rng(seed)
+    times, total, next_hitch = [], 0.0, 0.5
+    while total < duration:
+        ts = 1.0 / 60.0 * rng.uniform(0.75, 1.25)
+        if total >= next_hitch:
+            ts, next_hitch = 0.1, next_hitch + 1.0
+        times.append(ts)
+        total += ts
+    return np.array(times)
+
+
+def exact(t: float) -> np.ndarray:
+    return V0 * t + 0.5 * GRAVITY * t * t
+
+
+def run_case(dt: float, max_steps: int, frames: np.ndarray, measure: bool = True) -> tuple[float, float]:
+    """(largest error of the interpolated position over all frames (m), seconds of simulated time dropped).
+
+    With ``measure=False`` only the simulation and the interpolation run (the timed runs): the error is 0.
+    """
+    fixed = FixedStep(dt=dt, max_steps=max_steps)
+
+    def accel(_x: np.ndarray, _v: np.ndarray) -> np.ndarray:
+        return GRAVITY
+
+    x, v = np.zeros(3), V0.copy()
+    previous = x
+    wall = 0.0
+    worst = 0.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # FixedStep warns once about dropped time: the study counts it
+        for ts in frames:
+            wall += ts
+            for _ in range(fixed.advance(float(ts))):
+                previous = x
+                x, v = semi_implicit_euler_step(x, v, accel, dt)
+            seen = previous + fixed.alpha * (x - previous)
+            if measure:
+                worst = max(worst, float(np.linalg.norm(seen - exact(wall))))
+    return worst, fixed.dropped
+
+
+def run_study(dts, max_steps_list, repeats: int, duration: float = DURATION) -> dict:
+    frames = frame_times(duration)
+    simulated = float(frames.sum())
+    rows = []
+    for max_steps in max_steps_list:
+        for dt in dts:
+            error, dropped = run_case(dt, max_steps, frames)
+            runs = []
+            for _ in range(repeats):
+                start = time.perf_counter()
+                run_case(dt, max_steps, frames, measure=False)
+                runs.append(time.perf_counter() - start)
+            row = {"dt": dt, "max_steps": max_steps, "max_error_m": error, "dropped_s": dropped,
+                   "ms_per_simulated_second": 1000.0 * statistics.median(runs) / simulated}
+            rows.append(row)
+            print(f"max_steps {max_steps:2d}, dt 1/{1 / dt:.0f} s: error {error:.3e} m, dropped {dropped:.3f} s, "
+                  f"{row['ms_per_simulated_second']:.3f} ms per simulated s", flush=True)
+    return {"rows": rows, "frames": len(frames), "duration_s": simulated,
+            "frame_stream": "60 Hz +-25 % jitter, a 0.1 s hitch once a second (seeded)",
+            "reference": "exact float64 projectile at each frame's wall-clock time",
+            "time": f"median of {repeats} runs (stepping + interpolation only), CPU time per simulated second",
+            "host": platform.platform(), "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())}
+
+
+def markdown(result: dict) -> str:
+    lines = ["| max_steps | dt (s) | largest error seen (m) | time dropped (s) | CPU ms per simulated second |",
+             "|---:|---:|---:|---:|---:|"]
+    for r in result["rows"]:
+        lines.append(f"| {r['max_steps']} | 1/{1 / r['dt']:.0f} | {r['max_error_m']:.2e} | {r['dropped_s']:.3f} | "
+                     f"{r['ms_per_simulated_second']:.3f} |")
+    return "\n".join(lines) + "\n"
+
+
+def plot(result: dict, path: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.4, 4.2), dpi=100)
+    for max_steps in dict.fromkeys(r["max_steps"] for r in result["rows"]):
+        mine = [r for r in result["rows"] if r["max_steps"] == max_steps]
+        ax.loglog([r["ms_per_simulated_second"] for r in mine], [r["max_error_m"] for r in mine], "o-",
+                  label=f"max_steps = {max_steps}", ms=4)
+        for r in mine:
+            ax.annotate(f"1/{1 / r['dt']:.0f}", (r["ms_per_simulated_second"], r["max_error_m"]), fontsize=6,
+                        xytext=(3, 3), textcoords="offset points")
+    ax.set_xlabel("CPU time per simulated second (ms, median)")
+    ax.set_ylabel("largest error of the seen position (m)")
+    ax.set_title("FixedStep: projectile, jittery 60 Hz frames with 0.1 s hitches", fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m step05_scenegraph.study_fixed_step", description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--out", type=Path, default=Path("out"), help=f"folder for {STEM}.json/.md/.png")
+    parser.add_argument("--quick", action="store_true", help="three time steps and two max_steps")
+    parser.add_argument("--repeats", type=int, default=None, help="timed runs per case (default 9, quick 3)")
+    args = parser.parse_args(argv)
+    repeats = args.repeats or (3 if args.quick else 9)
+    if repeats < 1:
+        parser.error("--repeats must be at least 1")
+    dts, max_steps = (QUICK_DTS, QUICK_MAX_STEPS) if args.quick else (DTS, MAX_STEPS)
+    print(f"fixed-step study: {len(dts)} time steps x {len(max_steps)} max_steps, {repeats} timed runs each",
+          flush=True)
+    result = run_study(dts, max_steps, repeats)
+    args.out.mkdir(parents=True, exist_ok=True)
+    (args.out / f"{STEM}.json").write_text(json.dumps(result, indent=1))
+    table = markdown(result)
+    (args.out / f"{STEM}.md").write_text(table)
+    plot(result, args.out / f"{STEM}.png")
+    print(table)
+    print(f"wrote {args.out / STEM}.json, .md, .png", flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
