@@ -456,7 +456,8 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{o.mutant.step + ':control':<58} {o.status:<9} {o.tests:>5}  {(o.detail or '')[:90]}")
     killed = sum(o.status == "killed" for o in results)
     print(
-        f"\n{killed}/{len(results)} mutants killed, {len(survivors)} survived, {len(errors)} errors "
+        f"\n{killed}/{len(results)} mutants killed, {len(survivors)} survived, "
+        f"{sum(o.status == 'known-gap' for o in results)} known gaps, {len(errors)} errors "
         f"in {time.perf_counter() - start:.1f} s"
     )
     for o in results:
