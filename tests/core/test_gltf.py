@@ -206,3 +206,34 @@ def test_required_extensions_are_refused(tmp_path):
     doc["extensionsRequired"] = ["KHR_texture_transform"]
     path.write_text(json.dumps(doc))
     assert "KHR_texture_transform" in _error(path)
+
+
+def test_a_glb_with_an_embedded_image(tmp_path):
+    """A binary glTF: JSON chunk + BIN chunk holding the geometry and the PNG (image by bufferView)."""
+    import io
+    import struct
+
+    gltf = write_gltf(tmp_path, textured(), textures=[{"source": 0, "sampler": 0}],
+                      samplers=[{"wrapS": 10497, "wrapT": 10497, "minFilter": 9729}], images=[{"uri": "x.png"}])
+    doc = json.loads(gltf.read_text())
+    geometry = base64.b64decode(doc["buffers"][0]["uri"].split(",", 1)[1])
+    png = io.BytesIO()
+    pixels = np.zeros((2, 2, 3), np.uint8)
+    pixels[0, 0] = (10, 20, 30)
+    Image.fromarray(pixels).save(png, format="PNG")
+    image = png.getvalue()
+    pad = (-len(geometry)) % 4
+    binary = geometry + b"\0" * pad + image + b"\0" * ((-len(image)) % 4)
+    doc["buffers"] = [{"byteLength": len(binary)}]
+    doc["bufferViews"].append({"buffer": 0, "byteOffset": len(geometry) + pad, "byteLength": len(image)})
+    doc["images"] = [{"bufferView": len(doc["bufferViews"]) - 1, "mimeType": "image/png"}]
+    text = json.dumps(doc).encode()
+    text += b" " * ((-len(text)) % 4)
+    chunks = struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(binary), 0x004E4942) + binary
+    path = tmp_path / "quad.glb"
+    path.write_bytes(struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks)
+    model = load_gltf(path)
+    albedo = model.textures["quad/Painted/baseColorTexture"]
+    assert tuple(albedo.pixels[0, 0, :3]) == (10, 20, 30)
+    assert (albedo.wrap, albedo.filter, albedo.mipmaps) == ("repeat", "linear", False)
+    assert model.meshes["quad"].vertex_count == 4
