@@ -1,5 +1,6 @@
 // Two-sided Blinn-Phong with every light of the scene (the same sums as explode_shading.wgsl).
 #include "frame.glsl"
+#include "../../shaders/blinn_phong.glsl"
 
 vec3 shade(vec3 p, vec3 normal, vec3 albedo, float specular, float shininess) {
     float nlen = length(normal);
@@ -10,27 +11,5 @@ vec3 shade(vec3 p, vec3 normal, vec3 albedo, float specular, float shininess) {
     if (dot(n, v) < 0.0) {
         n = -n;
     }
-    vec3 color = u_ambient.rgb * albedo;
-    int count = min(u_light_count.x, MAX_LIGHTS);
-    for (int i = 0; i < count; ++i) {
-        vec4 position = u_light_position[i];
-        vec3 radiance = u_light_color[i].rgb;
-        vec3 l = position.xyz;  // directional: a unit vector towards the light
-        if (position.w > 0.5) {
-            vec3 to_light = position.xyz - p;
-            float distance = max(length(to_light), 1e-6);
-            l = to_light / distance;
-            float range = u_light_color[i].a;
-            if (range > 0.0) {
-                float x = distance / range;
-                float window = clamp(1.0 - x * x * x * x, 0.0, 1.0);
-                radiance *= window * window / max(distance * distance, 1e-4);
-            }
-        }
-        float ndl = max(dot(n, l), 0.0);
-        vec3 h = normalize(l + v);
-        float spec = specular * pow(max(dot(n, h), 0.0), shininess) * ndl;
-        color += (albedo * ndl + spec) * radiance;
-    }
-    return color;
+    return blinn_phong_lights(p, n, v, albedo, specular, shininess);
 }

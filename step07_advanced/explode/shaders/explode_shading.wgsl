@@ -1,6 +1,7 @@
 // Two-sided Blinn-Phong with every light of the scene (the same sums as explode_shading.glsl), the material's
 // uniform struct and the fragment stage both WGSL surface shaders of the technique share.
 #include "frame.wgsl"
+#include "../../shaders/blinn_phong.wgsl"
 
 struct Material {
     color: vec4<f32>,
@@ -27,29 +28,7 @@ fn shade(p: vec3<f32>, normal: vec3<f32>, albedo: vec3<f32>, specular: f32, shin
     if (dot(n, v) < 0.0) {
         n = -n;
     }
-    var color = lights.ambient.rgb * albedo;
-    let count = min(lights.count.x, i32(MAX_LIGHTS));
-    for (var i = 0; i < count; i++) {
-        let position = lights.position[i];
-        var radiance = lights.color[i].rgb;
-        var l = position.xyz;  // directional: a unit vector towards the light
-        if (position.w > 0.5) {
-            let to_light = position.xyz - p;
-            let distance = max(length(to_light), 1e-6);
-            l = to_light / distance;
-            let range = lights.color[i].a;
-            if (range > 0.0) {
-                let x = distance / range;
-                let window = clamp(1.0 - x * x * x * x, 0.0, 1.0);
-                radiance *= window * window / max(distance * distance, 1e-4);
-            }
-        }
-        let ndl = max(dot(n, l), 0.0);
-        let h = normalize(l + v);
-        let spec = specular * pow(max(dot(n, h), 0.0), shininess) * ndl;
-        color += (albedo * ndl + spec) * radiance;
-    }
-    return color;
+    return blinn_phong_lights(p, n, v, albedo, specular, shininess);
 }
 
 @fragment
