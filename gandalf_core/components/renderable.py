@@ -15,6 +15,7 @@ class MeshComponent(Component):
     """The name of the mesh an entity draws."""
 
     __slots__ = ("_mesh",)
+    immutable = True  # a name that never changes: Scene.create_entities may share one object
 
     def __init__(self, mesh: str) -> None:
         if not isinstance(mesh, str) or not mesh:
@@ -33,6 +34,7 @@ class MaterialComponent(Component):
     """The name of the material an entity is drawn with."""
 
     __slots__ = ("_material",)
+    immutable = True  # a name that never changes: Scene.create_entities may share one object
 
     def __init__(self, material: str) -> None:
         if not isinstance(material, str) or not material:

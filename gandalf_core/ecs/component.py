@@ -18,10 +18,15 @@ import numpy as np
 
 _ND = np.ndarray
 _F64 = np.dtype(np.float64)
+_NUMBER = (float, int, np.float64)
 
 
 class Component:
     """Base class of all components. Components hold data only; behaviour lives in systems."""
+
+    #: True for component types whose objects never change after construction (a mesh or material name):
+    #: :meth:`Scene.create_entities` then gives all the new entities the same object instead of copies.
+    immutable: ClassVar[bool] = False
 
     def __repr__(self) -> str:
         fields = ", ".join(f"{k}={v!r}" for k, v in vars(self).items() if not k.startswith("_"))
@@ -60,9 +65,19 @@ class _ColumnField:
         return store.columns[self.name][obj._row]
 
     def __set__(self, obj: ColumnarComponent, value: Any) -> None:
-        if self.flat and type(value) is _ND and value.dtype is _F64 and value.shape == self.shape:
-            if self._fast_set(obj, value):
-                return
+        if self.flat:
+            t = type(value)
+            if t is _ND:
+                if value.dtype is _F64 and value.shape == self.shape and self._fast_set(obj, value):
+                    return
+            elif (t is tuple or t is list) and len(value) == self.shape[0] and all(type(c) in _NUMBER for c in value):
+                try:
+                    arr = np.array(value, dtype=np.float64)
+                except OverflowError:  # an int beyond float range: the full path below says so
+                    pass
+                else:
+                    if self._fast_set(obj, arr):
+                        return
         arr = np.asarray(value, dtype=np.float64)
         if arr.shape != self.shape:
             try:
@@ -108,6 +123,67 @@ class ColumnarComponent(Component):
         fields = ", ".join(f"{k}={getattr(self, k).tolist()!r}" for k in self.columns)
         return f"{type(self).__name__}({fields})"
 
+    @classmethod
+    def batch(cls, n: int | None = None, **values: Any) -> ColumnBatch:
+        """Field values of ``n`` new components at once, for :meth:`Scene.create_entities`.
+
+        Each keyword names a column and gives either one value for every component (the field's shape) or
+        one per component (shape ``(n, *field_shape)``); columns not given take their defaults. ``n`` may be
+        left out when an array gives it. No component objects are made here: the scene writes the rows
+        straight into its column store.
+        """
+        return ColumnBatch(cls, n, values)
+
+    @classmethod
+    def _bare(cls) -> ColumnarComponent:
+        """A component object for a row written by a bulk attach (``__init__`` is not called: its work was done
+        by :meth:`batch`). Subclasses that keep state outside their columns override this."""
+        return object.__new__(cls)
+
+
+class ColumnBatch:
+    """Validated float64 rows for ``count`` new components of one columnar type (see ColumnarComponent.batch)."""
+
+    def __init__(self, component_type: type[ColumnarComponent], n: int | None, values: dict[str, Any]) -> None:
+        name = f"{component_type.__name__}.batch"
+        unknown = sorted(set(values) - set(component_type.columns))
+        if unknown:
+            raise ValueError(f"{name}: unknown field(s) {', '.join(unknown)}; the fields are "
+                             f"{', '.join(component_type.columns)}")
+        if n is not None and (isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 0):
+            raise ValueError(f"{name}: n must be a non-negative int, got {n!r}")
+        arrays: dict[str, np.ndarray] = {}
+        count = None if n is None else int(n)
+        for field, value in values.items():
+            if value is None:
+                continue
+            shape = tuple(component_type.columns[field][0])
+            arr = np.asarray(value, dtype=np.float64)
+            if arr.shape != shape:
+                if arr.ndim != len(shape) + 1 or arr.shape[1:] != shape:
+                    raise ValueError(f"{name}: {field} must have shape {shape} (one value for all) or "
+                                     f"(n, {', '.join(map(str, shape))}) (one per component), got {arr.shape}")
+                if count is None:
+                    count = len(arr)
+                elif len(arr) != count:
+                    raise ValueError(f"{name}: {field} has {len(arr)} rows but n is {count}")
+            finite = np.isfinite(arr).reshape(arr.shape[: arr.ndim - len(shape)] + (-1,)).all(axis=-1)
+            if not np.all(finite):
+                where = "" if arr.shape == shape else f" (row {int(np.argmin(finite))})"
+                raise ValueError(f"{name}: {field} must be finite{where}")
+            arrays[field] = arr
+        if count is None:
+            raise ValueError(f"{name}: give n, or per-component arrays of shape (n, ...), to say how many")
+        self.component_type = component_type
+        self.count = count
+        self.columns = arrays
+
+    def __len__(self) -> int:
+        return self.count
+
+    def __repr__(self) -> str:
+        return f"ColumnBatch({self.component_type.__name__}, count={self.count}, fields={list(self.columns)})"
+
 
 class ColumnStore:
     """The columns of one columnar component type in one scene; rows are packed (swap-remove)."""
@@ -133,6 +209,31 @@ class ColumnStore:
         self.owners.append(component)
         self.count += 1
 
+    def attach_batch(self, batch: ColumnBatch) -> list[ColumnarComponent]:
+        """Append ``batch.count`` rows in one write per column; return their new component objects."""
+        n = batch.count
+        if self.count + n > self.capacity:
+            self._grow(self.count + n)
+        start, end = self.count, self.count + n
+        defaults = self.component_type._defaults
+        for name, col in self.columns.items():
+            value = batch.columns.get(name)
+            col[start:end] = defaults[name] if value is None else value
+        ctype = self.component_type
+        if ctype._bare.__func__ is ColumnarComponent._bare.__func__:  # type: ignore[attr-defined]
+            made = [object.__new__(ctype) for _ in range(n)]
+        else:
+            bare = ctype._bare
+            made = [bare() for _ in range(n)]
+        for row, component in enumerate(made, start):
+            state = component.__dict__
+            state["_store"] = self
+            state["_row"] = row
+            state["_local"] = None
+        self.owners.extend(made)
+        self.count = end
+        return made
+
     def detach(self, component: ColumnarComponent) -> None:
         row, last = component._row, self.count - 1
         component._local = {name: col[row].copy() for name, col in self.columns.items()}
@@ -155,8 +256,8 @@ class ColumnStore:
         """Row indices of ``components`` (for fancy indexing into columns)."""
         return np.fromiter((c._row for c in components), dtype=np.intp, count=len(components))
 
-    def _grow(self) -> None:
-        self.capacity *= 2
+    def _grow(self, needed: int = 0) -> None:
+        self.capacity = max(self.capacity * 2, needed)
         for name, col in self.columns.items():
             grown = np.zeros((self.capacity, *col.shape[1:]))
             grown[: self.count] = col[: self.count]

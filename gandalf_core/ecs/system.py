@@ -91,7 +91,7 @@ class System:
         return len(self._members)
 
     def matches(self, component_types: Iterable[type]) -> bool:
-        have = set(component_types)
+        have = component_types if isinstance(component_types, (dict, set, frozenset)) else set(component_types)
         return all(t in have for t in self.component_types)
 
     # --- called by the scene --------------------------------------------------------------------
@@ -100,6 +100,17 @@ class System:
         self._lists = None
         self.version += 1
         self.on_create_entity(entity, components)
+
+    def _add_members(self, members: list[tuple[uuid.UUID, tuple[Any, ...]]]) -> None:
+        """Many entities start matching at once (Scene.create_entities); ``on_create_entity`` for each, in order,
+        unless the system does not override it."""
+        self._members.update(members)
+        self._lists = None
+        self.version += 1
+        hook = self.on_create_entity
+        if type(self).on_create_entity is not System.on_create_entity:
+            for entity, components in members:
+                hook(entity, components)
 
     def _remove_member(self, entity: uuid.UUID) -> None:
         components = self._members.pop(entity)
