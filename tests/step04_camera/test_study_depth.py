@@ -1,0 +1,48 @@
+"""The depth-precision study (``step04_camera.study_depth``) measures what it claims: not graded.
+
+Both APIs, float32 depth: far from the camera (d = 1000, near 0.1, far 1e4) reverse-Z must separate planes at
+least 100 times closer than the standard mapping, and each measured separation must lie within a factor 8 of the
+float32 bound (one depth-buffer step, or one float32 step of d). At s = 0 the two planes must tie (green shows).
+"""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from step04_camera import study_depth as study
+
+
+@pytest.mark.parametrize("backend", ["opengl", "webgpu"])
+def test_reverse_z_beats_standard_far_away_and_both_follow_the_bound(backend):
+    d = 1000.0
+    measured = {}
+    for reverse_z in (False, True):
+        rig = study.DepthRig(backend, 0.1, 1e4, reverse_z)
+        try:
+            assert rig.fights(d, 0.0), "identical planes must tie, and the later one show"
+            measured[reverse_z] = study.smallest_separation(rig, d, 1e4, 1.0)
+        finally:
+            rig.close()
+        b = study.bound(np.array([d]), 0.1, 1e4, reverse_z)[0]
+        assert measured[reverse_z] is not None and b / 8 < measured[reverse_z] < 8 * b, (reverse_z, measured, b)
+    assert measured[False] > 100 * measured[True], measured
+
+
+def test_the_bound_grows_as_d_squared_for_standard_and_as_d_for_reverse_z():
+    d = np.array([100.0, 1000.0])
+    standard = study.bound(d, 0.1, 1e4, False)
+    reverse = study.bound(d, 0.1, 1e4, True)
+    assert 30 < standard[1] / standard[0] < 300 and 3 < reverse[1] / reverse[0] < 30, (standard, reverse)
+
+
+def test_main_writes_json_table_and_plot(tmp_path):
+    args = ["--out", str(tmp_path), "--quick", "--backends", "opengl", "--resolution", "4", "--frames", "1",
+            "--repeats", "1"]
+    assert study.main(args) == 0
+    result = json.loads((tmp_path / f"{study.STEM}.json").read_text())
+    assert {r["mapping"] for r in result["rows"]} == {m[0] for m in study.QUICK_MAPPINGS}
+    assert "float32 bound" in (tmp_path / f"{study.STEM}.md").read_text()
+    assert (tmp_path / f"{study.STEM}.png").stat().st_size > 1000
