@@ -7,7 +7,8 @@ tests in a fresh process and is timed wall-clock (the median of ``--repeat`` run
 the time per step come from pytest's own durations.
 
 Configurations (``--configs``): ``serial`` (``--jobs 0``: one process, no isolation), ``n1`` (one xdist
-worker: isolation, no parallelism), ``n2`` (two workers, the front end's default) and ``n4``.
+worker: isolation, no parallelism), ``n2`` (two workers, the front end's default), ``n4``, and ``n2-lp1``
+(two workers with ``LP_NUM_THREADS=1``: one software-rasteriser thread each).
 
 Prints a table and, with ``--json FILE``, writes the figures.
 """
@@ -27,7 +28,16 @@ from collections import defaultdict
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-CONFIGS = {"serial": ["--jobs", "0"], "n1": ["--jobs", "1"], "n2": ["--jobs", "2"], "n4": ["--jobs", "4"]}
+CONFIGS = {
+    "serial": ["--jobs", "0"],
+    "n1": ["--jobs", "1"],
+    "n2": ["--jobs", "2"],
+    "n4": ["--jobs", "4"],
+    "n2-lp1": ["--jobs", "2"],
+}
+# Extra environment per configuration: one llvmpipe/lavapipe thread per worker, so two workers do not
+# each start a rasteriser thread per core on a 2-core machine.
+ENVS = {"n2-lp1": {"LP_NUM_THREADS": "1"}}
 DURATION = re.compile(r"^\s*([\d.]+)s (call|setup|teardown)\s+(\S+)")
 
 
@@ -41,6 +51,7 @@ def run(config: str, chosen: list[str], durations: int) -> dict:
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "grade.json"
         env = {**os.environ, "GANDALF_IMPL": os.pathsep.join(f"{s}={ROOT / s / 'solutions'}" for s in chosen)}
+        env.update(ENVS.get(config, {}))
         cmd = [sys.executable, "-m", "gandalf_core.grading", *[f"tests/{s}" for s in chosen], "--json", str(out)]
         cmd += [*CONFIGS[config], "--durations=0", "--durations-min=0"]
         start = time.perf_counter()
