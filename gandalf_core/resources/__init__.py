@@ -2,38 +2,90 @@
 
 Nothing here touches a GPU: these are validated numpy/text descriptions that the OpenGL and WebGPU resource
 libraries turn into GPU objects. Pillow is imported only when an image file is read or written.
+
+Its names load on first use (module ``__getattr__``): importing the package costs nothing until a loader, a
+primitive or a data class is needed.
 """
 
-from gandalf_core.resources.errors import ResourceError
-from gandalf_core.resources.gltf import GLTFModel, load_gltf
-from gandalf_core.resources.material_data import BLEND_MODES, CULL_MODES, MaterialData
-from gandalf_core.resources.mesh_data import (
-    ATTRIBUTE_LOCATIONS,
-    INSTANCE_LOCATIONS,
-    MeshData,
-    VertexAttribute,
-    VertexLayout,
+from __future__ import annotations
+
+import importlib
+from typing import Any
+
+# name -> submodule that defines it
+_LAZY = {
+    "ResourceError": "errors",
+    "GLTFModel": "gltf",
+    "load_gltf": "gltf",
+    "BLEND_MODES": "material_data",
+    "CULL_MODES": "material_data",
+    "MaterialData": "material_data",
+    "ATTRIBUTE_LOCATIONS": "mesh_data",
+    "INSTANCE_LOCATIONS": "mesh_data",
+    "MeshData": "mesh_data",
+    "VertexAttribute": "mesh_data",
+    "VertexLayout": "mesh_data",
+    "MESH_EXTENSIONS": "mesh_loader",
+    "load_mesh": "mesh_loader",
+    "load_meshes": "mesh_loader",
+    "cube": "primitives",
+    "plane": "primitives",
+    "pyramid": "primitives",
+    "quad": "primitives",
+    "torus": "primitives",
+    "triangle": "primitives",
+    "uv_sphere": "primitives",
+    "checkerboard": "procedural",
+    "gradient": "procedural",
+    "sky_cube": "procedural",
+    "solid": "procedural",
+    "value_noise": "procedural",
+    "LANGUAGES": "shader_source",
+    "SHADER_EXTENSIONS": "shader_source",
+    "STAGES": "shader_source",
+    "ShaderSource": "shader_source",
+    "format_compile_error": "shader_source",
+    "CUBE_FACE_NAMES": "texture_data",
+    "FILTER_MODES": "texture_data",
+    "WRAP_MODES": "texture_data",
+    "CubeTextureData": "texture_data",
+    "TextureData": "texture_data",
+    "cube_face_directions": "texture_data",
+    "linear_to_srgb": "texture_data",
+    "srgb_to_linear": "texture_data",
+}
+
+_SUBMODULES = (
+    'assets',
+    'blocks',
+    'color',
+    'errors',
+    'gltf',
+    'material_data',
+    'mesh_data',
+    'mesh_loader',
+    'primitives',
+    'procedural',
+    'shader_source',
+    'texture_data',
 )
-from gandalf_core.resources.mesh_loader import MESH_EXTENSIONS, load_mesh, load_meshes
-from gandalf_core.resources.primitives import cube, plane, pyramid, quad, torus, triangle, uv_sphere
-from gandalf_core.resources.procedural import checkerboard, gradient, sky_cube, solid, value_noise
-from gandalf_core.resources.shader_source import (
-    LANGUAGES,
-    SHADER_EXTENSIONS,
-    STAGES,
-    ShaderSource,
-    format_compile_error,
-)
-from gandalf_core.resources.texture_data import (
-    CUBE_FACE_NAMES,
-    FILTER_MODES,
-    WRAP_MODES,
-    CubeTextureData,
-    TextureData,
-    cube_face_directions,
-    linear_to_srgb,
-    srgb_to_linear,
-)
+
+
+def __getattr__(name: str) -> Any:
+    module = _LAZY.get(name)
+    if module is not None:
+        value = getattr(importlib.import_module(f".{module}", __name__), name)
+    elif name in _SUBMODULES:
+        value = importlib.import_module(f".{name}", __name__)
+    else:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY) | set(_SUBMODULES))
+
 
 __all__ = [
     "GLTFModel",

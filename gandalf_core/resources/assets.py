@@ -7,12 +7,14 @@ them by name. Shaders are the one resource a scene does not register: their sour
 
 from __future__ import annotations
 
-from typing import TypeVar
+from typing import TYPE_CHECKING, TypeVar
 
 from .errors import ResourceError
-from .material_data import MaterialData
-from .mesh_data import MeshData
-from .texture_data import CubeTextureData, TextureData
+
+if TYPE_CHECKING:  # imported when first used: a Scene (which owns Assets) needs no dataclass module to exist
+    from .material_data import MaterialData
+    from .mesh_data import MeshData
+    from .texture_data import CubeTextureData, TextureData
 
 T = TypeVar("T")
 
@@ -26,12 +28,18 @@ class Assets:
         self.materials: dict[str, MaterialData] = {}
 
     def mesh(self, name: str, data: MeshData) -> str:
+        from .mesh_data import MeshData
+
         return self._put(self.meshes, "mesh", name, data, MeshData)
 
     def texture(self, name: str, data: TextureData | CubeTextureData) -> str:
+        from .texture_data import CubeTextureData, TextureData
+
         return self._put(self.textures, "texture", name, data, (TextureData, CubeTextureData))
 
     def material(self, name: str, data: MaterialData) -> str:
+        from .material_data import MaterialData
+
         return self._put(self.materials, "material", name, data, MaterialData)
 
     @staticmethod
