@@ -104,7 +104,8 @@ def pack_lights(components: list[tuple[Any, Any]], origin: np.ndarray | None = N
 def pack_shadow(components: list[tuple[Any, Any]], depth_range: str | tuple[float, float] = "opengl",
                 origin: np.ndarray | None = None) -> bytes:
     """The shadow part of the lights block: the first shadow-casting directional light's view-projection
-    and shadow parameters (all zero, so ``shadow.x == 0``, when no light casts shadows).
+    and shadow parameters (all zero, so ``shadow.x == 0``, when no light casts shadows); ``shadow.y`` is the depth
+    bias of one map texel times the light's ``shadow_bias``.
 
     The light looks along its -Z axis from its world position, the centre of an orthographic box
     ``2 · shadow_extent`` wide and high and ``shadow_depth`` long; ``depth_range`` is the API's NDC depth
@@ -128,7 +129,8 @@ def pack_shadow(components: list[tuple[Any, Any]], depth_range: str | tuple[floa
             block[0:16] = (projection @ view).T.ravel()
             texel = 2.0 * extent / SHADOW_MAP_SIZE
             # Depth is stored in [0, 1] over the box's length in both APIs: one texel's width in those units.
-            block[16:20] = (1.0, texel / depth, 1.0 / SHADOW_MAP_SIZE, float(index))
+            # y: the bias of one map texel's depth, scaled by the light's shadow_bias (1 by default).
+            block[16:20] = (1.0, light.shadow_bias * texel / depth, 1.0 / SHADOW_MAP_SIZE, float(index))
             break
         index += 1
     return block.tobytes()

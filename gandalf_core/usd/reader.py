@@ -218,6 +218,7 @@ class _Reader:
                 cast_shadows=read(ctx, prim, "gandalf:castShadows", "bool", False),
                 shadow_extent=read_float(ctx, prim, "gandalf:shadowExtent", 10.0),
                 shadow_depth=read_float(ctx, prim, "gandalf:shadowDepth", 50.0),
+                shadow_bias=read_float(ctx, prim, "gandalf:shadowBias", 1.0),
             )
 
         return self.guard(prim, "gandalf:lightKind", build)

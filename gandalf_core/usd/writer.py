@@ -267,6 +267,7 @@ class _Writer:
         write(prim, "gandalf:castShadows", T.Bool, bool(light.cast_shadows))
         write(prim, "gandalf:shadowExtent", T.Double, light.shadow_extent)
         write(prim, "gandalf:shadowDepth", T.Double, light.shadow_depth)
+        write(prim, "gandalf:shadowBias", T.Double, light.shadow_bias)
 
     def write_registered(self, entity: uuid.UUID, prim: Usd.Prim, comps: dict[type, Component]) -> None:
         saved: list[str] = []

@@ -373,3 +373,63 @@ def test_textures_built_during_a_frame_do_not_replace_the_shadow_map():
         first = brightness(app.capture(), shadowed)
         app.run(frames=1)
         assert first == brightness(app.capture(), shadowed) < 60
+
+
+# --- the shadow bias knob (LightComponent.shadow_bias; step 07's shadow study varies it) -------------------------
+@pytest.mark.parametrize("value", [-0.1, float("nan"), float("inf"), True, "1"])
+def test_shadow_bias_is_checked(value):
+    with pytest.raises(ValueError, match="LightComponent.shadow_bias"):
+        LightComponent("directional", cast_shadows=True, shadow_bias=value)
+
+
+def test_shadow_bias_scales_the_packed_bias_and_defaults_to_the_old_bytes():
+    from gandalf_core.math import trs
+    from gandalf_core.systems.light_system import pack_shadow
+
+    sun = sun_position((1.0, 2.0, 0.0))
+    transform = TransformComponent()
+    transform.world = trs(sun, look_at_rotation(sun, (0, 0, 0)), (1.0, 1.0, 1.0))
+
+    def block(**bias) -> np.ndarray:
+        light = LightComponent("directional", cast_shadows=True, shadow_extent=5.0, shadow_depth=30.0, **bias)
+        return np.frombuffer(pack_shadow([(light, transform)]), np.float32)
+
+    default, doubled, off = block(), block(shadow_bias=2.0), block(shadow_bias=0.0)
+    assert LightComponent("directional").shadow_bias == 1.0
+    assert np.array_equal(default, block(shadow_bias=1.0))
+    assert doubled[17] == pytest.approx(2.0 * default[17]) and off[17] == 0.0
+    assert np.array_equal(np.delete(doubled, 17), np.delete(default, 17))
+
+
+def test_shadow_bias_survives_usd(tmp_path):
+    from gandalf_core.usd import load_scene, save_scene
+
+    scene = shadow_scene()
+    for entity in scene.entities:
+        for component in scene.components_of(entity):
+            if isinstance(component, LightComponent) and component.cast_shadows:
+                component.shadow_bias = 0.375
+    loaded = load_scene(save_scene(scene, tmp_path / "bias.usda"))
+    biases = [c.shadow_bias for e in loaded.entities for c in loaded.components_of(e)
+              if isinstance(c, LightComponent) and c.cast_shadows]
+    assert biases == [0.375]
+
+
+@pytest.mark.parametrize("backend", ["opengl", "webgpu"])
+def test_no_bias_brings_shadow_acne_and_the_default_bias_removes_it(backend):
+    """Bias 0: the lit floor shadows itself (acne, nearly every pixel darker than without shadows); the default
+    bias leaves only the cube's real shadow (measured: 95 of 6912 pixels, both APIs)."""
+    unshadowed, app = render(backend, shadow_scene(cast_shadows=False))
+    app.close()
+    darker = {}
+    for bias in (0.0, 1.0):
+        scene = shadow_scene()
+        for entity in scene.entities:
+            for component in scene.components_of(entity):
+                if isinstance(component, LightComponent) and component.cast_shadows:
+                    component.shadow_bias = bias
+        image, app = render(backend, scene)
+        app.close()
+        diff = unshadowed[..., :3].astype(int) - image[..., :3].astype(int)
+        darker[bias] = int((diff.max(axis=2) > 3).sum())
+    assert darker[0.0] > 0.5 * W * H and darker[1.0] < 0.05 * W * H, darker
