@@ -1,0 +1,57 @@
+// The shadow study: the engine's shadow lookup (shadow.wgsl) with the percentage-closer filter's radius as a
+// material parameter (pcf = r: (2r + 1)^2 taps). The output is the lit fraction itself (white = lit).
+#include "frame.wgsl"
+#include "instance.wgsl"
+#include "shadow.wgsl"
+struct Material {
+    color: vec4<f32>,
+    pcf: f32,
+};
+@group(1) @binding(0) var<uniform> material: Material;
+
+struct VOut {
+    @builtin(position) position: vec4<f32>,
+    @location(0) world: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+};
+
+@vertex
+fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, inst: Instance) -> VOut {
+    var out: VOut;
+    let world = instance_model(inst) * vec4<f32>(position, 1.0);
+    out.position = frame.projection * frame.view * world;
+    out.world = world.xyz;
+    out.normal = instance_normal(inst, normal);
+    return out;
+}
+
+fn study_shadow(world_position: vec3<f32>, normal: vec3<f32>, r: i32) -> f32 {
+    let clip = lights.light_view_projection * vec4<f32>(world_position, 1.0);
+    let ndc = clip.xyz / clip.w;
+    let coord = vec3<f32>(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5, ndc.z);
+    if (any(coord < vec3<f32>(0.0)) || any(coord > vec3<f32>(1.0))) {
+        return 1.0;
+    }
+    let l = normalize(lights.position[i32(lights.shadow.w)].xyz);
+    let cos_theta = clamp(dot(normalize(normal), l), 0.1, 1.0);
+    let tan_theta = sqrt(1.0 - cos_theta * cos_theta) / cos_theta;
+    let reference = coord.z - lights.shadow.y * (1.5 + 2.0 * tan_theta);
+    var lit = 0.0;
+    for (var y = -r; y <= r; y++) {
+        for (var x = -r; x <= r; x++) {
+            let uv = coord.xy + vec2<f32>(f32(x), f32(y)) * lights.shadow.z;
+            lit += textureSampleCompareLevel(shadow_map, shadow_sampler, uv, reference);
+        }
+    }
+    let taps = f32(2 * r + 1);
+    return lit / (taps * taps);
+}
+
+@fragment
+fn fs_main(in: VOut) -> @location(0) vec4<f32> {
+    var lit = 1.0;
+    if (lights.shadow.x >= 0.5) {
+        lit = study_shadow(in.world, in.normal, i32(material.pcf + 0.5));
+    }
+    return vec4<f32>(material.color.rgb * lit, 1.0);
+}
