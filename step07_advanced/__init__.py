@@ -7,4 +7,4 @@ techniques live in the step's ``exercises/`` folder (the references in ``solutio
 """
 
 #: The techniques, in the order the step page teaches them (each is a sub-package of this step).
-TECHNIQUES = ("showcase", "terrain", "explode", "filter", "parallax", "pathtracer")
+TECHNIQUES = ("showcase", "terrain", "explode", "filter", "pbr_model", "parallax", "pathtracer")
