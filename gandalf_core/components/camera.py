@@ -26,9 +26,9 @@ class CameraComponent(Component):
     on construction and again whenever a projection is built, so a bad value names its field.
 
     ``reverse_z`` maps near to the far end of the depth range and far (which may be ``math.inf``) to the
-    near end. With WebGPU's [0, 1] range and a float depth buffer that spreads precision evenly over huge
-    depth ranges; OpenGL draws the same picture but, with its [-1, 1] range and 24-bit depth, gains no
-    precision from it.
+    near end. With a [0, 1] clip depth and a float depth buffer that spreads precision evenly over huge depth
+    ranges: WebGPU has both; OpenGL switches to them for reverse-Z frames (clip control and a 32-bit float depth
+    target), so one camera gives the same picture, with the same precision, in both APIs.
     """
 
     def __init__(
