@@ -1,0 +1,72 @@
+"""The mutation check itself: a mutant that breaks ``hsv_to_rgb`` is killed, one that changes nothing survives
+and fails the run, and a survivor listed in ``known_gaps.txt`` is reported without failing it.
+
+Each case runs ``python -m gandalf_core.grading.mutants`` in a subprocess on step 01's ``hsv_to_rgb`` only.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+
+DEFINITIONS = """
+import math
+
+from gandalf_core.grading.mutants import Mutant, mutant, patch
+
+MUTANTS: list[Mutant] = []
+
+
+@mutant(MUTANTS, "step01_window", "hsv_to_rgb", "radians", "reads the hue as radians")
+def _(pkg):
+    original = pkg.hue.hsv_to_rgb
+    patch(pkg, "hue.hsv_to_rgb", lambda h, s, v: original(math.degrees(h), s, v))
+
+
+@mutant(MUTANTS, "step01_window", "hsv_to_rgb", "unchanged", "no change at all: must survive")
+def _(pkg):
+    pass
+"""
+
+
+def _run(tmp_path: Path, *args: str) -> tuple[int, str, list[dict]]:
+    folder = tmp_path / "mutants"
+    folder.mkdir(exist_ok=True)
+    (folder / "step01_window.py").write_text(textwrap.dedent(DEFINITIONS))
+    out = tmp_path / "outcomes.json"
+    env = {k: v for k, v in os.environ.items() if k != "GANDALF_IMPL"}
+    proc = subprocess.run(
+        [sys.executable, "-m", "gandalf_core.grading.mutants", "--dir", str(folder), "--json", str(out), *args],
+        cwd=ROOT,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    return proc.returncode, proc.stdout + proc.stderr, json.loads(out.read_text()) if out.exists() else []
+
+
+def test_a_wrong_mutant_is_killed_and_an_unchanged_one_survives(tmp_path):
+    code, output, outcomes = _run(tmp_path, "--jobs", "2")
+    by_name = {o["mutant"]: o for o in outcomes}
+    assert by_name["step01_window:hsv_to_rgb:radians"]["status"] == "killed", output[-2000:]
+    assert "hsv_to_rgb(" in by_name["step01_window:hsv_to_rgb:radians"]["detail"]  # the test's own message
+    assert by_name["step01_window:hsv_to_rgb:unchanged"]["status"] == "survived", output[-2000:]
+    assert by_name["step01_window:*:control"]["status"] == "passed", output[-2000:]
+    assert code == 1 and "SURVIVED step01_window:hsv_to_rgb:unchanged" in output
+
+
+def test_a_known_gap_is_listed_but_does_not_fail_the_run(tmp_path):
+    (tmp_path / "mutants").mkdir()
+    (tmp_path / "mutants" / "known_gaps.txt").write_text("step01_window:hsv_to_rgb:unchanged  # a test for the test\n")
+    code, output, outcomes = _run(tmp_path, "-k", "unchanged", "--no-control")
+    assert [o["status"] for o in outcomes] == ["known-gap"], output[-2000:]
+    assert code == 0 and "KNOWN GAP step01_window:hsv_to_rgb:unchanged" in output
+    code, output, _ = _run(tmp_path, "-k", "unchanged", "--no-control", "--strict")
+    assert code == 1, output[-2000:]
