@@ -12,8 +12,8 @@ the demo). How large an error does that step make, and what does a smaller step 
   the error halves when the step halves, until float32 rounding of ``n`` small increments takes over;
 * the time: the median over ``--repeats`` runs of the wall time for one simulated second (``1 / dt`` kernel
   steps, then one read-back so the GPU's work is inside the measurement), per backend: ``numpy`` (the float32
-  twin ``particle_step_np``), ``opengl`` (the GLSL compute kernel on a standalone EGL context) and ``webgpu``
-  (the WGSL kernel), both with the reference solution's ``particle_step``.
+  twin ``particle_step_np``), ``opengl`` (the GLSL compute kernel on a headless app's context) and ``webgpu``
+  (the WGSL kernel on its device), both with the reference solution's ``particle_step``.
 
 Writes ``step07_study_particles.json``, ``.md`` (the table) and ``.png`` (error against time per simulated
 second) to ``--out``. Runs headless and prints progress.
@@ -85,35 +85,32 @@ class _NumpyRunner:
 
 
 class _GPURunner:
-    """A GPU kernel of the showcase on its own headless context/device, reset by re-uploading the start state."""
+    """A GPU kernel of the showcase on the context/device of a tiny headless app (compute runs there, as in the
+    demo), reset by re-uploading the start state."""
 
     def __init__(self, backend: str, state: np.ndarray) -> None:
+        from gandalf_core import Application
         from step07_advanced import solutions
 
         self.backend, self.start = backend, np.array(state, dtype=np.float32)
+        self.app = Application(backend, 8, 8, headless=True)
+        renderer = self.app.renderer
         if backend == "opengl":
-            import moderngl
-
             from .compute_gl import GLParticleKernel
 
-            self.ctx = moderngl.create_standalone_context(backend="egl", require=430)
-            self.kernel = GLParticleKernel(self.ctx, solutions, self.start)
-            self.device_name = self.ctx.info.get("GL_RENDERER", "OpenGL")
+            self.kernel = GLParticleKernel(renderer.ctx, solutions, self.start)
+            self.device_name = renderer.ctx.info.get("GL_RENDERER", "OpenGL")
         else:
-            import wgpu
-
             from .compute_wgpu import WGPUParticleKernel
 
-            adapter = wgpu.gpu.request_adapter_sync(power_preference="high-performance")
-            self.device = adapter.request_device_sync()
-            self.kernel = WGPUParticleKernel(self.device, solutions, self.start)
-            self.device_name = str(adapter.info.get("device", "WebGPU"))
+            self.kernel = WGPUParticleKernel(renderer.device, solutions, self.start)
+            self.device_name = str(renderer.adapter.info.get("device", "WebGPU"))
 
     def reset(self) -> None:
         if self.backend == "opengl":
             self.kernel.particles.write(self.start.tobytes())
         else:
-            self.device.queue.write_buffer(self.kernel.particles, 0, self.start.tobytes())
+            self.app.renderer.device.queue.write_buffer(self.kernel.particles, 0, self.start.tobytes())
 
     def step(self, params: SimParams) -> None:
         self.kernel.step(params)
@@ -123,8 +120,7 @@ class _GPURunner:
 
     def release(self) -> None:
         self.kernel.release()
-        if self.backend == "opengl":
-            self.ctx.release()
+        self.app.close()
 
 
 def open_runner(backend: str, state: np.ndarray):

@@ -46,3 +46,11 @@ def test_main_writes_json_table_and_plot(tmp_path):
     assert {r["mapping"] for r in result["rows"]} == {m[0] for m in study.QUICK_MAPPINGS}
     assert "float32 bound" in (tmp_path / f"{study.STEM}.md").read_text()
     assert (tmp_path / f"{study.STEM}.png").stat().st_size > 1000
+
+
+def test_help_only_prints_help(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(SystemExit) as stop:
+        study.main(["--help"])
+    assert stop.value.code == 0 and "usage:" in capsys.readouterr().out
+    assert not any(tmp_path.iterdir()), "--help wrote files"

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import json
 
+import pytest
+
 from step05_scenegraph import study_fixed_step as study
 
 
@@ -30,3 +32,11 @@ def test_main_writes_json_table_and_plot(tmp_path, capsys):
     assert (tmp_path / f"{study.STEM}.md").read_text().startswith("| max_steps |")
     assert (tmp_path / f"{study.STEM}.png").stat().st_size > 1000
     assert "fixed-step study" in capsys.readouterr().out
+
+
+def test_help_only_prints_help(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(SystemExit) as stop:
+        study.main(["--help"])
+    assert stop.value.code == 0 and "usage:" in capsys.readouterr().out
+    assert not any(tmp_path.iterdir()), "--help wrote files"

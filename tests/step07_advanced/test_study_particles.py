@@ -33,3 +33,11 @@ def test_main_writes_json_table_and_plot(tmp_path):
     assert [r["backend"] for r in result["rows"]] == ["numpy"] * len(study.QUICK_DTS)
     assert "| backend |" in (tmp_path / f"{study.STEM}.md").read_text()
     assert (tmp_path / f"{study.STEM}.png").stat().st_size > 1000
+
+
+def test_help_only_prints_help(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(SystemExit) as stop:
+        study.main(["--help"])
+    assert stop.value.code == 0 and "usage:" in capsys.readouterr().out
+    assert not any(tmp_path.iterdir()), "--help wrote files"
