@@ -12,6 +12,7 @@ Pillow is imported only when a file is read or written.
 
 from __future__ import annotations
 
+import weakref
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -68,10 +69,20 @@ def _check_rgba8(label: str, field: str, pixels: Any) -> np.ndarray:
         )
     if pixels.shape[0] < 1 or pixels.shape[1] < 1:
         raise ResourceError(label, field, f"image is empty: shape {pixels.shape}")
+    if _FRESH.get(id(pixels)) is pixels and pixels.flags.c_contiguous:
+        # Just decoded from a file by this module: nobody else holds it, so it becomes the texture's own array
+        # (a 2048² face is 16 MB; copying six of them doubled a sky's memory while loading).
+        del _FRESH[id(pixels)]
+        pixels.flags.writeable = False
+        return pixels
     # A copy keeps later edits of the caller's array out of a texture that may already be cached on the GPU.
     owned = np.array(pixels, dtype=np.uint8, order="C", copy=True)
     owned.flags.writeable = False
     return owned
+
+
+# Arrays decoded from image files by _read_image_rgba8 and not yet adopted by a TextureData/CubeTextureData.
+_FRESH: weakref.WeakValueDictionary[int, np.ndarray] = weakref.WeakValueDictionary()
 
 
 def _to_rgba8(label: str, arr: Any) -> np.ndarray:
@@ -127,13 +138,24 @@ def _box_weights(n: int) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _reduce_axis(img: np.ndarray, axis: int) -> np.ndarray:
-    idx, w = _box_weights(img.shape[axis])
-    out = 0.0
+    n = img.shape[axis]
+    if n % 2 == 0:  # the plain 2-texel average, on strided views (no gathers), in img's float type
+        even = [slice(None)] * img.ndim
+        odd = list(even)
+        even[axis], odd[axis] = slice(0, None, 2), slice(1, None, 2)
+        out = img[tuple(even)] + img[tuple(odd)]
+        out *= 0.5
+        return out
+    idx, w = _box_weights(n)
+    w = w.astype(img.dtype) if img.dtype.kind == "f" else w
+    shape = [1] * img.ndim
+    shape[axis] = w.shape[0]
+    out = None
     for k in range(idx.shape[1]):
-        taps = np.take(img, idx[:, k], axis=axis)
-        shape = [1] * img.ndim
-        shape[axis] = w.shape[0]
-        out = out + taps * w[:, k].reshape(shape)
+        if not w[:, k].any():
+            continue
+        term = np.take(img, idx[:, k], axis=axis) * w[:, k].reshape(shape)
+        out = term if out is None else out + term
     return out
 
 
@@ -142,21 +164,41 @@ def _mip_chain(pixels: np.ndarray, srgb: bool) -> list[np.ndarray]:
     levels = [pixels]
     h, w = pixels.shape[-3], pixels.shape[-2]
     count = max(h, w).bit_length()
-    # Work on a float chain so rounding to 8 bits happens once per level, not accumulated over levels.
-    current = pixels.astype(np.float64) / 255.0
+    if count == 1:
+        return levels
+    # Work on a float chain so rounding to 8 bits happens once per level, not accumulated over levels. float32
+    # is ample for 8-bit results (relative error ~1e-7 against a rounding step of 1/510) and halves the memory
+    # of float64: a 6 x 2048² cube map's level 0 is 400 MB in float32 (800 MB in float64). The sRGB decode is a
+    # 256-entry table lookup.
+    current = (_SRGB_DECODE if srgb else _UNORM_DECODE)[pixels]
     if srgb:
-        current[..., :3] = srgb_to_linear(current[..., :3])
+        current[..., 3] = _UNORM_DECODE[pixels[..., 3]]
     for _ in range(count - 1):
-        current = _reduce_axis(_reduce_axis(current, current.ndim - 3), current.ndim - 2)
-        encoded = current.copy()
-        if srgb:
-            encoded[..., :3] = linear_to_srgb(encoded[..., :3])  # alpha is never sRGB-encoded
-        levels.append(np.ascontiguousarray(np.rint(np.clip(encoded, 0.0, 1.0) * 255.0).astype(np.uint8)))
+        current = _reduce_axis(_reduce_axis(current, current.ndim - 3), current.ndim - 2).astype(np.float32, copy=False)
+        encoded = np.clip(current, 0.0, 1.0)
+        if srgb:  # alpha is never sRGB-encoded
+            rgb = encoded[..., :3]
+            encoded[..., :3] = np.where(rgb <= 0.0031308, rgb * np.float32(12.92),
+                                        np.float32(1.055) * rgb ** np.float32(1.0 / 2.4) - np.float32(0.055))
+        encoded *= np.float32(255.0)
+        levels.append(np.ascontiguousarray(np.rint(encoded).astype(np.uint8)))
     return levels
 
 
+# uint8 -> float32 in [0, 1], plain and sRGB-decoded (computed in float64, stored in float32).
+_UNORM_DECODE = (np.arange(256, dtype=np.float64) / 255.0).astype(np.float32)
+_SRGB_DECODE = srgb_to_linear(np.arange(256, dtype=np.float64) / 255.0).astype(np.float32)
+
+
 def _read_image_rgba8(path: str | Path, label: str) -> np.ndarray:
-    """Read an image file with Pillow and convert it to (H, W, 4) uint8, top row first."""
+    """Read an image file with Pillow and convert it to (H, W, 4) uint8, top row first (a fresh array that the
+    texture adopts without a copy)."""
+    pixels = _decode_image_rgba8(path, label)
+    _FRESH[id(pixels)] = pixels
+    return pixels
+
+
+def _decode_image_rgba8(path: str | Path, label: str) -> np.ndarray:
     from PIL import Image, ImageOps
 
     p = Path(path)

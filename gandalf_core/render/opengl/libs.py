@@ -48,25 +48,38 @@ class TextureLib(ResourceLib[Any]):
 
     def _create(self, name: str, data: TextureData | CubeTextureData) -> Any:
         fmt = GL_SRGB8_ALPHA8 if data.srgb else GL_RGBA8
+        if isinstance(data, CubeTextureData) and data.levels is None:
+            # Each face goes straight from its own array (no stacked copy, no bytes copy) and the mip levels are
+            # made on the GPU (glGenerateMipmap; sRGB levels are averaged in linear light by the driver): a sky of
+            # six 2048² faces costs no CPU memory beyond the faces themselves.
+            tex = self.ctx.texture_cube((data.size, data.size), 4, None, internal_format=fmt)
+            for face, pixels in enumerate(data.faces):
+                tex.write(face, pixels)
+            if data.mipmaps:
+                tex.build_mipmaps(0, data.mip_levels - 1)
+            return self._finish(tex, data, data.mipmaps)
         chain = data.mip_chain() if data.mipmaps else None
         if isinstance(data, CubeTextureData):
             levels = chain or [data.pixels]
-            tex = self.ctx.texture_cube((data.size, data.size), 4, levels[0].tobytes(), internal_format=fmt)
+            tex = self.ctx.texture_cube((data.size, data.size), 4, levels[0], internal_format=fmt)
         else:
             levels = chain or [data.pixels]
-            tex = self.ctx.texture((data.width, data.height), 4, levels[0].tobytes(), internal_format=fmt)
+            tex = self.ctx.texture((data.width, data.height), 4, levels[0], internal_format=fmt)
         if chain:
             tex.build_mipmaps(0, len(chain) - 1)
             if not isinstance(data, CubeTextureData):
                 # Replace the driver's levels with ours (averaged in linear light), as the WebGPU backend
                 # uploads; moderngl cannot write the levels of a cube map, which keep the driver's ...
                 for level, pixels in enumerate(chain[1:], start=1):
-                    tex.write(pixels.tobytes(), level=level)
+                    tex.write(pixels, level=level)
             elif data.levels is not None:
                 # ... unless they are given explicitly (a prefiltered environment): then glTexSubImage2D writes them.
                 self._write_cube_levels(tex, chain)
-        linear = moderngl.LINEAR_MIPMAP_LINEAR if chain else moderngl.LINEAR
-        nearest = moderngl.NEAREST_MIPMAP_NEAREST if chain else moderngl.NEAREST
+        return self._finish(tex, data, bool(chain))
+
+    def _finish(self, tex: Any, data: TextureData | CubeTextureData, mipmapped: bool) -> Any:
+        linear = moderngl.LINEAR_MIPMAP_LINEAR if mipmapped else moderngl.LINEAR
+        nearest = moderngl.NEAREST_MIPMAP_NEAREST if mipmapped else moderngl.NEAREST
         tex.filter = (linear, moderngl.LINEAR) if data.filter == "linear" else (nearest, moderngl.NEAREST)
         if isinstance(data, TextureData):
             tex.repeat_x = tex.repeat_y = data.wrap == "repeat"

@@ -51,24 +51,28 @@ class TextureLib(ResourceLib[WGPUTexture]):
 
     def _create(self, name: str, data: TextureData | CubeTextureData) -> WGPUTexture:
         cube = isinstance(data, CubeTextureData)
-        chain = data.mip_chain() if data.mipmaps else [data.pixels]
-        height, width = chain[0].shape[-3:-1]
-        layers = 6 if cube else 1
-        texture = self.device.create_texture(
-            size=(width, height, layers),
-            mip_level_count=len(chain),
-            format="rgba8unorm-srgb" if data.srgb else "rgba8unorm",
-            usage=wgpu.TextureUsage.TEXTURE_BINDING | wgpu.TextureUsage.COPY_DST,
-            label=name,
-        )
-        for level, pixels in enumerate(chain):
-            h, w = pixels.shape[-3:-1]
-            self.device.queue.write_texture(
-                {"texture": texture, "mip_level": level, "origin": (0, 0, 0)},
-                np.ascontiguousarray(pixels),
-                {"offset": 0, "bytes_per_row": w * 4, "rows_per_image": h},
-                (w, h, layers),
-            )
+        fmt = "rgba8unorm-srgb" if data.srgb else "rgba8unorm"
+        usage = wgpu.TextureUsage.TEXTURE_BINDING | wgpu.TextureUsage.COPY_DST
+        if cube and data.levels is None and data.mipmaps and _is_power_of_two(data.size):
+            # A cube map's faces go up one by one from their own arrays (no stacked copy) and its mip levels are
+            # made on the GPU, each the exact 2x2 box average of the level above (one bilinear tap at the texel
+            # corner), in linear light for sRGB: no CPU mip chain (6 x 2048² faces: ~0.5 GB of floats).
+            usage |= wgpu.TextureUsage.RENDER_ATTACHMENT | wgpu.TextureUsage.COPY_SRC
+            texture = self.device.create_texture(size=(data.size, data.size, 6), mip_level_count=data.mip_levels,
+                                                 format=fmt, usage=usage, label=name)
+            for face, pixels in enumerate(data.faces):
+                self._write(texture, 0, face, pixels)
+            self._downsample(texture, fmt, data.size, data.mip_levels)
+        else:
+            chain = data.mip_chain() if data.mipmaps else [data.pixels]
+            height, width = chain[0].shape[-3:-1]
+            layers = 6 if cube else 1
+            texture = self.device.create_texture(size=(width, height, layers), mip_level_count=len(chain),
+                                                 format=fmt, usage=usage, label=name)
+            for level, pixels in enumerate(chain):
+                for layer in range(layers):
+                    self._write(texture, level, layer, pixels[layer] if cube else pixels)
+            del chain
         view = texture.create_view(dimension="cube" if cube else "2d")
         linear = data.filter == "linear"
         address = "clamp-to-edge" if cube else _ADDRESS[data.wrap]
@@ -81,8 +85,74 @@ class TextureLib(ResourceLib[WGPUTexture]):
         self.stats["textures_created"] += 1
         return WGPUTexture(texture, view, sampler)
 
+    def _write(self, texture: Any, level: int, layer: int, pixels: np.ndarray) -> None:
+        h, w = pixels.shape[:2]
+        self.device.queue.write_texture({"texture": texture, "mip_level": level, "origin": (0, 0, layer)},
+                                        np.ascontiguousarray(pixels), {"offset": 0, "bytes_per_row": w * 4,
+                                                                       "rows_per_image": h}, (w, h, 1))
+
+    def _downsample(self, texture: Any, fmt: str, size: int, levels: int) -> None:
+        """Fill mip levels 1.. of every layer of ``texture`` from level 0, one render pass per layer and level."""
+        pipeline, sampler = self._mip_pipeline(fmt)
+        encoder = self.device.create_command_encoder(label="mip levels")
+        layout = pipeline.get_bind_group_layout(0)
+        for layer in range(texture.size[2]):
+            for level in range(1, levels):
+                src = texture.create_view(dimension="2d", base_mip_level=level - 1, mip_level_count=1,
+                                          base_array_layer=layer, array_layer_count=1)
+                dst = texture.create_view(dimension="2d", base_mip_level=level, mip_level_count=1,
+                                          base_array_layer=layer, array_layer_count=1)
+                group = self.device.create_bind_group(layout=layout, entries=[
+                    {"binding": 0, "resource": src}, {"binding": 1, "resource": sampler}])
+                rp = encoder.begin_render_pass(color_attachments=[{
+                    "view": dst, "load_op": "clear", "store_op": "store", "clear_value": (0, 0, 0, 0)}])
+                rp.set_pipeline(pipeline)
+                rp.set_bind_group(0, group)
+                rp.draw(3)
+                rp.end()
+        self.device.queue.submit([encoder.finish()])
+
+    def _mip_pipeline(self, fmt: str) -> tuple[Any, Any]:
+        cache = self.__dict__.setdefault("_mip_pipelines", {})
+        if fmt not in cache:
+            module = self.device.create_shader_module(code=_MIP_WGSL, label="mip downsample")
+            pipeline = self.device.create_render_pipeline(
+                layout="auto",
+                vertex={"module": module, "entry_point": "vs"},
+                fragment={"module": module, "entry_point": "fs", "targets": [{"format": fmt}]},
+                primitive={"topology": "triangle-list"},
+                label=f"mip downsample {fmt}",
+            )
+            sampler = self.device.create_sampler(mag_filter="linear", min_filter="linear",
+                                                 address_mode_u="clamp-to-edge", address_mode_v="clamp-to-edge")
+            cache[fmt] = (pipeline, sampler)
+        return cache[fmt]
+
     def _release(self, item: WGPUTexture) -> None:
         item.texture.destroy()
+
+
+def _is_power_of_two(n: int) -> bool:
+    return n > 0 and n & (n - 1) == 0
+
+
+# One full-screen triangle; each target texel's centre maps to the shared corner of its 2x2 source texels, where
+# one bilinear tap is their exact average (sampled as linear light from an -srgb view, encoded again on store).
+_MIP_WGSL = """
+@group(0) @binding(0) var src: texture_2d<f32>;
+@group(0) @binding(1) var smp: sampler;
+struct VOut { @builtin(position) pos: vec4<f32>, @location(0) uv: vec2<f32> };
+@vertex fn vs(@builtin(vertex_index) i: u32) -> VOut {
+    let p = vec2<f32>(f32((i << 1u) & 2u), f32(i & 2u));
+    var out: VOut;
+    out.pos = vec4<f32>(p * 2.0 - 1.0, 0.0, 1.0);
+    out.uv = vec2<f32>(p.x, 1.0 - p.y);
+    return out;
+}
+@fragment fn fs(v: VOut) -> @location(0) vec4<f32> {
+    return textureSampleLevel(src, smp, v.uv, 0.0);
+}
+"""
 
 
 # --- shaders --------------------------------------------------------------------------------------

@@ -1,0 +1,105 @@
+"""Cube maps without extra CPU copies: mip levels made on the GPU (OpenGL glGenerateMipmap, WebGPU render passes),
+float32 CPU mip chains, image files adopted without a copy.
+
+Tolerances: a GPU-made level differs from the CPU's float box filter (``CubeTextureData.mip_chain``) by at most
+1/255 at level 1 (0.6/255 on average) and 4/255 at deeper levels (3/255 on average) of a 32² noise cube: the GPU
+rounds each level to 8 bits, the CPU chain only once (noise averages to ties, the worst case for that).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from gandalf_core.resources import CubeTextureData, TextureData
+from gandalf_core.resources.texture_data import _mip_chain
+
+
+def _noise_cube(size: int, srgb: bool) -> CubeTextureData:
+    rng = np.random.default_rng(size)
+    faces = tuple(rng.integers(0, 256, (size, size, 4), dtype=np.uint8) for _ in range(6))
+    return CubeTextureData(faces, srgb=srgb, name=f"noise{size}{srgb}")
+
+
+@pytest.mark.parametrize("srgb", [True, False])
+def test_webgpu_cube_mips_are_made_on_the_gpu(srgb: bool) -> None:
+    from gandalf_core.render.webgpu.renderer import WebGPURenderer
+
+    renderer = WebGPURenderer(16, 16)
+    try:
+        data = _noise_cube(32, srgb)
+        texture = renderer.textures.build(data.name, data).texture
+        assert texture.mip_level_count == data.mip_levels == 6
+        chain = data.mip_chain()
+        for level in range(1, data.mip_levels):
+            s = 32 >> level
+            for face in range(6):
+                raw = renderer.device.queue.read_texture(
+                    {"texture": texture, "mip_level": level, "origin": (0, 0, face)},
+                    {"offset": 0, "bytes_per_row": s * 4, "rows_per_image": s}, (s, s, 1))
+                got = np.frombuffer(raw, np.uint8).reshape(s, s, 4).astype(int)
+                diff = np.abs(got - chain[level][face].astype(int))
+                limit, mean_limit = (1, 0.6) if level == 1 else (4, 3.0)
+                assert diff.max() <= limit and diff.mean() <= mean_limit, (
+                    f"level {level} face {face} (srgb={srgb}): GPU mip differs from the CPU box filter by up to "
+                    f"{diff.max()} (mean {diff.mean():.2f}); expected <= {limit}")
+    finally:
+        renderer.release()
+
+
+def test_opengl_cube_texture_builds_its_mips_on_the_gpu(monkeypatch: pytest.MonkeyPatch) -> None:
+    from gandalf_core.render.opengl.renderer import OpenGLRenderer
+
+    def no_cpu_chain(self):  # the CPU chain must not be computed for a cube map without explicit levels
+        raise AssertionError("mip_chain() called for a cube map: its levels should be made on the GPU")
+
+    renderer = OpenGLRenderer(16, 16)
+    try:
+        data = _noise_cube(16, True)
+        monkeypatch.setattr(CubeTextureData, "mip_chain", no_cpu_chain)
+        monkeypatch.setattr(CubeTextureData, "pixels", property(no_cpu_chain))
+        tex = renderer.textures.build(data.name, data)
+        for face in range(6):
+            back = np.frombuffer(tex.read(face, alignment=1), np.uint8).reshape(16, 16, 4)
+            assert np.array_equal(back, data.faces[face])
+    finally:
+        renderer.release()
+
+
+def test_float32_mip_chain_matches_float64_reference() -> None:
+    rng = np.random.default_rng(1)
+    for shape in [(6, 16, 16, 4), (37, 23, 4), (1, 7, 4)]:
+        pixels = rng.integers(0, 256, shape, dtype=np.uint8)
+        for srgb in (True, False):
+            chain = _mip_chain(pixels, srgb)
+            # float64 reference: decode, box-average (exact 2x2 for even sizes), encode
+            if shape[0] == 6:
+                x = pixels.astype(np.float64) / 255.0
+                if srgb:
+                    x[..., :3] = np.where(x[..., :3] <= 0.04045, x[..., :3] / 12.92,
+                                          ((x[..., :3] + 0.055) / 1.055) ** 2.4)
+                x = 0.25 * (x[:, ::2, ::2] + x[:, 1::2, ::2] + x[:, ::2, 1::2] + x[:, 1::2, 1::2])
+                if srgb:
+                    x[..., :3] = np.where(x[..., :3] <= 0.0031308, x[..., :3] * 12.92,
+                                          1.055 * x[..., :3] ** (1 / 2.4) - 0.055)
+                ref = np.rint(np.clip(x, 0, 1) * 255).astype(int)
+                assert np.abs(chain[1].astype(int) - ref).max() <= 1
+            assert all(level.dtype == np.uint8 and level.flags.c_contiguous for level in chain)
+
+
+def test_image_files_are_adopted_without_a_copy(tmp_path) -> None:
+    from PIL import Image
+
+    rng = np.random.default_rng(2)
+    paths = []
+    for i in range(6):
+        path = tmp_path / f"f{i}.png"
+        Image.fromarray(rng.integers(0, 256, (8, 8, 4), dtype=np.uint8)).save(path)
+        paths.append(path)
+    cube = CubeTextureData.from_files(paths)
+    assert all(not f.flags.writeable and f.base is None for f in cube.faces)
+    # An array the caller owns is still copied (later edits must not reach a cached texture).
+    mine = rng.integers(0, 256, (4, 4, 4), dtype=np.uint8)
+    tex = TextureData(mine)
+    mine[0, 0] = 0
+    assert tex.pixels is not mine and not tex.pixels.flags.writeable
