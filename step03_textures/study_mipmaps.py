@@ -182,7 +182,7 @@ def plot(result: dict, path: Path) -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, ax = plt.subplots(figsize=(6.4, 4.2), dpi=100)
+    fig, ax = plt.subplots(figsize=(8.4, 4.2), dpi=100)
     markers = {"opengl": "o", "webgpu": "s"}
     colours = dict(zip(SAMPLERS, ("tab:red", "tab:orange", "tab:blue", "tab:green")))
     for r in result["rows"]:
@@ -193,7 +193,7 @@ def plot(result: dict, path: Path) -> None:
     ax.set_ylabel("mean error against the box-filtered reference (8-bit)")
     ax.set_title(f"Checkerboard floor at a grazing angle, {result['size'][0]}×{result['size'][1]}", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, bbox_to_anchor=(1.02, 1.0), loc="upper left")
     fig.tight_layout()
     fig.savefig(path)
     plt.close(fig)
