@@ -13,6 +13,7 @@ import numpy as np
 
 from ..ecs import Component
 from ..math import orthographic, perspective
+from .fields import Choice, Flag, Number
 
 PROJECTIONS = ("perspective", "orthographic")
 # Parameter names of the projection functions -> this component's fields, for error messages.
@@ -30,6 +31,15 @@ class CameraComponent(Component):
     ranges: WebGPU has both; OpenGL switches to them for reverse-Z frames (clip control and a 32-bit float depth
     target), so one camera gives the same picture, with the same precision, in both APIs.
     """
+
+    fov = Number(0.0, 180.0, note="degrees, vertical")
+    near = Number(0.0)
+    far = Number(0.0, allow_inf=True)
+    projection = Choice(PROJECTIONS)
+    height = Number(0.0, note="world units, orthographic")
+    aspect = Number(0.0, optional=True, note="None follows the render target")
+    primary = Flag()
+    reverse_z = Flag()
 
     def __init__(
         self,

@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 from ..ecs import Component
+from .fields import Name
 
 
 class SkyboxComponent(Component):
     """Names a cube texture in the scene's assets (or the renderer's texture library)."""
 
+    texture = Name("a cube texture name")
+
     def __init__(self, texture: str) -> None:
-        if not isinstance(texture, str) or not texture:
-            raise TypeError(f"SkyboxComponent.texture must be a cube texture name, got {texture!r}")
         self.texture = texture

@@ -136,8 +136,12 @@ def test_camera_made_degenerate_at_run_time_raises_not_nan():
     with make_app("opengl") as app:
         app.add_scene(scene)
         app.step()
-        scene.get_component(camera, CameraComponent).fov = 0.0
-        with pytest.raises(ValueError, match="fov"):
+        component = scene.get_component(camera, CameraComponent)
+        with pytest.raises(ValueError, match=r"CameraComponent\.fov must be a number in \(0, 180\).*got 0\.0"):
+            component.fov = 0.0  # refused where it is set, naming the field
+        assert component.fov == 50.0  # the camera keeps its good value
+        component.near, component.far = 5.0, 1.0  # each fine alone: together checked when the frame is built
+        with pytest.raises(ValueError, match=r"CameraComponent\.far must be greater than CameraComponent\.near"):
             app.step()
 
 
@@ -346,3 +350,25 @@ def test_fly_right_drag_turns_and_keeps_the_initial_heading():
         app.step()
         assert heading_of(transform.quaternion)[1] == pytest.approx(-89.0)
         assert np.all(np.isfinite(current_view(app)))
+
+
+@pytest.mark.parametrize(("make", "needle"), [
+    (lambda: CameraComponent("wide"), r"CameraComponent\.fov must be a number in \(0, 180\).*got 'wide'"),
+    (lambda: CameraComponent(near="close"), r"CameraComponent\.near must be a finite number > 0, got 'close'"),
+    (lambda: CameraComponent(far=float("nan")), r"CameraComponent\.far must be"),
+    (lambda: CameraComponent(projection="fisheye"), r"CameraComponent\.projection must be one of 'perspective'"),
+    (lambda: CameraComponent(primary=1), r"CameraComponent\.primary must be True or False, got 1"),
+    (lambda: CameraComponent(reverse_z="yes"), r"CameraComponent\.reverse_z must be True or False"),
+    (lambda: CameraComponent(projection="orthographic", height=-2), r"CameraComponent\.height must be"),
+])
+def test_bad_camera_fields_name_the_field(make, needle):
+    with pytest.raises(ValueError, match=needle):
+        make()
+
+
+@pytest.mark.parametrize("value", ["blue", (1, 0), (1, float("inf"), 0), (-0.1, 0, 0), None])
+def test_bad_clear_colours_name_the_field(value):
+    from gandalf_core.components import ClearColorComponent
+
+    with pytest.raises(ValueError, match=r"ClearColorComponent\.color must be 3 or 4 finite floats"):
+        ClearColorComponent(value)
