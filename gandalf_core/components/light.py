@@ -17,18 +17,25 @@ more detaches shadows from their casters, "peter-panning").
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 
 import numpy as np
 
 from ..ecs import Component
+from .fields import Color, Number
 
 LIGHT_KINDS = ("point", "directional", "ambient")
 
 
 class LightComponent(Component):
     """A point, directional or ambient light; every field is checked whenever it is set."""
+
+    color = Color()
+    intensity = Number(0.0, low_inclusive=True)
+    range = Number(0.0, low_inclusive=True, note="0 = no falloff")
+    shadow_extent = Number(0.0, note="half the shadow box's width")
+    shadow_depth = Number(0.0, note="the shadow box's length along the light")
+    shadow_bias = Number(0.0, low_inclusive=True, note="a scale of the default slope-scaled bias, 1 = default")
 
     def __init__(self, kind: str = "point", color: Sequence[float] = (1.0, 1.0, 1.0), intensity: float = 1.0,
                  range: float = 0.0, cast_shadows: bool = False, shadow_extent: float = 10.0,
@@ -57,37 +64,6 @@ class LightComponent(Component):
         self._kind = value
 
     @property
-    def color(self) -> np.ndarray:
-        return self._color
-
-    @color.setter
-    def color(self, value: Sequence[float]) -> None:
-        rgb = np.asarray(value, dtype=np.float64).ravel()
-        if rgb.shape != (3,) or not np.all(np.isfinite(rgb)) or np.any(rgb < 0):
-            raise ValueError(f"LightComponent.color must be 3 non-negative finite floats, got {value!r}")
-        self._color = rgb
-
-    @property
-    def intensity(self) -> float:
-        return self._intensity
-
-    @intensity.setter
-    def intensity(self, value: float) -> None:
-        if not (math.isfinite(value) and value >= 0):
-            raise ValueError(f"LightComponent.intensity must be a non-negative number, got {value!r}")
-        self._intensity = float(value)
-
-    @property
-    def range(self) -> float:
-        return self._range
-
-    @range.setter
-    def range(self, value: float) -> None:
-        if not (math.isfinite(value) and value >= 0):
-            raise ValueError(f"LightComponent.range must be a non-negative number (0 = no falloff), got {value!r}")
-        self._range = float(value)
-
-    @property
     def cast_shadows(self) -> bool:
         return self._cast_shadows
 
@@ -99,40 +75,6 @@ class LightComponent(Component):
             raise ValueError(f"LightComponent.cast_shadows: only a directional light can cast shadows, "
                              f"this one is {self.kind!r}")
         self._cast_shadows = bool(value)
-
-    @property
-    def shadow_extent(self) -> float:
-        return self._shadow_extent
-
-    @shadow_extent.setter
-    def shadow_extent(self, value: float) -> None:
-        if not (math.isfinite(value) and value > 0):
-            raise ValueError(f"LightComponent.shadow_extent must be a positive number (half the shadow box's "
-                             f"width), got {value!r}")
-        self._shadow_extent = float(value)
-
-    @property
-    def shadow_depth(self) -> float:
-        return self._shadow_depth
-
-    @shadow_depth.setter
-    def shadow_depth(self, value: float) -> None:
-        if not (math.isfinite(value) and value > 0):
-            raise ValueError(f"LightComponent.shadow_depth must be a positive number (the shadow box's length "
-                             f"along the light), got {value!r}")
-        self._shadow_depth = float(value)
-
-    @property
-    def shadow_bias(self) -> float:
-        return self._shadow_bias
-
-    @shadow_bias.setter
-    def shadow_bias(self, value: float) -> None:
-        if isinstance(value, bool) or not (isinstance(value, (int, float, np.floating, np.integer))
-                                           and math.isfinite(value) and value >= 0):
-            raise ValueError(f"LightComponent.shadow_bias must be a finite number >= 0 (a scale of the default "
-                             f"slope-scaled bias, 1 = default), got {value!r}")
-        self._shadow_bias = float(value)
 
     def __repr__(self) -> str:
         bias = f", shadow_bias={self.shadow_bias}" if self.shadow_bias != 1.0 else ""

@@ -7,6 +7,7 @@ on a few lit pixels).
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import numpy as np
@@ -490,3 +491,14 @@ def test_transparent_instances_sort_by_view_depth_not_distance(backend, projecti
     # view depth) must be on top.
     r, g, _b = image[16, 21, :3].astype(int)
     assert g > r > 0
+
+
+@pytest.mark.parametrize(("field", "value"), [("color", "red"), ("color", (1, 0)), ("intensity", "bright"),
+                                              ("range", -1), ("shadow_extent", 0), ("shadow_depth", "far"),
+                                              ("shadow_bias", float("inf"))])
+def test_bad_light_values_name_the_field_and_change_nothing(field, value):
+    light = LightComponent("directional", cast_shadows=True)
+    before = repr(light)
+    with pytest.raises(ValueError, match=rf"LightComponent\.{field} must be .*got {re.escape(repr(value))}"):
+        setattr(light, field, value)
+    assert repr(light) == before
