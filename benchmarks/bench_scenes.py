@@ -90,7 +90,7 @@ def grid_positions(n: int) -> np.ndarray:
     return np.stack([(i % g) - (g - 1) / 2, (i // g % g) - (g - 1) / 2, -(i // (g * g)) - 2.0], 1) * 1.8
 
 
-def build_scene(n: int, rotating: bool, model: str, rotate_mode: str) -> tuple[Any, Any]:
+def build_scene(n: int, rotating: bool, model: str, rotate_mode: str, spawn: str = "bulk") -> tuple[Any, Any]:
     """The benchmark scene and its model's MeshData: ``n`` lit models on a grid, a camera that sees them all."""
     from gandalf_core import Component, Scene, System, TransformComponent
     from gandalf_core.components import CameraComponent, ClearColorComponent, MaterialComponent, MeshComponent
@@ -175,7 +175,16 @@ def build_scene(n: int, rotating: bool, model: str, rotate_mode: str) -> tuple[A
         TransformComponent((0.0, 0.0, 1.6 * g + 2.0)), CameraComponent(60.0, 0.1, 10.0 * g + 100.0)
     )
     y_axis = (0.0, 1.0, 0.0)
-    for i, position in enumerate(grid_positions(n)):
+    if spawn == "bulk":  # one call: Scene.create_entities with the transforms as columns
+        half = 0.05 * np.arange(n)
+        quats = np.zeros((n, 4))
+        quats[:, 0], quats[:, 2] = np.cos(half), np.sin(half)
+        parts: list[Any] = [TransformComponent.batch(translations=grid_positions(n), quaternions=quats),
+                            MeshComponent("model"), MaterialComponent("lit")]
+        if rotating:
+            parts.append([RotateComponent(y_axis, 30.0 + 10.0 * (i % 7)) for i in range(n)])
+        scene.create_entities(n, *parts)
+    for i, position in enumerate(grid_positions(n) if spawn == "loop" else ()):
         components: list[Any] = [
             TransformComponent(position, quaternion=quat_from_axis_angle(y_axis, 0.1 * i)),
             MeshComponent("model"),
@@ -243,7 +252,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
     else:
         app.renderer.shaders.build("lit", SHADERS / "lit.wgsl")
     t_app = time.perf_counter()
-    scene, mesh = build_scene(n, rotating, cfg["model"], cfg["rotate"])
+    scene, mesh = build_scene(n, rotating, cfg["model"], cfg["rotate"], cfg.get("spawn", "bulk"))
     app.add_scene(scene)
     t_scene = time.perf_counter()
     sync, sync_used = make_sync(app, cfg["sync"])
@@ -324,6 +333,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
         # (gather + upload + draw submission) and the read-back wait.
         "cpu_ms": {k: round(v * 1e3 / frames, 3) for k, v in totals.items()},
         "draw_calls": int(app.renderer.stats["draw_calls"]),
+        "spawn": cfg.get("spawn", "bulk"),
         "setup_s": {
             "app": round(t_app - t_start, 3),
             "scene": round(t_scene - t_app, 3),
@@ -370,6 +380,8 @@ def main(argv: list[str] | None = None) -> int:
                         help="stop measuring a configuration after this long, whatever --frames says")
     parser.add_argument("--model", choices=MODELS, default="cube", help="cube (12 triangles) or sphere (960)")
     parser.add_argument("--rotate", choices=ROTATE_MODES, default="batch", help="rotate system form")
+    parser.add_argument("--spawn", choices=("bulk", "loop"), default="bulk",
+                        help="create the models with Scene.create_entities (bulk, default) or one by one (loop)")
     parser.add_argument("--sync", choices=SYNC_MODES, default="pixel", help="read-back after every frame")
     parser.add_argument("--quick", action="store_true",
                         help="smoke run: 320x180, 10 frames, scenes scene1,scene5,cubes1k unless given")
@@ -397,20 +409,24 @@ def main(argv: list[str] | None = None) -> int:
                       "machine": platform.machine(), "cpus": os.cpu_count(),
                       "platform": platform.platform()}), flush=True)
     failures = 0
-    for backend in backends:
-        for scene in scenes:
-            cfg = {"backend": backend, "scene": scene, "size": size, "frames": frames, "warmup": warmup,
-                   "max_seconds": args.max_seconds, "model": args.model, "rotate": args.rotate,
-                   "sync": args.sync, "profile": args.profile, "png": args.png}
-            proc = subprocess.run([sys.executable, str(Path(__file__).resolve()), "--child", json.dumps(cfg)],
-                                  cwd=ROOT, stdout=subprocess.PIPE, text=True)
-            lines = [ln for ln in proc.stdout.splitlines() if ln.startswith("{")]
-            if proc.returncode != 0 or not lines:
-                failures += 1
-                print(json.dumps({"bench": "gandalf-scenes", "backend": backend, "scene": scene,
-                                  "error": f"child exited with {proc.returncode}"}), flush=True)
-                continue
-            print(lines[-1], flush=True)
+    plan = [(backend, scene) for backend in backends for scene in scenes]
+    started = time.perf_counter()
+    for k, (backend, scene) in enumerate(plan, 1):
+        # Progress on stderr (the JSON lines stay alone on stdout): a full run takes minutes.
+        print(f"# [{k}/{len(plan)}] {backend} {scene} ({time.perf_counter() - started:.0f} s so far)",
+              file=sys.stderr, flush=True)
+        cfg = {"backend": backend, "scene": scene, "size": size, "frames": frames, "warmup": warmup,
+               "max_seconds": args.max_seconds, "model": args.model, "rotate": args.rotate,
+               "sync": args.sync, "profile": args.profile, "png": args.png, "spawn": args.spawn}
+        proc = subprocess.run([sys.executable, str(Path(__file__).resolve()), "--child", json.dumps(cfg)],
+                              cwd=ROOT, stdout=subprocess.PIPE, text=True)
+        lines = [ln for ln in proc.stdout.splitlines() if ln.startswith("{")]
+        if proc.returncode != 0 or not lines:
+            failures += 1
+            print(json.dumps({"bench": "gandalf-scenes", "backend": backend, "scene": scene,
+                              "error": f"child exited with {proc.returncode}"}), flush=True)
+            continue
+        print(lines[-1], flush=True)
     return 1 if failures else 0
 
 

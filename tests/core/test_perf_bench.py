@@ -1,0 +1,43 @@
+"""The benchmarks' --quick modes run (so a regression that breaks or slows them to a crawl shows in CI).
+
+Each configuration runs in its own process, as in a full run; quick mode uses a small frame, a few frames and
+(for the pyGANDALF work) a 256² sky. Figures are not graded here (CI machines vary): only that every line is
+there, has no error and reports a positive frame rate and memory.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _run(script: str, *args: str) -> list[dict]:
+    proc = subprocess.run([sys.executable, str(ROOT / "benchmarks" / script), *args], cwd=ROOT,
+                          capture_output=True, text=True, timeout=300, check=False)
+    assert proc.returncode == 0, f"{script} {' '.join(args)} failed:\n{proc.stdout}\n{proc.stderr[-3000:]}"
+    assert "# [1/" in proc.stderr, "long runs must print their progress on stderr"
+    return [json.loads(line) for line in proc.stdout.splitlines() if line.startswith("{")]
+
+
+def test_bench_scenes_quick(tmp_path) -> None:
+    records = _run("bench_scenes.py", "--quick", "--scenes", "scene5", "--rotate", "entity", "--frames", "3")
+    runs = [r for r in records if r["bench"] == "gandalf-scenes"]
+    assert {r["backend"] for r in runs} == {"opengl", "webgpu"}
+    for r in runs:
+        assert "error" not in r, r
+        assert r["fps"] > 0 and r["peak_rss_mb"] > 0 and r["models"] == 100 and r["spawn"] == "bulk"
+
+
+def test_bench_pygandalf_work_quick(tmp_path) -> None:
+    records = _run("bench_pygandalf_work.py", "--quick", "--scenes", "scene4", "--backends", "opengl",
+                   "--cache", str(tmp_path))
+    runs = [r for r in records if r["bench"] == "pygandalf-work"]
+    summary = [r for r in records if r["bench"] == "pygandalf-work-summary"]
+    assert len(runs) == 1 and "error" not in runs[0], runs
+    assert runs[0]["fps"] > 0 and runs[0]["rotating"] and runs[0]["triangles_per_model"] == 48
+    # A quick run is not the reference work: no ratio against pyGANDALF may be printed for it.
+    assert summary and not summary[0]["same_work_as_reference"] and "fps_ratio" not in summary[0]
