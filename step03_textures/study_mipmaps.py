@@ -9,8 +9,8 @@ pixel covers many texels; how wrong is each sampler there, and what does it cost
   looking 27° down (45° vertical field of view): the floor fills the picture, from 2 m away at the bottom to
   about 28 m at the top, where a pixel covers about ten checks;
 * the samplers: ``nearest`` and ``linear`` without mipmaps, ``nearest`` with mipmaps (nearest level, nearest
-  texel) and ``linear`` with mipmaps (trilinear). Anisotropic filtering is not offered by the engine's
-  ``TextureData`` (no such field), so it is not measured;
+  texel), ``linear`` with mipmaps (trilinear), and trilinear with anisotropic filtering
+  (``TextureData(anisotropy=4 / 16)``: up to that many samples along the direction the floor recedes in);
 * the reference: each pixel's exact box-filtered texture, estimated in float64 numpy by ``--ss``² (default 16²)
   rays spread evenly over the pixel, each looking up its texel (the texture is piecewise constant), averaged in
   linear light and encoded to 8-bit sRGB like the framebuffer;
@@ -35,8 +35,9 @@ from pathlib import Path
 import numpy as np
 
 STEM = "step03_study_mipmaps"
-SAMPLERS = {"nearest": ("nearest", False), "linear": ("linear", False), "nearest + mipmaps": ("nearest", True),
-            "trilinear (linear + mipmaps)": ("linear", True)}
+SAMPLERS = {"nearest": ("nearest", False, 1), "linear": ("linear", False, 1), "nearest + mipmaps": ("nearest", True, 1),
+            "trilinear (linear + mipmaps)": ("linear", True, 1), "anisotropic 4x": ("linear", True, 4),
+            "anisotropic 16x": ("linear", True, 16)}
 TEXTURE_SIZE, CHECK_TEXELS = 512, 32
 DARK, LIGHT = 0.1, 0.9
 METRES_PER_REPEAT = 4.0
@@ -72,11 +73,12 @@ def floor_scene(sampler: str):
 
     from .scene import SHADER
 
-    filter_, mipmaps = SAMPLERS[sampler]
+    filter_, mipmaps, anisotropy = SAMPLERS[sampler]
     scene = Scene(f"mipmaps {sampler}")
     scene.assets.mesh("floor", floor_mesh())
     scene.assets.texture("checker", TextureData.from_array(checker_pixels(), filter=filter_, mipmaps=mipmaps,
-                                                           wrap="repeat", name=f"checker {sampler}"))
+                                                           anisotropy=anisotropy, wrap="repeat",
+                                                           name=f"checker {sampler}"))
     scene.assets.material("floor", MaterialData(SHADER, ["checker"], color=(1.0, 1.0, 1.0)))
     scene.create_entity(TransformComponent(), MeshComponent("floor"), MaterialComponent("floor"))
     scene.create_entity(TransformComponent(EYE, quaternion=look_at_rotation(EYE, TARGET)),
@@ -184,7 +186,7 @@ def plot(result: dict, path: Path) -> None:
 
     fig, ax = plt.subplots(figsize=(8.4, 4.2), dpi=100)
     markers = {"opengl": "o", "webgpu": "s"}
-    colours = dict(zip(SAMPLERS, ("tab:red", "tab:orange", "tab:blue", "tab:green")))
+    colours = dict(zip(SAMPLERS, ("tab:red", "tab:orange", "tab:blue", "tab:green", "tab:purple", "tab:brown")))
     for r in result["rows"]:
         ax.scatter(r["frame_ms"], r["mean_error"], marker=markers[r["backend"]], color=colours[r["sampler"]],
                    label=f"{r['backend']}: {r['sampler']}")

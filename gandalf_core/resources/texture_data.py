@@ -244,6 +244,10 @@ def _write_png(pixels: np.ndarray, path: str | Path, label: str) -> None:
         raise ResourceError(label, "path", f"cannot write PNG {str(path)!r}: {exc}") from exc
 
 
+#: The largest anisotropy a texture may ask for (what WebGPU allows; OpenGL drivers offer at least this).
+MAX_ANISOTROPY = 16
+
+
 @dataclass(frozen=True, eq=False)
 class TextureData:
     """An RGBA8 image (top row first) plus its sampling settings.
@@ -260,6 +264,9 @@ class TextureData:
     filter: str = "linear"
     mipmaps: bool = True
     name: str = "texture"
+    #: Anisotropic filtering: up to this many samples along the direction a surface recedes in (1 = off,
+    #: at most :data:`MAX_ANISOTROPY`); it needs ``filter="linear"`` and mipmaps (both APIs' rule).
+    anisotropy: int = 1
 
     def __post_init__(self) -> None:
         if isinstance(self.pixels, (str, Path)):
@@ -272,6 +279,13 @@ class TextureData:
         object.__setattr__(self, "pixels", _check_rgba8(label, "pixels", self.pixels))
         object.__setattr__(self, "srgb", bool(self.srgb))
         object.__setattr__(self, "mipmaps", bool(self.mipmaps))
+        a = self.anisotropy
+        if isinstance(a, bool) or not isinstance(a, (int, np.integer)) or not 1 <= a <= MAX_ANISOTROPY:
+            raise ResourceError(label, "anisotropy", f"expected an integer from 1 (off) to {MAX_ANISOTROPY}, got {a!r}")
+        if a > 1 and not (self.filter == "linear" and self.mipmaps):
+            raise ResourceError(label, "anisotropy", f"{a} needs filter='linear' and mipmaps=True "
+                                f"(got filter={self.filter!r}, mipmaps={self.mipmaps})")
+        object.__setattr__(self, "anisotropy", int(a))
 
     @classmethod
     def from_array(cls, arr: Any, **settings: Any) -> TextureData:
@@ -279,7 +293,7 @@ class TextureData:
 
         ``uint8`` (and other integer arrays with values in 0..255) are taken as is; float arrays must hold values
         in [0, 1] and are scaled by 255 with rounding. NaN/Inf or out-of-range values raise :class:`ResourceError`.
-        ``settings`` are the sampling fields (srgb, wrap, filter, mipmaps, name).
+        ``settings`` are the sampling fields (srgb, wrap, filter, mipmaps, anisotropy, name).
         """
         name = settings.get("name", "texture")
         return cls(_to_rgba8(_label("texture", name), arr), **settings)

@@ -13,7 +13,7 @@ import numpy as np
 from pxr import Sdf, Usd, UsdGeom, UsdShade, Vt
 
 from ..resources import CubeTextureData, MaterialData, MeshData, ResourceError, TextureData
-from .attributes import FileContext, numeric_array, read, read_floats, write
+from .attributes import FileContext, authored, numeric_array, read, read_floats, write
 from .mapping import CUBE_FACE_SUFFIXES
 
 T = Sdf.ValueTypeNames
@@ -183,6 +183,8 @@ def write_texture(stage: Usd.Stage, path: str, name: str, texture: TextureData |
     write(prim, "gandalf:srgb", T.Bool, texture.srgb)
     write(prim, "gandalf:filter", T.String, texture.filter)
     write(prim, "gandalf:mipmaps", T.Bool, texture.mipmaps)
+    if getattr(texture, "anisotropy", 1) != 1:
+        write(prim, "gandalf:anisotropy", T.Int, texture.anisotropy)
     if not cube:
         write(prim, "gandalf:wrap", T.String, texture.wrap)
 
@@ -202,6 +204,8 @@ def read_texture(ctx: FileContext, prim: Usd.Prim, folder: Path) -> tuple[str, T
         "srgb": read(ctx, prim, "gandalf:srgb", "bool", True),
         "filter": read(ctx, prim, "gandalf:filter", "string", "linear"),
         "mipmaps": read(ctx, prim, "gandalf:mipmaps", "bool", True),
+        **({"anisotropy": read(ctx, prim, "gandalf:anisotropy", "int")} if authored(prim, "gandalf:anisotropy")
+           else {}),
         "name": read(ctx, prim, "gandalf:textureName", "string", name),
     }
     try:

@@ -628,3 +628,29 @@ def test_texture_data_takes_a_path_as_in_the_paper(tmp_path):
     assert np.array_equal(texture.pixels, TextureData.from_file(path, wrap="clamp").pixels)
     with pytest.raises(ResourceError, match="missing.png"):
         TextureData(tmp_path / "missing.png")
+
+
+# --- anisotropic filtering -------------------------------------------------------------------------------------
+@pytest.mark.parametrize(("settings", "needle"), [
+    ({"anisotropy": 0}, "from 1 .off. to 16"), ({"anisotropy": 17}, "from 1 .off. to 16"),
+    ({"anisotropy": 4.0}, "from 1 .off. to 16"), ({"anisotropy": True}, "from 1 .off. to 16"),
+    ({"anisotropy": 8, "filter": "nearest"}, "needs filter='linear' and mipmaps=True"),
+    ({"anisotropy": 8, "mipmaps": False}, "needs filter='linear' and mipmaps=True"),
+])
+def test_anisotropy_is_checked(settings, needle):
+    from gandalf_core.resources import TextureData
+
+    with pytest.raises(ResourceError, match=rf"texture 'floor': anisotropy: .*{needle}"):
+        TextureData(np.zeros((4, 4, 4), np.uint8), name="floor", **settings)
+
+
+def test_anisotropy_round_trips_through_usd(tmp_path):
+    from gandalf_core import Scene
+    from gandalf_core.resources import TextureData
+    from gandalf_core.usd import load_scene, save_scene
+
+    scene = Scene("aniso")
+    scene.assets.texture("floor", TextureData(np.full((8, 8, 4), 200, np.uint8), anisotropy=8))
+    scene.assets.texture("plain", TextureData(np.full((8, 8, 4), 200, np.uint8)))
+    loaded = load_scene(save_scene(scene, tmp_path / "aniso.usda"))
+    assert loaded.assets.textures["floor"].anisotropy == 8 and loaded.assets.textures["plain"].anisotropy == 1

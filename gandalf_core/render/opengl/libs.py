@@ -81,6 +81,8 @@ class TextureLib(ResourceLib[Any]):
         linear = moderngl.LINEAR_MIPMAP_LINEAR if mipmapped else moderngl.LINEAR
         nearest = moderngl.NEAREST_MIPMAP_NEAREST if mipmapped else moderngl.NEAREST
         tex.filter = (linear, moderngl.LINEAR) if data.filter == "linear" else (nearest, moderngl.NEAREST)
+        if getattr(data, "anisotropy", 1) > 1:
+            tex.anisotropy = float(data.anisotropy)
         if isinstance(data, TextureData):
             tex.repeat_x = tex.repeat_y = data.wrap == "repeat"
         self.stats["textures_created"] += 1

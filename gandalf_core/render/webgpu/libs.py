@@ -81,6 +81,7 @@ class TextureLib(ResourceLib[WGPUTexture]):
             mag_filter="linear" if linear else "nearest",
             min_filter="linear" if linear else "nearest",
             mipmap_filter="linear" if linear else "nearest",
+            max_anisotropy=getattr(data, "anisotropy", 1),
         )
         self.stats["textures_created"] += 1
         return WGPUTexture(texture, view, sampler)
