@@ -6,12 +6,15 @@ vertex normals (smooth, area-weighted, computed when the file has none), keeps i
 engine's convention, v = 0 at the top of the image) and then gets tangents, and keeps vertex colours.
 Degenerate triangles (repeated or collinear corners) are dropped, so they never produce NaN normals.
 
-Results are cached by (resolved path, modification time, size): loading an unchanged file again returns the
-same immutable objects; editing the file loads it anew. trimesh is imported only when a file is read.
+Results are cached by (resolved path, content hash): loading an unchanged file again returns the same immutable
+objects; a file rewritten with other bytes loads anew, even when its size and modification time did not change
+(the hash reads the file, which costs far less than parsing it). For a ``.gltf`` with separate ``.bin`` or image
+files only the ``.gltf`` itself is hashed. trimesh is imported only when a file is read.
 """
 
 from __future__ import annotations
 
+import hashlib
 from pathlib import Path
 from typing import Any
 
@@ -23,8 +26,8 @@ from gandalf_core.resources.mesh_data import MeshData
 #: File extensions the loader reads (lower case, with the dot).
 MESH_EXTENSIONS = (".obj", ".gltf", ".glb", ".ply", ".stl")
 
-_cache: dict[tuple[str, int, int], dict[str, MeshData]] = {}
-_merged_cache: dict[tuple[str, int, int], MeshData] = {}
+_cache: dict[tuple[str, str], dict[str, MeshData]] = {}
+_merged_cache: dict[tuple[str, str], MeshData] = {}
 
 
 def clear_cache() -> None:
@@ -57,7 +60,7 @@ def load_mesh(path: str | Path) -> MeshData:
     return _merged_cache[key]
 
 
-def _key(path: str | Path) -> tuple[tuple[str, int, int], str]:
+def _key(path: str | Path) -> tuple[tuple[str, str], str]:
     """The cache key of ``path`` and the label errors use; checks existence and extension first."""
     p = Path(path)
     label = f"mesh file '{p}'"
@@ -66,12 +69,15 @@ def _key(path: str | Path) -> tuple[tuple[str, int, int], str]:
         raise ResourceError(label, "path", f"unsupported extension {p.suffix or '(none)'!r}; supported: {allowed}")
     try:
         resolved = p.resolve(strict=True)
-        stat = resolved.stat()
     except OSError:
         raise ResourceError(label, "path", "file not found") from None
     if not resolved.is_file():
         raise ResourceError(label, "path", "is not a file")
-    return (str(resolved), stat.st_mtime_ns, stat.st_size), label
+    try:
+        digest = hashlib.blake2b(resolved.read_bytes(), digest_size=16).hexdigest()
+    except OSError as exc:
+        raise ResourceError(label, "path", f"cannot read the file: {exc}") from None
+    return (str(resolved), digest), label
 
 
 def _read(path: Path, label: str) -> dict[str, MeshData]:

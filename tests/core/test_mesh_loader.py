@@ -197,3 +197,17 @@ def test_importing_the_loader_does_not_import_trimesh():
     code = "import gandalf_core.resources.mesh_loader, sys; print('trimesh' in sys.modules)"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "False"
+
+
+def test_a_file_rewritten_with_the_same_size_and_time_is_read_again(tmp_path):
+    """The cache is keyed by content: other bytes of the same length, written with the old modification time,
+    must not return the old geometry."""
+    path = tmp_path / "tri.obj"
+    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+    stat = path.stat()
+    first = load_mesh(path)
+    path.write_text("v 0 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\n")  # the same length, one coordinate changed
+    os.utime(path, ns=(stat.st_atime_ns, stat.st_mtime_ns))
+    assert path.stat().st_size == stat.st_size and path.stat().st_mtime_ns == stat.st_mtime_ns
+    second = load_mesh(path)
+    assert second is not first and second.bounds()[1][0] == pytest.approx(2.0)
