@@ -7,6 +7,7 @@ draws the opaque batches into the shadow map first.
 
 from __future__ import annotations
 
+import os
 from typing import Any
 
 import moderngl
@@ -98,6 +99,12 @@ class OpenGLRenderer(Renderer):
         self._zero_to_one = False  # glClipControl's depth mode now (OpenGL's default: [-1, 1])
         # Filter across cube faces, as WebGPU always does (no seams in skyboxes and reflections).
         self.ctx.enable_direct(GL_TEXTURE_CUBE_MAP_SEAMLESS)
+        #: In a window whose framebuffer encodes sRGB, frames are drawn straight into it (no offscreen target and
+        #: copy); reverse-Z frames still use the offscreen target for its float depth. GANDALF_PRESENT=blit
+        #: turns this off.
+        self.present_direct = window is not None and self._screen_encodes_srgb()
+        self._target: moderngl.Framebuffer | None = None  # what the last frame was drawn into
+        self._pending_swap = False
         self._create_targets()
 
     # --- targets ----------------------------------------------------------------------------------
@@ -116,12 +123,28 @@ class OpenGLRenderer(Renderer):
 
     @property
     def framebuffer(self) -> moderngl.Framebuffer:
-        """The offscreen framebuffer frames are drawn into (sRGB colour + depth)."""
-        return self._fbo
+        """The framebuffer the current (or last) frame is drawn into: the offscreen sRGB target, or the window's
+        own framebuffer when frames are presented directly."""
+        return self._target if self._target is not None else self._fbo
+
+    def _screen_encodes_srgb(self) -> bool:
+        """Whether the window's framebuffer encodes linear colours to sRGB on write (GL_FRAMEBUFFER_SRGB), as the
+        offscreen target does: then both give the same bytes and frames can be drawn into the window directly."""
+        if os.environ.get("GANDALF_PRESENT", "").lower() == "blit":
+            return False
+        screen = self.ctx.screen
+        screen.use()
+        self.ctx.enable_direct(GL_FRAMEBUFFER_SRGB)
+        screen.clear(0.2, 0.2, 0.2, 1.0, viewport=(0, 0, 1, 1))
+        value = screen.read(viewport=(0, 0, 1, 1), components=4)[0]
+        self.ctx.disable_direct(GL_FRAMEBUFFER_SRGB)
+        return abs(value - 124) <= 1  # linear 0.2 encodes to sRGB 124; a plain framebuffer keeps 51
 
     def _release_targets(self) -> None:
         for obj in (self._fbo, self._color, self._depth):
             obj.release()
+        if self._target is self._fbo:
+            self._target = None
 
     def depth_range_for(self, reverse_z: bool) -> str:
         """Reverse-Z frames use clip depth [0, 1] (glClipControl) and the float depth buffer: real precision."""
@@ -159,8 +182,15 @@ class OpenGLRenderer(Renderer):
             self._clip_depth(False)  # the shadow map is projected for OpenGL's [-1, 1]
             self._draw_shadow_map(draws)
         self._clip_depth(data.reverse_z)
+        if self._pending_swap:  # the previous frame, drawn into the window, is shown now
+            self.window.swap_buffers()
+            self._pending_swap = False
+        direct = self.present_direct and not data.reverse_z
+        if direct:
+            self.ctx.screen.viewport = (0, 0, self.width, self.height)
+        self._target = self.ctx.screen if direct else self._fbo
         # --8<-- [start:clear]
-        fbo = self._fbo
+        fbo = self._target
         fbo.use()
         self.ctx.enable_direct(GL_FRAMEBUFFER_SRGB)
         fbo.depth_mask = True
@@ -275,7 +305,7 @@ class OpenGLRenderer(Renderer):
         # stop depth writes, which WebGPU's compare "always" keeps.
         ctx.enable(moderngl.DEPTH_TEST)
         ctx.depth_func = (">=" if reverse_z else "<=") if data.depth_test else "1"
-        self._fbo.depth_mask = data.depth_write
+        self._target.depth_mask = data.depth_write
         if data.blend == "opaque":
             ctx.disable(moderngl.BLEND)
         else:
@@ -289,7 +319,11 @@ class OpenGLRenderer(Renderer):
         self._state = state
 
     def _present(self) -> None:
-        if self.window is not None:
+        if self.window is not None and self._target is self.ctx.screen:
+            # Drawn into the window already: shown by the swap when the next frame starts, so that read_pixels
+            # (app.capture) can still read this one from the back buffer.
+            self._pending_swap = True
+        elif self.window is not None:
             # Copy the already-encoded bytes as they are: no second sRGB conversion on the way out.
             self.ctx.disable_direct(GL_FRAMEBUFFER_SRGB)
             raw_gl.blit_color(self._fbo.glo, self.ctx.screen.glo, (self.width, self.height),
@@ -313,12 +347,15 @@ class OpenGLRenderer(Renderer):
 
     # --- read-back, resize, release -------------------------------------------------------------------
     def read_pixels(self) -> np.ndarray:
-        data = self._fbo.read(components=4, attachment=0)
+        if self._target is not None and self._target is self.ctx.screen:
+            data = self._target.read(viewport=(0, 0, self.width, self.height), components=4)
+        else:
+            data = self._fbo.read(components=4, attachment=0)
         image = np.frombuffer(data, dtype=np.uint8).reshape(self.height, self.width, 4)
         return np.ascontiguousarray(image[::-1])  # GL rows are bottom-up
 
     def read_pixel(self, x: int, y: int) -> np.ndarray:
-        data = self._fbo.read(viewport=(int(x), self.height - 1 - int(y), 1, 1), components=4)
+        data = self.framebuffer.read(viewport=(int(x), self.height - 1 - int(y), 1, 1), components=4)
         return np.frombuffer(data, dtype=np.uint8).copy()
 
     def resize(self, width: int, height: int) -> None:
