@@ -3,7 +3,7 @@
 A thin front end over ``pytest --student`` that prints one line per failed test and the score table
 (``pytest --student`` itself shows full tracebacks). Other arguments go to pytest.
 
-The student's code runs in pytest-xdist worker processes (``--jobs``, default 2), never in this one: a
+The student's code runs in a pytest-xdist worker process (``--jobs``, default 1), never in this one: a
 test that calls ``os._exit`` or crashes the interpreter fails on its own, its worker is replaced and the
 other tests are graded. Each test has a time limit (``--timeout``, default 60 s): pytest-timeout's
 signal method fails a runaway Python loop in place; a hang inside native code (a driver call) that a
@@ -37,7 +37,7 @@ def _has_timeout() -> bool:
 
 def pytest_options(
     *,
-    jobs: int = 2,
+    jobs: int = 1,
     timeout: float = 60.0,
     hard_timeout: float | None = None,
     json_path: str | None = None,
@@ -70,7 +70,11 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--json", metavar="FILE", help="also write the score as JSON to FILE")
     parser.add_argument("--gradescope", metavar="FILE", help="also write Gradescope's results.json to FILE")
     parser.add_argument(
-        "--jobs", "-j", type=int, default=2, help="worker processes (pytest-xdist); 0 runs in this process"
+        "--jobs",
+        "-j",
+        type=int,
+        default=1,
+        help="worker processes (pytest-xdist, default 1: isolation at the least cost); 0 runs in this process",
     )
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per test (0: none); default 60")
     parser.add_argument(
