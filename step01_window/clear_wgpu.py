@@ -1,0 +1,56 @@
+"""Step 01's API lesson in plain wgpu: clear a frame to one colour and read it back.
+
+WebGPU has no current context and no immediate calls: you ask for an adapter and a device, *record* a render
+pass whose colour attachment says "clear on load" into a command encoder, *submit* the finished command buffer
+to the queue, and copy the texture back. On a window the target is ``context.get_current_texture()`` and the
+"present" step is ``context.present()``; headless it is a texture of our own.
+Compare with ``clear_gl.py``: the picture is the same, the route is not.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+import numpy as np
+import wgpu
+from PIL import Image
+
+#: The clear colour, linear RGBA; 0.2, 0.4 and 0.8 are exact multiples of 1/255 (51, 102, 204).
+COLOR = (0.2, 0.4, 0.8, 1.0)
+
+
+def render(width: int = 64, height: int = 48, color: tuple = COLOR) -> np.ndarray:
+    """One cleared frame as (height, width, 4) uint8, top row first."""
+    # --8<-- [start:frame]
+    adapter = wgpu.gpu.request_adapter_sync(power_preference="high-performance")
+    device = adapter.request_device_sync()
+    target = device.create_texture(size=(width, height, 1), format="rgba8unorm",
+                                   usage=wgpu.TextureUsage.RENDER_ATTACHMENT | wgpu.TextureUsage.COPY_SRC)
+    encoder = device.create_command_encoder()  # nothing runs yet: we record
+    rpass = encoder.begin_render_pass(color_attachments=[{
+        "view": target.create_view(), "clear_value": color,
+        "load_op": "clear", "store_op": "store",  # the clear is part of the pass
+    }])
+    rpass.end()
+    device.queue.submit([encoder.finish()])  # now it runs
+    pixels = device.queue.read_texture({"texture": target},
+                                       {"bytes_per_row": 4 * width, "rows_per_image": height},
+                                       (width, height, 1))
+    device.destroy()
+    # --8<-- [end:frame]
+    return np.frombuffer(pixels, dtype=np.uint8).reshape(height, width, 4).copy()  # rows top-down
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", default="clear_wgpu.png", help="PNG file to write (default: clear_wgpu.png)")
+    parser.add_argument("--size", default="640x480", help="WIDTHxHEIGHT (default: 640x480)")
+    args = parser.parse_args(argv)
+    width, height = (int(v) for v in args.size.lower().split("x"))
+    Image.fromarray(render(width, height)).save(args.out)
+    print(f"wrote {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
