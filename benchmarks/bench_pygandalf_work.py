@@ -11,7 +11,9 @@ The work (the same as the side-by-side runs with pyGANDALF described in issue 13
   else offscreen with a one-pixel read-back per frame (the JSON says which: ``surface``);
 * a small model (a 48-triangle sphere) or a large one (a ~70k-triangle torus), both made procedurally.
 
-Every configuration runs in a fresh process (its own ``ru_maxrss``); ``--repeats`` runs are interleaved
+``cpu_ms_per_frame`` is the process's CPU time per measured frame: on the software renderers it includes their
+rendering threads, so on a machine shared with other jobs it is steadier than fps. Every configuration runs in a
+fresh process (its own ``ru_maxrss``); ``--repeats`` runs are interleaved
 (scene by scene, API by API, then again) and the summary lines give the median fps and the largest peak RSS.
 Each run prints one JSON line (``"bench": "pygandalf-work"``), then one summary line per scene, API and model
 (``"bench": "pygandalf-work-summary"``) with pyGANDALF's published figures on a machine like ours where known
@@ -183,6 +185,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
         sync()
     times = []
     deadline = time.perf_counter() + cfg["max_seconds"]
+    cpu0 = time.process_time()  # this process's CPU time, llvmpipe's/lavapipe's rendering threads included
     t0 = time.perf_counter()
     for _ in range(cfg["frames"]):
         a = time.perf_counter()
@@ -192,6 +195,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
         if time.perf_counter() > deadline:
             break
     wall = time.perf_counter() - t0
+    cpu = time.process_time() - cpu0
     if cfg.get("png"):
         Path(cfg["png"]).mkdir(parents=True, exist_ok=True)
         app.save_png(Path(cfg["png"]) / f"pygandalf_work-{cfg['backend']}-{cfg['scene']}-{cfg['model']}.png")
@@ -201,6 +205,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
         "rotating": rotating, "model": cfg["model"], "triangles_per_model": mesh.triangle_count,
         "surface": surface, "size": [width, height], "sky_face": cfg["sky_size"], "repeat": cfg["repeat"],
         "frames": len(times), "fps": round(len(times) / wall, 2),
+        "cpu_ms_per_frame": round(cpu * 1e3 / len(times), 2),
         "frame_ms_p50": round(float(np.percentile(ms, 50)), 2), "frame_ms_p95": round(float(np.percentile(ms, 95)), 2),
         "setup_s": {"app_and_scene": round(t_scene - t_start, 3), "first_frame": round(t_first - t_scene, 3)},
         "renderer": str(renderer.ctx.info.get("GL_RENDERER", "?")) if cfg["backend"] == "opengl"
