@@ -1,0 +1,99 @@
+"""Step 04's API lesson in plain wgpu: per-draw uniforms, a perspective camera and WebGPU's depth range.
+
+One triangle is drawn twice, red at z = −2 and green behind it at z = −3, each with its own model-view-
+projection matrix and colour. WebGPU has no uniform state in a pipeline: the values live in a *uniform buffer*
+and a *bind group* points the shader at it. All writes reach the GPU before the pass runs, so each draw needs
+its own buffer (and bind group). Clip-space depth is [0, 1], so the projection maps the near plane to 0; the
+pipeline's depth-stencil state keeps the red triangle in front though it is drawn first.
+Compare with ``uniforms_gl.py``.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+import numpy as np
+import wgpu
+from PIL import Image
+
+TRIANGLE = np.array([[-0.8, -0.8, 0.0], [0.8, -0.8, 0.0], [0.0, 0.8, 0.0]])
+#: (translation, colour) per draw: red in front, drawn first.
+DRAWS = [((-0.25, 0.0, -2.0), (1.0, 0.0, 0.0, 1.0)), ((0.25, 0.0, -3.0), (0.0, 1.0, 0.0, 1.0))]
+NEAR, FAR, FOV_Y = 1.5, 4.0, np.radians(60.0)
+
+SHADER = """
+struct Object { mvp: mat4x4<f32>, color: vec4<f32> };
+@group(0) @binding(0) var<uniform> object: Object;
+@vertex fn vs_main(@location(0) position: vec3<f32>) -> @builtin(position) vec4<f32> {
+    return object.mvp * vec4<f32>(position, 1.0);
+}
+@fragment fn fs_main() -> @location(0) vec4<f32> { return object.color; }
+"""
+
+
+# --8<-- [start:projection]
+def perspective(aspect: float) -> np.ndarray:
+    """WebGPU's perspective: z_ndc = 0 at the near plane, 1 at the far plane."""
+    f = 1.0 / np.tan(FOV_Y / 2)
+    return np.array([[f / aspect, 0, 0, 0], [0, f, 0, 0],
+                     [0, 0, FAR / (NEAR - FAR), FAR * NEAR / (NEAR - FAR)], [0, 0, -1, 0]])
+# --8<-- [end:projection]
+
+
+def render(width: int = 64, height: int = 64) -> np.ndarray:
+    """Both triangles as (height, width, 4) uint8, top row first."""
+    device = wgpu.gpu.request_adapter_sync(power_preference="high-performance").request_device_sync()
+    module = device.create_shader_module(code=SHADER)
+    vertices = device.create_buffer_with_data(data=TRIANGLE.astype("f4").tobytes(), usage=wgpu.BufferUsage.VERTEX)
+    pipeline = device.create_render_pipeline(
+        layout="auto", vertex={"module": module, "entry_point": "vs_main", "buffers": [
+            {"array_stride": 12, "attributes": [{"format": "float32x3", "offset": 0, "shader_location": 0}]}]},
+        fragment={"module": module, "entry_point": "fs_main", "targets": [{"format": "rgba8unorm"}]},
+        depth_stencil={"format": "depth24plus", "depth_write_enabled": True, "depth_compare": "less"})
+    # --8<-- [start:draws]
+    bind_groups = []
+    for translation, color in DRAWS:
+        model = np.eye(4)
+        model[:3, 3] = translation
+        mvp = perspective(width / height) @ model  # float64 on the CPU
+        data = np.concatenate([mvp.T.ravel(), color]).astype("f4")  # column-major mat4, then vec4
+        buffer = device.create_buffer_with_data(data=data.tobytes(), usage=wgpu.BufferUsage.UNIFORM)
+        bind_groups.append(device.create_bind_group(layout=pipeline.get_bind_group_layout(0),
+                                                    entries=[{"binding": 0, "resource": {"buffer": buffer}}]))
+    # --8<-- [end:draws]
+    usage = wgpu.TextureUsage.RENDER_ATTACHMENT
+    target = device.create_texture(size=(width, height, 1), format="rgba8unorm",
+                                   usage=usage | wgpu.TextureUsage.COPY_SRC)
+    depth = device.create_texture(size=(width, height, 1), format="depth24plus", usage=usage)
+    encoder = device.create_command_encoder()
+    rpass = encoder.begin_render_pass(
+        color_attachments=[{"view": target.create_view(), "clear_value": (0, 0, 0, 1),
+                            "load_op": "clear", "store_op": "store"}],
+        depth_stencil_attachment={"view": depth.create_view(), "depth_clear_value": 1.0,
+                                  "depth_load_op": "clear", "depth_store_op": "store"})
+    rpass.set_pipeline(pipeline)
+    rpass.set_vertex_buffer(0, vertices)
+    for bind_group in bind_groups:
+        rpass.set_bind_group(0, bind_group)  # this draw's uniforms
+        rpass.draw(3)
+    rpass.end()
+    device.queue.submit([encoder.finish()])
+    pixels = device.queue.read_texture({"texture": target}, {"bytes_per_row": 4 * width, "rows_per_image": height},
+                                       (width, height, 1))
+    device.destroy()
+    return np.frombuffer(pixels, dtype=np.uint8).reshape(height, width, 4).copy()
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", default="uniforms_wgpu.png", help="PNG file to write")
+    parser.add_argument("--size", default="640x480", help="WIDTHxHEIGHT (default: 640x480)")
+    args = parser.parse_args(argv)
+    width, height = (int(v) for v in args.size.lower().split("x"))
+    Image.fromarray(render(width, height)).save(args.out)
+    print(f"wrote {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
