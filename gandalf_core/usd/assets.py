@@ -10,11 +10,11 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-from pxr import Sdf, Usd, UsdGeom, UsdShade, Vt
+from pxr import Gf, Sdf, Usd, UsdGeom, UsdShade, Vt
 
-from ..resources import CubeTextureData, MaterialData, MeshData, ResourceError, TextureData
+from ..resources import CubeTextureData, MaterialData, MeshData, ResourceError, TextureData, srgb_to_linear
 from .attributes import FileContext, authored, numeric_array, read, read_floats, write
-from .mapping import CUBE_FACE_SUFFIXES
+from .mapping import CUBE_FACE_SUFFIXES, PREVIEW_ST_READER, PREVIEW_SURFACE, PREVIEW_TEXTURE
 
 T = Sdf.ValueTypeNames
 _MAX_INDEX = 2**31 - 1  # faceVertexIndices is int[]
@@ -28,7 +28,9 @@ def write_mesh(stage: Usd.Stage, path: str, name: str, mesh: MeshData) -> None:
     write(prim, "gandalf:meshName", T.String, mesh.name)
     write(prim, "gandalf:indexed", T.Bool, mesh.indices is not None)
     usd.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
-    usd.CreatePointsAttr(Vt.Vec3fArray.FromNumpy(mesh.positions))
+    points = Vt.Vec3fArray.FromNumpy(mesh.positions)
+    usd.CreatePointsAttr(points)
+    usd.CreateExtentAttr(UsdGeom.PointBased.ComputeExtent(points))  # bounds for other tools (no draw needed)
     size = 3
     if mesh.patch_size is not None:  # a patch mesh: each face is one patch of control points
         size = mesh.patch_size
@@ -106,7 +108,12 @@ def read_mesh(ctx: FileContext, prim: Usd.Prim) -> tuple[str, MeshData]:
 _PARAMS = "inputs:gandalf:params:"
 
 
-def write_material(stage: Usd.Stage, path: str, name: str, material: MaterialData) -> None:
+def write_material(stage: Usd.Stage, path: str, name: str, material: MaterialData,
+                   texture: tuple[str, bool] | None = None) -> None:
+    """A UsdShade.Material: the exact gandalf values as ``inputs:gandalf:*``, and a UsdPreviewSurface network.
+
+    ``texture`` is the first texture's relative file and whether it is sRGB (None: no texture node).
+    """
     usd = UsdShade.Material.Define(stage, path)
     prim = usd.GetPrim()
     write(prim, "gandalf:name", T.String, name)
@@ -129,6 +136,62 @@ def write_material(stage: Usd.Stage, path: str, name: str, material: MaterialDat
             usd.CreateInput(f"gandalf:params:{key}", T.Double).Set(value)
         else:
             usd.CreateInput(f"gandalf:params:{key}", T.DoubleArray).Set(Vt.DoubleArray(list(value)))
+    write_preview_surface(stage, usd, material, texture)
+
+
+def _param_float(material: MaterialData, key: str) -> float | None:
+    value = material.params.get(key)
+    if isinstance(value, float):
+        return value
+    if isinstance(value, tuple) and len(value) == 1:
+        return value[0]
+    return None
+
+
+def write_preview_surface(stage: Usd.Stage, usd: UsdShade.Material, material: MaterialData,
+                          texture: tuple[str, bool] | None) -> None:
+    """The standard network other USD tools draw: ``PreviewSurface`` (+ ``Texture`` and ``PrimvarSt`` readers).
+
+    diffuseColor (or the texture's scale) is the material colour in linear light, opacity its alpha; params
+    named ``roughness``, ``metallic``, ``emissive``/``emission`` (3 floats) map to the inputs of those names;
+    a Blinn-Phong ``shininess`` becomes roughness = (2 / (shininess + 2))^(1/4).
+    """
+    path = usd.GetPath()
+    surface = UsdShade.Shader.Define(stage, path.AppendChild(PREVIEW_SURFACE))
+    surface.CreateIdAttr("UsdPreviewSurface")
+    linear = srgb_to_linear(np.clip(np.asarray(material.color[:3], dtype=np.float64), 0.0, None))
+    color = Gf.Vec3f(*map(float, linear))
+    if texture is not None:
+        file, srgb = texture
+        reader = UsdShade.Shader.Define(stage, path.AppendChild(PREVIEW_ST_READER))
+        reader.CreateIdAttr("UsdPrimvarReader_float2")
+        reader.CreateInput("varname", T.String).Set("st")
+        tex = UsdShade.Shader.Define(stage, path.AppendChild(PREVIEW_TEXTURE))
+        tex.CreateIdAttr("UsdUVTexture")
+        tex.CreateInput("file", T.Asset).Set(Sdf.AssetPath(file))
+        tex.CreateInput("sourceColorSpace", T.Token).Set("sRGB" if srgb else "raw")
+        tex.CreateInput("scale", T.Float4).Set(Gf.Vec4f(*color, 1.0))
+        tex.CreateInput("st", T.Float2).ConnectToSource(reader.ConnectableAPI(), "result")
+        tex.CreateOutput("rgb", T.Float3)
+        surface.CreateInput("diffuseColor", T.Color3f).ConnectToSource(tex.ConnectableAPI(), "rgb")
+    else:
+        surface.CreateInput("diffuseColor", T.Color3f).Set(color)
+    surface.CreateInput("opacity", T.Float).Set(float(np.clip(material.color[3], 0.0, 1.0)))
+    roughness = _param_float(material, "roughness")
+    shininess = _param_float(material, "shininess")
+    if roughness is None and shininess is not None and shininess >= 0.0:
+        roughness = (2.0 / (shininess + 2.0)) ** 0.25
+    if roughness is not None:
+        surface.CreateInput("roughness", T.Float).Set(float(np.clip(roughness, 0.0, 1.0)))
+    metallic = _param_float(material, "metallic")
+    if metallic is not None:
+        surface.CreateInput("metallic", T.Float).Set(float(np.clip(metallic, 0.0, 1.0)))
+    for key in ("emissive", "emission"):
+        value = material.params.get(key)
+        if isinstance(value, tuple) and len(value) == 3:
+            surface.CreateInput("emissiveColor", T.Color3f).Set(Gf.Vec3f(*map(float, value)))
+            break
+    usd.CreateSurfaceOutput().ConnectToSource(surface.ConnectableAPI(), "surface")
 
 
 def read_material(ctx: FileContext, prim: Usd.Prim) -> tuple[str, MaterialData]:

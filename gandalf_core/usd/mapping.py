@@ -4,9 +4,10 @@ Layout of a saved scene::
 
     /Scene                  Xform, the default prim: gandalf:sceneName, gandalf:version, clear colour, skybox
         /<entity>           one prim per entity (Xform, Camera or a UsdLux light), nested like the Links
+            /mesh           a visible Mesh referencing /Assets/Meshes/<mesh>, with the material binding
     /Assets                 Scope (invisible)
         /Meshes/<mesh>      UsdGeom.Mesh
-        /Materials/<mat>    UsdShade.Material with inputs:gandalf:* values
+        /Materials/<mat>    UsdShade.Material with inputs:gandalf:* values and a UsdPreviewSurface network
         /Textures/<tex>     Scope with gandalf:files (the PNGs next to the USD file)
 """
 
@@ -54,6 +55,15 @@ LIGHT_KINDS = {v: k for k, v in LIGHT_TYPES.items()}
 # Camera film back used to express the field of view as focal length / aperture (mm, USD's units for them).
 VERTICAL_APERTURE_MM = 24.0
 DEFAULT_ASPECT = 4.0 / 3.0  # only for the horizontal aperture of cameras whose aspect follows the target
+
+# The UsdPreviewSurface network inside each material prim (for other USD tools; gandalf reads inputs:gandalf:*).
+PREVIEW_SURFACE = "PreviewSurface"
+PREVIEW_TEXTURE = "Texture"
+PREVIEW_ST_READER = "PrimvarSt"
+
+# The visible Mesh prim inside an entity prim that references its asset mesh (stored once under /Assets).
+ENTITY_MESH = "mesh"
+ENTITY_MESH_MARK = "gandalf:entityMesh"
 
 CUBE_FACE_SUFFIXES = ("px", "nx", "py", "ny", "pz", "nz")  # +X, -X, +Y, -Y, +Z, -Z
 

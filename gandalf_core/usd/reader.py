@@ -32,7 +32,7 @@ from ..resources import linear_to_srgb
 from . import assets as asset_prims
 from .attributes import FileContext, authored, read, read_float, read_floats
 from .errors import USDSceneError, USDSceneWarning
-from .mapping import FORMAT_VERSION, LIGHT_KINDS, MATERIALS, MESHES, TEXTURES
+from .mapping import ENTITY_MESH_MARK, FORMAT_VERSION, LIGHT_KINDS, MATERIALS, MESHES, TEXTURES
 from .registry import registration_named
 from .writer import file_format
 
@@ -89,7 +89,14 @@ class _Reader:
             raise ctx.fail(root, "gandalf:version", f"format {version} is newer than this gandalf ({FORMAT_VERSION})")
         scene = Scene(name or read(ctx, root, "gandalf:sceneName", "string", self.path.stem))
         self.read_assets(scene)
-        prims = list(Usd.PrimRange(root))[1:]  # parents before children, in authored order
+        prims = []  # parents before children, in authored order; an entity's visible mesh prim is not an entity
+        it = iter(Usd.PrimRange(root))
+        next(it)
+        for prim in it:
+            if authored(prim, ENTITY_MESH_MARK):
+                it.PruneChildren()
+                continue
+            prims.append(prim)
         for prim in prims:
             self.entity_of[str(prim.GetPath())] = scene.enroll_entity()
         for prim in prims:

@@ -23,7 +23,7 @@ from ..components import (
     TransformComponent,
 )
 from ..ecs import Component, Scene
-from ..resources import srgb_to_linear
+from ..resources import CubeTextureData, srgb_to_linear
 from . import assets as asset_prims
 from .atomic import StagedFiles
 from .attributes import simple_value, write
@@ -32,6 +32,8 @@ from .mapping import (
     ASSETS,
     BUILTIN_TYPES,
     DEFAULT_ASPECT,
+    ENTITY_MESH,
+    ENTITY_MESH_MARK,
     EXTENSIONS,
     FORMAT_VERSION,
     LIGHT_TYPES,
@@ -124,7 +126,7 @@ class _Writer:
                 continue  # the editor's panels are part of the tool, not of the scene
             parent = self.scene.parent_of(entity)
             parent_path = self.prim_of[parent] if parent is not None else ROOT
-            scope = names.setdefault(parent_path, UniqueNames())
+            scope = names.setdefault(parent_path, UniqueNames(reserved=(ENTITY_MESH,)))
             info = self.scene.try_component(entity, InfoComponent)
             prim_path = f"{parent_path}/{scope.take(info.name if info else 'entity')}"
             self.prim_of[entity] = prim_path
@@ -149,10 +151,30 @@ class _Writer:
 
     def write_assets(self) -> None:
         stage, scene = self.stage, self.scene
-        UsdGeom.Scope.Define(stage, ASSETS).MakeInvisible()  # asset meshes are data, not part of the picture
+        UsdGeom.Scope.Define(stage, ASSETS).MakeInvisible()  # asset meshes are data; entities reference them
+        # Textures first: a material's preview network names its first texture's file.
+        texture_prims: list[tuple[str, str, object, list[str]]] = []
+        texture_file: dict[str, tuple[str, bool]] = {}
+        if self.assets:
+            unique = UniqueNames()
+            folder_name = texture_folder_name(self.path)
+            for name, texture in scene.assets.textures.items():
+                stem = unique.take(name, "texture")
+                files = asset_prims.texture_files(stem, texture)
+                relative = [f"./{folder_name}/{f}" for f in files]
+                texture_prims.append((stem, name, texture, relative))
+                if not isinstance(texture, CubeTextureData):
+                    texture_file[name] = (relative[0], bool(texture.srgb))
+                for f, pixels in zip(files, asset_prims.texture_images(texture)):
+                    self.images.append((self.path.parent / folder_name / f, pixels))
+
+        def material(stage_: Usd.Stage, path: str, name: str, data: object) -> None:
+            first = texture_file.get(data.textures[0]) if data.textures else None
+            asset_prims.write_material(stage_, path, name, data, first)
+
         for folder, table, write_one, paths in (
             (MESHES, scene.assets.meshes, asset_prims.write_mesh, self.mesh_paths),
-            (MATERIALS, scene.assets.materials, asset_prims.write_material, self.material_paths),
+            (MATERIALS, scene.assets.materials, material, self.material_paths),
         ):
             UsdGeom.Scope.Define(stage, folder)
             unique = UniqueNames()
@@ -165,15 +187,8 @@ class _Writer:
         if not self.assets:
             return
         UsdGeom.Scope.Define(stage, TEXTURES)
-        unique = UniqueNames()
-        folder_name = texture_folder_name(self.path)
-        for name, texture in scene.assets.textures.items():
-            stem = unique.take(name, "texture")
-            files = asset_prims.texture_files(stem, texture)
-            relative = [f"./{folder_name}/{f}" for f in files]
+        for stem, name, texture, relative in texture_prims:
             asset_prims.write_texture(stage, f"{TEXTURES}/{stem}", name, texture, relative)
-            for f, pixels in zip(files, asset_prims.texture_images(texture)):
-                self.images.append((self.path.parent / folder_name / f, pixels))
 
     # --- one entity ---------------------------------------------------------------------------------
     def write_entity(self, entity: uuid.UUID, path: str, root: Usd.Prim) -> None:
@@ -200,17 +215,22 @@ class _Writer:
             self.write_camera(prim, camera)
         if light is not None:
             self.write_light(prim, light, schema=type_name != "Camera")
+        mesh_prim = None
         if MeshComponent in comps:
             name = comps[MeshComponent].mesh
             write(prim, "gandalf:mesh", T.String, name)
             if name in self.mesh_paths:
                 prim.CreateRelationship("gandalf:meshAsset", custom=True).SetTargets([self.mesh_paths[name]])
+                # The visible geometry: a Mesh child that references the asset (its data is stored once).
+                mesh_prim = self.stage.DefinePrim(f"{path}/{ENTITY_MESH}", "Mesh")
+                mesh_prim.GetReferences().AddInternalReference(self.mesh_paths[name])
+                write(mesh_prim, ENTITY_MESH_MARK, T.Bool, True)
         if MaterialComponent in comps:
             name = comps[MaterialComponent].material
             write(prim, "gandalf:material", T.String, name)
-            if name in self.material_paths:  # the standard binding too, so other USD tools see it
+            if name in self.material_paths and mesh_prim is not None:  # the standard binding, on the geometry
                 material = UsdShade.Material(self.stage.GetPrimAtPath(self.material_paths[name]))
-                UsdShade.MaterialBindingAPI.Apply(prim).Bind(material)
+                UsdShade.MaterialBindingAPI.Apply(mesh_prim).Bind(material)
         for component_type, attr, type_name_, value in (
             (ClearColorComponent, "gandalf:clearColor", T.Double4, lambda c: Gf.Vec4d(*map(float, c.color))),
             (SkyboxComponent, "gandalf:skybox", T.String, lambda c: c.texture),
