@@ -1,0 +1,95 @@
+"""Step 06's API lesson in plain wgpu: an array of lights in a uniform buffer, bound through a bind group.
+
+A sphere (drawn as a full-frame triangle whose fragment shader works out the sphere's normal) is lit by
+directional lights with the Lambert term. The lights are one block of bytes laid out as WGSL's uniform rules
+ask (the same as std140 here): a count, then up to ``MAX_LIGHTS`` (direction, colour) pairs. WebGPU puts the
+buffer in a bind group whose layout matches the shader's ``@group(0) @binding(0)``.
+Compare with ``lights_gl.py``: the same bytes, bound to a binding point.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+import numpy as np
+import wgpu
+from PIL import Image
+
+MAX_LIGHTS = 4
+#: (direction towards the light, linear RGB colour); the fourth slot is beyond ``count`` and must not show.
+LIGHTS = [((-1.0, 1.0, 1.0), (0.8, 0.6, 0.3)), ((1.0, 0.0, 0.5), (0.1, 0.2, 0.6)),
+          ((0.0, 0.0, -1.0), (1.0, 1.0, 1.0)), ((0.0, 0.0, 1.0), (5.0, 0.0, 5.0))]
+COUNT, AMBIENT = 3, 0.05
+
+SHADER = """
+struct Light { direction: vec4<f32>, color: vec4<f32> };
+struct Lights { count: u32, lights: array<Light, 4> };
+@group(0) @binding(0) var<uniform> lights: Lights;
+struct VertexOut { @builtin(position) position: vec4<f32>, @location(0) ndc: vec2<f32> };
+@vertex fn vs_main(@builtin(vertex_index) i: u32) -> VertexOut {  // one triangle that covers the frame
+    let ndc = vec2<f32>(select(-1.0, 3.0, i == 1u), select(-1.0, 3.0, i == 2u));
+    return VertexOut(vec4<f32>(ndc, 0.0, 1.0), ndc);
+}
+@fragment fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
+    let p = in.ndc / 0.9;  // a sphere of radius 0.9 (NDC) facing the viewer
+    let r2 = dot(p, p);
+    if (r2 > 1.0) { return vec4<f32>(0.0, 0.0, 0.0, 1.0); }
+    let n = vec3<f32>(p, sqrt(1.0 - r2));
+    var color = vec3<f32>(0.05);
+    for (var i = 0u; i < lights.count; i++) {
+        color += max(dot(n, normalize(lights.lights[i].direction.xyz)), 0.0) * lights.lights[i].color.rgb;
+    }
+    return vec4<f32>(min(color, vec3<f32>(1.0)), 1.0);
+}
+"""
+
+
+def light_block() -> bytes:
+    """The uniform buffer's bytes: u32 count (the array starts at byte 16), then vec4 pairs."""
+    rows = np.zeros((2 * MAX_LIGHTS, 4))
+    for i, (direction, color) in enumerate(LIGHTS):
+        rows[2 * i, :3], rows[2 * i + 1, :3] = direction, color
+    return np.array([COUNT, 0, 0, 0], np.uint32).tobytes() + rows.astype("f4").tobytes()
+
+
+def render(width: int = 64, height: int = 64) -> np.ndarray:
+    """The lit sphere as (height, width, 4) uint8, top row first."""
+    device = wgpu.gpu.request_adapter_sync(power_preference="high-performance").request_device_sync()
+    module = device.create_shader_module(code=SHADER)
+    pipeline = device.create_render_pipeline(
+        layout="auto", vertex={"module": module, "entry_point": "vs_main"},
+        fragment={"module": module, "entry_point": "fs_main", "targets": [{"format": "rgba8unorm"}]})
+    # --8<-- [start:lights]
+    lights = device.create_buffer_with_data(data=light_block(), usage=wgpu.BufferUsage.UNIFORM)
+    bind_group = device.create_bind_group(layout=pipeline.get_bind_group_layout(0),  # the shader's @group(0)
+                                          entries=[{"binding": 0, "resource": {"buffer": lights}}])
+    # --8<-- [end:lights]
+    target = device.create_texture(size=(width, height, 1), format="rgba8unorm",
+                                   usage=wgpu.TextureUsage.RENDER_ATTACHMENT | wgpu.TextureUsage.COPY_SRC)
+    encoder = device.create_command_encoder()
+    rpass = encoder.begin_render_pass(color_attachments=[{
+        "view": target.create_view(), "clear_value": (0, 0, 0, 1), "load_op": "clear", "store_op": "store"}])
+    rpass.set_pipeline(pipeline)
+    rpass.set_bind_group(0, bind_group)
+    rpass.draw(3)
+    rpass.end()
+    device.queue.submit([encoder.finish()])
+    pixels = device.queue.read_texture({"texture": target}, {"bytes_per_row": 4 * width, "rows_per_image": height},
+                                       (width, height, 1))
+    device.destroy()
+    return np.frombuffer(pixels, dtype=np.uint8).reshape(height, width, 4).copy()
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", default="lights_wgpu.png", help="PNG file to write")
+    parser.add_argument("--size", default="480x480", help="WIDTHxHEIGHT (default: 480x480)")
+    args = parser.parse_args(argv)
+    width, height = (int(v) for v in args.size.lower().split("x"))
+    Image.fromarray(render(width, height)).save(args.out)
+    print(f"wrote {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
