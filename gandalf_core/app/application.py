@@ -60,6 +60,7 @@ class Application:
         self.renderer: Renderer = create_renderer(self.backend, width, height, self.window)
         self._prepared: set[int] = set()
         self.running = False
+        self._closed = False
         #: Asked before a camera controller reads the mouse: a GUI layer (the editor) that has the pointer over
         #: one of its panels sets this to say so. The app owns the flag, so no system needs to know the GUI.
         self.gui_wants_mouse: Callable[[], bool] = _never
@@ -73,9 +74,22 @@ class Application:
 
     # --- scenes -------------------------------------------------------------------------------
     def add_scene(self, scene: Scene) -> Scene:
-        """Register a scene; the first one becomes active."""
+        """Register a scene; the first one becomes active. A scene belongs to one application at a time."""
+        self._check_open("add_scene")
+        if scene.app is not None and scene.app is not self and not scene.app.closed:
+            raise ValueError(f"scene '{scene.name}' already runs in another Application; a scene's systems and "
+                             "resources belong to one renderer: build a second scene for the second app")
         scene.app = self
         return self.scenes.add(scene)
+
+    @property
+    def closed(self) -> bool:
+        """True after :meth:`close`: the renderer and the window are gone."""
+        return self._closed
+
+    def _check_open(self, what: str) -> None:
+        if self._closed:
+            raise RuntimeError(f"Application.{what}: the application was closed (its renderer and window are gone)")
 
     @property
     def scene(self) -> Scene:
@@ -112,6 +126,7 @@ class Application:
     # --8<-- [start:step]
     def step(self, dt: float | None = None) -> float:
         """Run exactly one frame and return its time step."""
+        self._check_open("step")
         self.scenes.apply_pending()
         scene = self.scene
         self._prepare(scene)
@@ -129,6 +144,7 @@ class Application:
 
     def run(self, frames: int | None = None, seconds: float | None = None) -> None:
         """Run until the window closes, or for ``frames`` frames / ``seconds`` of clock time."""
+        self._check_open("run")
         self.running = True
         self.clock.restart()
         start = self.clock.time
@@ -152,13 +168,19 @@ class Application:
     # --- capture --------------------------------------------------------------------------------
     def capture(self) -> np.ndarray:
         """The last frame as a ``(height, width, 4)`` uint8 RGBA array, top row first."""
+        self._check_open("capture")
         return self.renderer.read_pixels()
 
     def save_png(self, path: str | Path) -> Path:
+        self._check_open("save_png")
         return self.renderer.save_png(path)
 
     def close(self) -> None:
-        """Tear down the layers on top (the editor, if on), every scene's systems, the renderer and the window."""
+        """Tear down the layers on top (the editor, if on), every scene's systems, the renderer and the window.
+        Closing twice does nothing; using the app afterwards is an error."""
+        if self._closed:
+            return
+        self._closed = True
         for callback in reversed(list(self.on_close)):
             callback()
         self.on_close.clear()

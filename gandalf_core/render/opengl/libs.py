@@ -38,8 +38,26 @@ GL_RGBA8 = 0x8058
 _GL_LINE = re.compile(r"^\s*(?:ERROR:\s*)?\d+[:(](\d+)\)?")
 
 
+def make_current(ctx: moderngl.Context) -> None:
+    """Make ``ctx`` current on this thread (EGL or the window's GLX context), with no restore: the caller's context
+    stays current until another renderer makes its own current. (moderngl's ``with ctx:`` restores the previous
+    context on exit, which goes wrong when two contexts nest; glcontext's plain enter does just the switch.)"""
+    ctx.mglo._context.__enter__()
+
+
+class _InContext:
+    """GL objects are made in their renderer's context, whichever another Application made current."""
+
+    ctx: moderngl.Context
+
+    def build(self, name: str, data: Any) -> Any:
+        if name not in self._items:  # type: ignore[attr-defined]
+            make_current(self.ctx)
+        return super().build(name, data)  # type: ignore[misc]
+
+
 # --- textures -------------------------------------------------------------------------------------
-class TextureLib(ResourceLib[Any]):
+class TextureLib(_InContext, ResourceLib[Any]):
     kind = "texture"
 
     def __init__(self, ctx: moderngl.Context, stats: Counter[str]) -> None:
@@ -152,6 +170,11 @@ class ShaderLib(ResourceLib[GLShader]):
         """
         if name in self._items:
             return self._items[name]
+        make_current(self.ctx)  # this renderer's context, whichever another Application made current
+        return self._build(name, vertex, fragment, geometry, tess_control, tess_evaluation, include_dirs)
+
+    def _build(self, name: str, vertex: Any, fragment: Any, geometry: Any, tess_control: Any, tess_evaluation: Any,
+               include_dirs: Sequence[str | Path]) -> GLShader:
         stages = {
             "vertex_shader": load_shader(vertex, "vertex", "glsl", include_dirs),
             "fragment_shader": load_shader(fragment, "fragment", "glsl", include_dirs),
@@ -262,7 +285,7 @@ class GLMesh:
         return self.data.index_count if self.index_buffer is not None else self.data.vertex_count
 
 
-class MeshLib(ResourceLib[GLMesh]):
+class MeshLib(_InContext, ResourceLib[GLMesh]):
     kind = "mesh"
 
     def __init__(self, ctx: moderngl.Context, stats: Counter[str]) -> None:
@@ -292,7 +315,7 @@ class MeshLib(ResourceLib[GLMesh]):
 
 
 # --- storage buffers -------------------------------------------------------------------------------
-class BufferLib(ResourceLib[moderngl.Buffer]):
+class BufferLib(_InContext, ResourceLib[moderngl.Buffer]):
     """Storage buffers by name, for materials that read them (vertex pulling) and the compute code that fills them.
 
     ``build(name, data)``: ``data`` is a numpy array (its bytes) or a size in bytes (zeros).

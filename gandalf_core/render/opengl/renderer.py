@@ -43,6 +43,7 @@ from .libs import (
     MeshLib,
     ShaderLib,
     TextureLib,
+    make_current,
 )
 
 GL_FRAMEBUFFER_SRGB = 0x8DB9
@@ -158,8 +159,15 @@ class OpenGLRenderer(Renderer):
             raw_gl.set_zero_to_one(zero_to_one)
             self._zero_to_one = zero_to_one
 
+    def make_current(self) -> None:
+        """Make this renderer's context the current one. Several renderers (several Applications, a compute
+        helper's context) may live in one process and GL calls go to whichever context is current, so every entry
+        point that issues them starts here."""
+        make_current(self.ctx)
+
     # --- a frame ------------------------------------------------------------------------------------
     def render(self, data: FrameData, assets: Assets) -> None:
+        self.make_current()
         self.stats["draw_calls"] = 0
         self._frame_ubo.write(data.frame)
         self._frame_ubo.bind_to_uniform_block(0)
@@ -347,6 +355,7 @@ class OpenGLRenderer(Renderer):
 
     # --- read-back, resize, release -------------------------------------------------------------------
     def read_pixels(self) -> np.ndarray:
+        self.make_current()
         if self._target is not None and self._target is self.ctx.screen:
             data = self._target.read(viewport=(0, 0, self.width, self.height), components=4)
         else:
@@ -355,12 +364,14 @@ class OpenGLRenderer(Renderer):
         return np.ascontiguousarray(image[::-1])  # GL rows are bottom-up
 
     def read_pixel(self, x: int, y: int) -> np.ndarray:
+        self.make_current()
         data = self.framebuffer.read(viewport=(int(x), self.height - 1 - int(y), 1, 1), components=4)
         return np.frombuffer(data, dtype=np.uint8).copy()
 
     def resize(self, width: int, height: int) -> None:
         if (width, height) == (self.width, self.height) or width <= 0 or height <= 0:
             return
+        self.make_current()
         self._release_targets()
         self.width, self.height = int(width), int(height)
         self._create_targets()
@@ -372,6 +383,7 @@ class OpenGLRenderer(Renderer):
                 + sum(len(lib) for lib in libraries))
 
     def release(self) -> None:
+        self.make_current()
         for vao in self._vaos.values():
             vao.release()
         self._vaos.clear()
