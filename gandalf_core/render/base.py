@@ -106,6 +106,16 @@ class Renderer(ABC):
     def resolve_texture(self, name: str, assets: Assets, referrer: str) -> Any:
         return self.textures.resolve(name, assets.textures, referrer)
 
+    def resolve_sky(self, name: str, assets: Assets) -> Any:
+        """The cube texture a SkyboxComponent names; a 2-D texture there is an error naming it."""
+        from ..resources import CubeTextureData, ResourceError
+
+        texture = self.resolve_texture(name, assets, "a SkyboxComponent")
+        if not isinstance(self.textures.data_of(name), CubeTextureData):
+            raise ResourceError(f"texture '{name}'", "kind", "a SkyboxComponent needs a cube texture "
+                                "(CubeTextureData, six faces); this one is 2-D")
+        return texture
+
     def save_png(self, path: str | Path) -> Path:
         """Write the last frame to a PNG file."""
         from PIL import Image

@@ -65,6 +65,10 @@ class ResourceLib(Generic[T]):
         except KeyError:
             raise missing(self.kind, name, list(self._items), referrer) from None
 
+    def data_of(self, name: str) -> Any:
+        """The data ``name`` was built from (None when it was not built through :meth:`build`)."""
+        return self._data.get(name)
+
     def names(self) -> list[str]:
         return list(self._items)
 

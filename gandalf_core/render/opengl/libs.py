@@ -25,6 +25,7 @@ from ..material_values import MaterialValues
 from ..patches import declared_patch_size
 from ..shader_files import load_shader
 from ..storage import buffer_bytes
+from ..texture_checks import check_texture_kinds, check_texture_size
 
 GL_SRGB8_ALPHA8 = 0x8C43
 # GL_FLOAT_MAT2, _MAT3, _MAT4 -> size
@@ -65,6 +66,9 @@ class TextureLib(_InContext, ResourceLib[Any]):
         self.ctx = ctx
 
     def _create(self, name: str, data: TextureData | CubeTextureData) -> Any:
+        cube = isinstance(data, CubeTextureData)
+        key = "GL_MAX_CUBE_MAP_TEXTURE_SIZE" if cube else "GL_MAX_TEXTURE_SIZE"
+        check_texture_size(name, data, int(self.ctx.info[key]), key)
         fmt = GL_SRGB8_ALPHA8 if data.srgb else GL_RGBA8
         if isinstance(data, CubeTextureData) and data.levels is None:
             # Each face goes straight from its own array (no stacked copy, no bytes copy) and the mip levels are
@@ -144,6 +148,7 @@ class GLShader:
     patch_vertices: int | None = None  # with a tessellation control stage: its layout(vertices = N)
     storage_blocks: list[str] = field(default_factory=list)  # shader storage blocks in declaration order
     active_storage: dict[str, int] = field(default_factory=dict)  # block -> binding, of the blocks still in use
+    cube_samplers: dict[str, bool] = field(default_factory=dict)  # sampler -> samples a cube map
 
 
 class ShaderLib(ResourceLib[GLShader]):
@@ -225,7 +230,9 @@ class ShaderLib(ResourceLib[GLShader]):
             if sampler in uniforms:
                 program[sampler].value = unit
         storage_blocks = list(dict.fromkeys(b for src in stages.values() for b in _declared_storage_blocks(src.text)))
-        shader = GLShader(name, program, attributes, samplers, uniforms, patch_vertices, storage_blocks, active_storage)
+        kinds = dict(kind for src in stages.values() for kind in _declared_sampler_kinds(src.text))
+        shader = GLShader(name, program, attributes, samplers, uniforms, patch_vertices, storage_blocks, active_storage,
+                          {s: "Cube" in kinds.get(s, "") for s in samplers})
         self._items[name] = shader
         self._data[name] = stages
         return shader
@@ -236,14 +243,19 @@ class ShaderLib(ResourceLib[GLShader]):
 
 def _declared_samplers(glsl: str) -> list[str]:
     """Sampler uniform names in declaration order (comments stripped; formatting does not matter)."""
+    return [name for name, _kind in _declared_sampler_kinds(glsl)]
+
+
+def _declared_sampler_kinds(glsl: str) -> list[tuple[str, str]]:
+    """(name, GLSL type) of every sampler uniform, in declaration order."""
     text = re.sub(r"/\*.*?\*/", " ", glsl, flags=re.S)
     text = re.sub(r"//[^\n]*", " ", text)
     tokens = re.findall(r"[A-Za-z_]\w*|[;{}]", text)
-    names = []
+    found = []
     for i, tok in enumerate(tokens[:-2]):
         if tok == "uniform" and tokens[i + 1].startswith(("sampler", "isampler", "usampler")):
-            names.append(tokens[i + 2])
-    return names
+            found.append((tokens[i + 2], tokens[i + 1]))
+    return found
 
 
 def _declared_storage_blocks(glsl: str) -> list[str]:
@@ -408,4 +420,6 @@ class MaterialLib(ResourceLib[GLMaterial]):
         if data.buffers and self.buffers is None:
             raise ResourceError(referrer, "buffers", "this material library has no buffer library")
         buffers = [self.buffers.get(buf, referrer) for buf in data.buffers]
+        check_texture_kinds(name, shader.name, [(s, shader.cube_samplers.get(s, False)) for s in shader.samplers],
+                            [(t, self.textures.data_of(t)) for t in data.textures])
         return GLMaterial(name, data, shader, textures, buffers)

@@ -274,7 +274,7 @@ class OpenGLRenderer(Renderer):
         if self._sky is None:
             shader = self.shaders.build(SKY_SHADER, SNIPPETS_DIR / "skybox.vert", SNIPPETS_DIR / "skybox.frag")
             self._sky = (shader, self.ctx.vertex_array(shader.program, []))
-        return self._sky[1], self.resolve_texture(texture_name, assets, "a SkyboxComponent")
+        return self._sky[1], self.resolve_sky(texture_name, assets)
 
     def _draw_sky(self, sky: tuple[moderngl.VertexArray, Any], reverse_z: bool) -> None:
         """A full-screen triangle at the far plane, after the opaque geometry."""

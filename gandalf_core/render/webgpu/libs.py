@@ -27,6 +27,7 @@ from ..library import ResourceLib
 from ..material_values import MaterialValues
 from ..shader_files import load_shader
 from ..storage import buffer_bytes
+from ..texture_checks import check_texture_kinds, check_texture_size
 from ..wgsl_reflect import Binding, ShaderReflection, WGSLReflectError, reflect
 
 _ADDRESS = {"repeat": "repeat", "clamp": "clamp-to-edge"}
@@ -50,6 +51,8 @@ class TextureLib(ResourceLib[WGPUTexture]):
         self.device = device
 
     def _create(self, name: str, data: TextureData | CubeTextureData) -> WGPUTexture:
+        check_texture_size(name, data, int(self.device.limits["max-texture-dimension-2d"]),
+                           "max-texture-dimension-2d")
         cube = isinstance(data, CubeTextureData)
         fmt = "rgba8unorm-srgb" if data.srgb else "rgba8unorm"
         usage = wgpu.TextureUsage.TEXTURE_BINDING | wgpu.TextureUsage.COPY_DST
@@ -432,6 +435,8 @@ class MaterialLib(ResourceLib[WGPUMaterial]):
         if data.buffers and self.buffers is None:
             raise ResourceError(referrer, "buffers", "this material library has no buffer library")
         buffers = [self.buffers.get(buf, referrer) for buf in data.buffers]
+        slots = [(b.name, b.view_dimension == "cube") for b in shader.material_bindings if b.kind == "texture"]
+        check_texture_kinds(name, shader.name, slots, [(t, self.textures.data_of(t)) for t in data.textures])
         return WGPUMaterial(name, data, shader, textures, self.device, buffers)
 
     def _release(self, item: WGPUMaterial) -> None:

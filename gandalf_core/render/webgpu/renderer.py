@@ -258,7 +258,7 @@ class WebGPURenderer(Renderer):
 
     def _sky_draw(self, texture_name: str, assets: Assets, reverse_z: bool) -> tuple[Any, Any]:
         """The sky pass's pipeline and bind group, built on first use (only scenes with a skybox pay for it)."""
-        texture = self.resolve_texture(texture_name, assets, "a SkyboxComponent")
+        texture = self.resolve_sky(texture_name, assets)
         shader = self.shaders.build(SKY_SHADER, SNIPPETS_DIR / "skybox.wgsl")
         material = self._sky_materials.get(texture_name)
         if material is None:
