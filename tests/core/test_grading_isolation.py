@@ -1,15 +1,18 @@
 """The grader survives runaway and crashing student code, and writes Gradescope's format.
 
-Each test writes a tiny fake step (``fakestep``: an ``exercises`` package with an infinite loop, an
+Most tests write a tiny fake step (``fakestep``: an ``exercises`` package with an infinite loop, an
 ``os._exit(3)`` and a hang that no signal reaches, and ``solutions``) plus its graded tests into
 ``tmp_path`` and runs ``python -m gandalf_core.grading`` on it in a subprocess: the runaway tests fail
-with their own message and every other test is still graded.
+with their own message and every other test is still graded. The last one makes step 01's reference
+system loop forever in the first frame of an OpenGL app: pytest-timeout's signal method fails that test and
+the same worker renders the next ones correctly.
 """
 
 from __future__ import annotations
 
 import json
 import os
+import shutil
 import subprocess
 import sys
 import textwrap
@@ -177,3 +180,46 @@ def test_fail_under_turns_the_score_into_an_exit_status(tmp_path):
     assert proc.returncode == 0, proc.stdout[-2000:]
     proc, _ = _grade(tmp_path, "--jobs", "0", "--timeout", "2", "-k", "add or spin", "--fail-under", "100")
     assert proc.returncode == 1 and "below 100%" in proc.stdout, proc.stdout[-2000:]
+
+
+SPIN_ONCE = """
+
+_spun = []
+_original_update = HueCycleSystem.on_update_entity
+
+
+def _update_that_spins_once(self, ts, entity, components):
+    if not _spun:  # the first update of the run never returns: a runaway loop inside a rendering app's frame
+        _spun.append(1)
+        while True:
+            pass
+    return _original_update(self, ts, entity, components)
+
+
+HueCycleSystem.on_update_entity = _update_that_spins_once
+"""
+
+
+def test_a_timeout_inside_a_rendering_frame_leaves_the_gpu_usable(tmp_path):
+    # The signal method interrupts the loop inside an OpenGL app's frame; the same worker then renders the
+    # next tests correctly (the thread method would have ended the worker instead).
+    package = tmp_path / "spin"
+    shutil.copytree(ROOT / "step01_window" / "solutions", package, ignore=shutil.ignore_patterns("__pycache__"))
+    (package / "__init__.py").write_text((package / "__init__.py").read_text() + SPIN_ONCE)
+    out = tmp_path / "grade.json"
+    env = {k: v for k, v in os.environ.items() if k != "GANDALF_IMPL"}
+    proc = subprocess.run(
+        [sys.executable, "-m", "gandalf_core.grading", "tests/step01_window", "--impl", f"step01_window={package}"]
+        + ["--timeout", "5", "--json", str(out), "--grade-only", "HueCycleSystem", "-k", "opengl or each_entity"],
+        cwd=ROOT,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert proc.returncode == 0 and out.exists(), proc.stdout[-3000:] + proc.stderr[-3000:]
+    tests = _by_test(json.loads(out.read_text()))
+    first = tests["test_clear_colour_follows_the_hue_in_pixels[opengl-1]"]
+    assert not first["passed"] and "Timeout" in first["message"], first
+    others = {name: t for name, t in tests.items() if name != "test_clear_colour_follows_the_hue_in_pixels[opengl-1]"}
+    assert len(others) == 3 and all(t["passed"] for t in others.values()), others
