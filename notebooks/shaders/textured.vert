@@ -1,0 +1,14 @@
+#version 330 core
+// Step 03: pass the mesh's texture coordinates on to the fragment shader.
+#include "frame.glsl"
+#include "instance.glsl"
+
+layout(location = 0) in vec3 a_position;
+layout(location = 2) in vec2 a_uv;
+
+out vec2 v_uv;
+
+void main() {
+    v_uv = a_uv;  // interpolated (perspective-correct) across the triangle
+    gl_Position = u_projection * u_view * instance_model() * vec4(a_position, 1.0);
+}
