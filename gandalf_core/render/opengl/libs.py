@@ -19,6 +19,7 @@ import moderngl
 import numpy as np
 
 from ...resources import CubeTextureData, MaterialData, MeshData, ResourceError, ShaderSource, TextureData
+from ..builtin_materials import prepare as prepare_builtin
 from ..errors import ShaderCompileError
 from ..library import ResourceLib
 from ..material_values import MaterialValues
@@ -415,6 +416,7 @@ class MaterialLib(ResourceLib[GLMaterial]):
 
     def _create(self, name: str, data: MaterialData) -> GLMaterial:
         referrer = f"material '{name}'"
+        data = prepare_builtin(self.shaders, name, data, "glsl")  # gandalf.unlit, gandalf.blinn_phong
         shader = self.shaders.get(data.shader, referrer)
         textures = [self.textures.get(tex, referrer) for tex in data.textures]
         if data.buffers and self.buffers is None:

@@ -22,6 +22,7 @@ import numpy as np
 import wgpu
 
 from ...resources import CubeTextureData, MaterialData, MeshData, ResourceError, ShaderSource, TextureData
+from ..builtin_materials import prepare as prepare_builtin
 from ..errors import ShaderCompileError
 from ..library import ResourceLib
 from ..material_values import MaterialValues
@@ -430,6 +431,7 @@ class MaterialLib(ResourceLib[WGPUMaterial]):
 
     def _create(self, name: str, data: MaterialData) -> WGPUMaterial:
         referrer = f"material '{name}'"
+        data = prepare_builtin(self.shaders, name, data, "wgsl")  # gandalf.unlit, gandalf.blinn_phong
         shader = self.shaders.get(data.shader, referrer)
         textures = [self.textures.get(tex, referrer) for tex in data.textures]
         if data.buffers and self.buffers is None:
