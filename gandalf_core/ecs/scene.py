@@ -37,6 +37,9 @@ class Scene:
         self._systems: list[System] = []
         self._systems_by_type: dict[type, list[System]] = {}
         self._queries: dict[tuple[type, ...], System] = {}
+        self._updating = False  # inside a system's update: destruction waits until the system is done
+        #: Entities destroyed during the running system's update, destroyed when it has finished.
+        self.pending_destroy: list[uuid.UUID] = []
         self.hierarchy_version = 0  # bumped whenever a Link is added, removed or re-parented
         self.membership_version = 0  # bumped whenever any component is added or removed
 
@@ -186,8 +189,22 @@ class Scene:
         return f"entity '{info.name}' ({entity})" if info is not None else f"entity {entity}"
 
     def destroy_entity(self, entity: uuid.UUID) -> None:
-        """Remove an entity, its components, and (through its Link) all of its descendants."""
+        """Remove an entity, its components, and (through its Link) all of its descendants.
+
+        Asked for while a system runs its update, the destruction waits until that system has finished (so its
+        loop never visits an entity it has already destroyed, and never skips one); :attr:`pending_destroy` holds
+        what waits. Everywhere else it happens at once.
+        """
         self._require(entity)
+        if self._updating:
+            if entity not in self.pending_destroy:
+                self.pending_destroy.append(entity)
+            return
+        self._destroy_now(entity)
+
+    def _destroy_now(self, entity: uuid.UUID) -> None:
+        if entity not in self._entities:  # destroyed already, e.g. as a descendant of another pending entity
+            return
         # Collect the subtree breadth-first without recursion (a 1000-deep chain must not hit the
         # recursion limit), then destroy it from the leaves up so every child goes before its parent.
         subtree = [entity]
@@ -401,6 +418,10 @@ class Scene:
         return members
 
     def remove_system(self, system: System) -> None:
+        """Take ``system`` out of the scene (calling its ``on_destroy_system``)."""
+        if system not in self._systems:
+            names = ", ".join(type(s).__name__ for s in self._systems) or "none"
+            raise ValueError(f"scene '{self.name}' has no system {system!r} to remove (its systems: {names})")
         self._systems.remove(system)
         for t in system.component_types:
             self._systems_by_type[t].remove(system)
@@ -416,10 +437,21 @@ class Scene:
         raise KeyError(f"scene '{self.name}' has no {system_type.__name__}")
 
     def update(self, ts: float) -> None:
-        """Run one frame: every enabled system's ``on_update_system`` in order."""
-        for system in self._systems:
+        """Run one frame: every enabled system's ``on_update_system`` in order; entities a system destroys go
+        when it has finished."""
+        for system in list(self._systems):
             if system.enabled:
-                system.on_update_system(ts)
+                self._updating = True
+                try:
+                    system.on_update_system(ts)
+                finally:
+                    self._updating = False
+                    self._flush_destroyed()
+
+    def _flush_destroyed(self) -> None:
+        pending, self.pending_destroy = self.pending_destroy, []
+        for entity in pending:
+            self._destroy_now(entity)
 
     def gui_update(self) -> None:
         for system in self._systems:

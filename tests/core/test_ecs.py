@@ -701,3 +701,39 @@ def test_replacing_a_link_changes_the_parent_and_keeps_the_children() -> None:
     assert scene.get_component(b, LinkComponent).children == [c]
     with pytest.raises(HierarchyCycleError):
         scene.add_component(b, LinkComponent(c))  # c is b's child: still a cycle
+
+
+# --- destruction during an update, removing systems -------------------------------------------------------------
+def test_an_entity_destroyed_during_an_update_is_not_visited_later_in_that_loop():
+    from gandalf_core import Scene, System, TransformComponent
+
+    class Killer(System):
+        def __init__(self):
+            super().__init__([TransformComponent])
+            self.visited = []
+
+        def on_update_entity(self, ts, entity, components):
+            self.visited.append(entity)
+            if entity == first and second in self.scene:
+                self.scene.destroy_entity(second)  # asked for mid-loop: waits until the loop is done
+
+    scene = Scene("kill")
+    first = scene.create_entity(TransformComponent())
+    second = scene.create_entity(TransformComponent())
+    third = scene.create_entity(TransformComponent())
+    killer = scene.add_system(Killer())
+    scene.update(0.0)
+    # Deferred to the end of the system: the loop runs over the entities as they were when it began.
+    assert killer.visited == [first, second, third]
+    assert second not in scene.entities and scene.pending_destroy == []
+    killer.visited.clear()
+    scene.update(0.0)
+    assert killer.visited == [first, third]
+
+
+def test_removing_a_system_that_is_not_there_names_the_scene():
+    from gandalf_core import Scene, System, TransformComponent
+
+    scene = Scene("level")
+    with pytest.raises(ValueError, match="scene 'level' has no system .* to remove"):
+        scene.remove_system(System([TransformComponent]))
