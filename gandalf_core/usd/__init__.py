@@ -16,7 +16,11 @@ from .errors import USDSceneError, USDSceneWarning
 from .registry import register_component, unregister_component
 
 if TYPE_CHECKING:
+    from collections.abc import Callable
+
     from ..ecs import Scene
+    from ..resources import MaterialData
+    from .foreign import PreviewSurface
 
 
 def save_scene(scene: Scene, path: str | Path, *, assets: bool = True) -> Path:
@@ -26,11 +30,17 @@ def save_scene(scene: Scene, path: str | Path, *, assets: bool = True) -> Path:
     return save(scene, path, assets=assets)
 
 
-def load_scene(path: str | Path, *, name: str | None = None, strict: bool = True) -> Scene:
-    """Read a USD file into a new Scene; see :func:`gandalf_core.usd.reader.load_scene`."""
+def load_scene(path: str | Path, *, name: str | None = None, strict: bool = True, allow_outside: bool = False,
+               preview_material: Callable[[PreviewSurface], MaterialData] | None = None) -> Scene:
+    """Read a USD file (gandalf's or another tool's) into a new Scene; see :func:`gandalf_core.usd.reader.load_scene`.
+
+    ``allow_outside=True`` lets sublayers, references, payloads and textures lie outside the file's folder;
+    ``preview_material`` maps another tool's UsdPreviewSurface (a :class:`gandalf_core.usd.foreign.PreviewSurface`)
+    onto an engine ``MaterialData`` (default: step 06's ``phong`` / ``phong_textured``).
+    """
     from .reader import load_scene as load
 
-    return load(path, name=name, strict=strict)
+    return load(path, name=name, strict=strict, allow_outside=allow_outside, preview_material=preview_material)
 
 
 __all__ = [

@@ -10,11 +10,12 @@ from __future__ import annotations
 import math
 import uuid
 import warnings
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 import numpy as np
-from pxr import Sdf, Usd, UsdGeom
+from pxr import Sdf, Usd, UsdGeom, UsdLux, UsdShade
 
 from ..components import (
     CameraComponent,
@@ -28,24 +29,34 @@ from ..components import (
     TransformComponent,
 )
 from ..ecs import Component, Scene
-from ..resources import linear_to_srgb
+from ..resources import MaterialData, ResourceError, TextureData, linear_to_srgb
 from . import assets as asset_prims
+from . import foreign
 from .attributes import FileContext, authored, read, read_float, read_floats
 from .errors import USDSceneError, USDSceneWarning
-from .mapping import ENTITY_MESH_MARK, FORMAT_VERSION, LIGHT_KINDS, MATERIALS, MESHES, TEXTURES
+from .foreign import PreviewSurface, default_preview_material, inside
+from .mapping import ASSETS, ENTITY_MESH_MARK, FORMAT_VERSION, LIGHT_KINDS, MATERIALS, MESHES, TEXTURES
 from .registry import registration_named
 from .writer import file_format
 
 _XFORM_OPS = ["xformOp:translate", "xformOp:orient", "xformOp:scale"]
 
 
-def load_scene(path: str | Path, *, name: str | None = None, strict: bool = True) -> Scene:
-    """Read a .usda/.usdc file into a NEW Scene (named ``name``, else the saved scene name).
+def load_scene(path: str | Path, *, name: str | None = None, strict: bool = True, allow_outside: bool = False,
+               preview_material: Callable[[PreviewSurface], MaterialData] | None = None) -> Scene:
+    """Read a .usda/.usdc file into a NEW Scene (named ``name``, else the saved scene name or the file stem).
 
     Every problem (missing or unreadable file, wrong extension, a missing attribute or one of the wrong type,
-    invalid component values, an unknown component) raises :class:`USDSceneError` naming the file, prim and
-    attribute. Components of classes not registered with ``register_component`` are an error, or with
-    ``strict=False`` a :class:`USDSceneWarning` and left out.
+    invalid component values, an unknown component, a missing sublayer, reference or payload) raises
+    :class:`USDSceneError` naming the file, prim and attribute. Components of classes not registered with
+    ``register_component`` are an error, or with ``strict=False`` a :class:`USDSceneWarning` and left out.
+
+    Files from other tools load too (see :mod:`gandalf_core.usd.foreign`): every prim becomes an entity named
+    after it, any xform op stack becomes its transform, plain meshes and gprims are converted, and bound
+    ``UsdPreviewSurface`` materials become engine materials through ``preview_material`` (default:
+    :func:`~gandalf_core.usd.foreign.default_preview_material`, step 06's ``phong`` / ``phong_textured``).
+    What cannot be mapped is listed, prim by prim, in ONE :class:`USDSceneWarning`. Sublayers, references,
+    payloads and texture files must lie inside the file's folder unless ``allow_outside=True``.
     """
     path = Path(path)
     file_format(path)
@@ -58,11 +69,52 @@ def load_scene(path: str | Path, *, name: str | None = None, strict: bool = True
         raise USDSceneError(path, f"not a valid USD file: {_parser_message(exc)}") from None
     if layer is None:
         raise USDSceneError(path, "not a valid USD file")
+    if layer.GetCompositionAssetDependencies():
+        # Relative sublayers and references resolve against the layer's own file: open it by its path, read
+        # afresh (Reload) when it or a layer it uses changed on disk since an earlier load.
+        check_dependencies(path, allow_outside)
+        layer = Sdf.Layer.FindOrOpen(str(path))
+        layer.Reload()
     try:
-        stage = Usd.Stage.Open(layer)
+        stage = Usd.Stage.Open(layer, Usd.Stage.LoadAll)
+        for used in stage.GetUsedLayers():
+            if not used.anonymous and used is not layer:
+                used.Reload()
+        errors = stage.GetCompositionErrors()
     except Exception as exc:
         raise USDSceneError(path, f"cannot open the USD stage: {str(exc).strip()}") from None
-    return _Reader(ctx, stage, path, strict).scene_named(name)
+    if errors:
+        raise USDSceneError(path, "composition errors: " + "; ".join(str(e).strip() for e in errors))
+    return _Reader(ctx, stage, path, strict, allow_outside, preview_material).scene_named(name)
+
+
+def check_dependencies(path: Path, allow_outside: bool) -> None:
+    """Every sublayer, reference and payload (recursively) exists, and lies in ``path``'s folder unless allowed."""
+    folder = path.parent.resolve()
+    seen: set[Path] = set()
+    todo = [path.resolve()]
+    while todo:
+        current = todo.pop()
+        if current in seen:
+            continue
+        seen.add(current)
+        try:
+            layer = Sdf.Layer.OpenAsAnonymous(str(current))
+        except Exception as exc:
+            raise USDSceneError(path, f"layer {str(current)!r}: not a valid USD file: {_parser_message(exc)}") from None
+        sublayers = set(layer.subLayerPaths)
+        for dep in layer.GetCompositionAssetDependencies():
+            if not dep:
+                continue
+            kind = "sublayer" if dep in sublayers else "reference or payload"
+            target = Path(dep) if Path(dep).is_absolute() else current.parent / dep
+            target = target.resolve()
+            if not allow_outside and not inside(folder, target):
+                raise USDSceneError(path, f"{current.name}: the {kind} @{dep}@ ({target}) lies outside the scene's "
+                                          f"folder {folder}: refused (load_scene(..., allow_outside=True) allows it)")
+            if not target.is_file():
+                raise USDSceneError(path, f"{current.name}: the {kind} @{dep}@ is missing ({target})")
+            todo.append(target)
 
 
 def _parser_message(exc: Exception) -> str:
@@ -71,39 +123,73 @@ def _parser_message(exc: Exception) -> str:
     return last.split(" : ", 1)[-1].strip().strip("'").strip()
 
 
+_SKIPPED_TYPES = ("Material", "Shader", "NodeGraph", "GeomSubset")  # shading data and subsets: not entities
+_PLAIN_TYPES = ("", "Xform", "Scope", "Camera", "Mesh", *LIGHT_KINDS)
+
+
+def _only_shading(prim: Usd.Prim) -> bool:
+    """A Scope (such as ``Looks``) that holds nothing but materials: shading data, not an entity."""
+    if str(prim.GetTypeName()) != "Scope" or not prim.GetChildren():
+        return False
+    return all(str(c.GetTypeName()) in _SKIPPED_TYPES or _only_shading(c) for c in prim.GetChildren())
+
+
 class _Reader:
-    def __init__(self, ctx: FileContext, stage: Usd.Stage, path: Path, strict: bool) -> None:
+    def __init__(self, ctx: FileContext, stage: Usd.Stage, path: Path, strict: bool, allow_outside: bool = False,
+                 preview_material: Callable[[PreviewSurface], MaterialData] | None = None) -> None:
         self.ctx = ctx
         self.stage = stage
         self.path = path
         self.strict = strict
+        self.allow_outside = allow_outside
+        self.preview_material = preview_material or default_preview_material
         self.entity_of: dict[str, uuid.UUID] = {}
+        self.notes: foreign.Notes = []
+        self.foreign = False
+        self.scene: Scene | None = None
+        self.foreign_materials: dict[str, tuple[str, str]] = {}  # material prim -> (engine name, st primvar)
+        self._textures: dict[str, str] = {}
 
     def scene_named(self, name: str | None) -> Scene:
         ctx, stage = self.ctx, self.stage
         root = stage.GetDefaultPrim()
-        if not root:
-            raise ctx.fail(None, None, "the file has no default prim (the scene root)")
-        version = read(ctx, root, "gandalf:version", "int", FORMAT_VERSION)
-        if version > FORMAT_VERSION:
-            raise ctx.fail(root, "gandalf:version", f"format {version} is newer than this gandalf ({FORMAT_VERSION})")
-        scene = Scene(name or read(ctx, root, "gandalf:sceneName", "string", self.path.stem))
+        self.foreign = not (root and authored(root, "gandalf:version"))
+        if not self.foreign:
+            version = read(ctx, root, "gandalf:version", "int", FORMAT_VERSION)
+            if version > FORMAT_VERSION:
+                raise ctx.fail(root, "gandalf:version",
+                               f"format {version} is newer than this gandalf ({FORMAT_VERSION})")
+            scene = Scene(name or read(ctx, root, "gandalf:sceneName", "string", self.path.stem))
+            tops = list(root.GetChildren())
+        else:  # another tool's file: every prim on the stage (outside gandalf's asset scope) is an entity
+            scene = Scene(name or self.path.stem)
+            tops = [p for p in stage.GetPseudoRoot().GetChildren() if str(p.GetPath()) != ASSETS]
+        self.scene = scene
         self.read_assets(scene)
         prims = []  # parents before children, in authored order; an entity's visible mesh prim is not an entity
-        it = iter(Usd.PrimRange(root))
-        next(it)
-        for prim in it:
-            if authored(prim, ENTITY_MESH_MARK):
-                it.PruneChildren()
-                continue
-            prims.append(prim)
+        for top in tops:
+            it = iter(Usd.PrimRange(top))
+            for prim in it:
+                if authored(prim, ENTITY_MESH_MARK) or str(prim.GetTypeName()) in _SKIPPED_TYPES or (
+                        self.foreign and _only_shading(prim)):
+                    it.PruneChildren()
+                    if str(prim.GetTypeName()) == "GeomSubset" and UsdShade.MaterialBindingAPI(prim).GetDirectBinding(
+                    ).GetMaterialPath():
+                        self.notes.append((str(prim.GetPath()), "a material bound to a GeomSubset (per-face "
+                                                                "materials) is not mapped: the mesh's own is used"))
+                    continue
+                prims.append(prim)
         for prim in prims:
             self.entity_of[str(prim.GetPath())] = scene.enroll_entity()
         for prim in prims:
             entity = self.entity_of[str(prim.GetPath())]
             for component in self.components(prim):
                 self.add(scene, entity, prim, component)
-        self.read_root_components(scene, root)
+        if not self.foreign:
+            self.read_root_components(scene, root)
+        if self.notes:
+            lines = "; ".join(f"<{p}>: {why}" for p, why in self.notes)
+            warnings.warn(f"{self.path}: not everything could be mapped: {lines}", USDSceneWarning, stacklevel=4)
         return scene
 
     def add(self, scene: Scene, entity: uuid.UUID, prim: Usd.Prim, component: Component) -> None:
@@ -131,11 +217,13 @@ class _Reader:
         name = read(ctx, prim, "gandalf:name", "string", None)
         if name is not None:
             out.append(InfoComponent(name, read(ctx, prim, "gandalf:tag", "string", "")))
+        elif self.foreign:
+            out.append(InfoComponent(prim.GetName()))
+        transform, resets = self.transform(prim)
         parent = prim.GetParent()
-        parent_entity = self.entity_of.get(str(parent.GetPath()))
+        parent_entity = None if resets else self.entity_of.get(str(parent.GetPath()))
         if parent_entity is not None or read(ctx, prim, "gandalf:link", "bool", False):
             out.append(LinkComponent(parent_entity))
-        transform = self.transform(prim)
         if transform is not None:
             out.append(transform)
         if prim.GetTypeName() == "Camera":
@@ -143,14 +231,126 @@ class _Reader:
         light = self.light(prim)
         if light is not None:
             out.append(light)
+        elif prim.HasAPI(UsdLux.LightAPI) or prim.IsA(UsdLux.BoundableLightBase) or prim.IsA(
+                UsdLux.NonboundableLightBase):
+            self.notes.append((str(prim.GetPath()), f"a {prim.GetTypeName()} has no engine light: left out"))
         mesh = read(ctx, prim, "gandalf:mesh", "string", None)
         if mesh is not None:
             out.append(self.guard(prim, "gandalf:mesh", lambda: MeshComponent(mesh)))
         material = read(ctx, prim, "gandalf:material", "string", None)
         if material is not None:
             out.append(self.guard(prim, "gandalf:material", lambda: MaterialComponent(material)))
+        if mesh is None and (prim.IsA(UsdGeom.Gprim) or prim.IsA(UsdGeom.PointInstancer)):
+            out.extend(self.foreign_geometry(prim))
+        elif mesh is None and self.foreign and str(prim.GetTypeName()) not in _PLAIN_TYPES and not prim.HasAPI(
+                UsdLux.LightAPI):
+            self.notes.append((str(prim.GetPath()), f"prim type '{prim.GetTypeName()}' has no engine mapping: "
+                                                    "loaded as an empty entity"))
         out.extend(self.registered(prim))
         return out
+
+    # --- other tools' geometry and materials ------------------------------------------------------------
+    def foreign_geometry(self, prim: Usd.Prim) -> list[Component]:
+        path = str(prim.GetPath())
+        scene = self.scene
+        imageable = UsdGeom.Imageable(prim)
+        if imageable.ComputeVisibility() == UsdGeom.Tokens.invisible:
+            self.notes.append((path, "invisible: not drawn"))
+            return []
+        purpose = imageable.ComputePurpose()
+        if purpose in (UsdGeom.Tokens.guide, UsdGeom.Tokens.proxy):
+            self.notes.append((path, f"purpose '{purpose}': not drawn"))
+            return []
+        material_prim, _ = UsdShade.MaterialBindingAPI(prim).ComputeBoundMaterial()
+        material_name, st_name = self.foreign_material(material_prim) if material_prim else (None, "st")
+        constant = None
+        try:
+            if prim.IsA(UsdGeom.Mesh):
+                data, constant = foreign.mesh_from_usd(UsdGeom.Mesh(prim), st_name, self.notes)
+            else:
+                data = foreign.gprim_mesh(prim, self.notes)
+                color = UsdGeom.Gprim(prim).GetDisplayColorPrimvar()
+                if color and color.HasAuthoredValue() and len(color.ComputeFlattened() or []):
+                    constant = np.array([*color.ComputeFlattened()[0], 1.0])
+                if data is None:
+                    self.notes.append((path, f"prim type '{prim.GetTypeName()}' is not drawn (no engine mapping)"))
+        except ResourceError as exc:
+            raise self.ctx.fail(prim, exc.field, exc.detail) from None
+        if data is None:
+            return []
+        scene.assets.mesh(path, data)
+        if material_name is None:
+            material_name = self.display_color_material(constant)
+        return [MeshComponent(path), MaterialComponent(material_name)]
+
+    def display_color_material(self, linear_rgba: np.ndarray | None) -> str:
+        """A material for geometry with no bound material: its constant displayColor, else 18% grey."""
+        rgba = np.array([0.18, 0.18, 0.18, 1.0]) if linear_rgba is None else np.asarray(linear_rgba, np.float64)
+        srgb = (*map(float, linear_to_srgb(np.clip(rgba[:3], 0.0, 1.0))), float(rgba[3]))
+        name = "displayColor(" + ", ".join(f"{c:.6g}" for c in srgb) + ")"
+        if name not in self.scene.assets.materials:
+            self.scene.assets.material(name, self.map_surface(PreviewSurface(name, srgb), name))
+        return name
+
+    def map_surface(self, surface: PreviewSurface, where: str) -> MaterialData:
+        try:
+            material = self.preview_material(surface)
+        except ResourceError as exc:
+            raise self.ctx.fail(where, exc.field, exc.detail) from None
+        if not isinstance(material, MaterialData):
+            raise self.ctx.fail(where, None, f"preview_material returned {type(material).__name__}, "
+                                             "expected MaterialData")
+        return material
+
+    def foreign_material(self, material: UsdShade.Material) -> tuple[str, str]:
+        path = str(material.GetPath())
+        if path in self.foreign_materials:
+            return self.foreign_materials[path]
+        if authored(material.GetPrim(), "inputs:gandalf:shader"):  # a gandalf material, referenced in
+            name, data = asset_prims.read_material(self.ctx, material.GetPrim())
+            name = path if name in self.scene.assets.materials else name
+            self.scene.assets.material(name, data)
+            self.foreign_materials[path] = (name, "st")
+            return name, "st"
+        surface, st_name = foreign.preview_surface(material, self.foreign_texture, self.notes)
+        self.scene.assets.material(path, self.map_surface(surface, path))
+        self.foreign_materials[path] = (path, st_name)
+        return path, st_name
+
+    def foreign_texture(self, shader: UsdShade.Shader, _file: str) -> str | None:
+        """Load a UsdUVTexture's file as an engine texture (named by its path in the scene's folder)."""
+        where = str(shader.GetPath())
+        asset = shader.GetInput("file").Get()
+        folder = self.path.parent.resolve()
+        if asset.resolvedPath:
+            file = Path(asset.resolvedPath)
+        else:
+            file = Path(asset.path) if Path(asset.path).is_absolute() else self.path.parent / asset.path
+        file = file.resolve()
+        if not self.allow_outside and not inside(folder, file):
+            raise self.ctx.fail(where, "inputs:file", f"the texture @{asset.path}@ ({file}) lies outside the scene's "
+                                                      f"folder {folder}: refused (allow_outside=True allows it)")
+        if not file.is_file():
+            raise self.ctx.fail(where, "inputs:file", f"the texture @{asset.path}@ is missing ({file})")
+        name = file.relative_to(folder).as_posix() if inside(folder, file) else str(file)
+        space = shader.GetInput("sourceColorSpace").Get() if shader.GetInput("sourceColorSpace") else None
+        wraps = {str(shader.GetInput(w).Get()) for w in ("wrapS", "wrapT") if shader.GetInput(w)
+                 and shader.GetInput(w).Get() is not None}
+        wrap = "clamp" if wraps == {"clamp"} else "mirror" if wraps == {"mirror"} else "repeat"
+        if len(wraps) > 1 or wraps - {"clamp", "mirror", "repeat", "useMetadata"}:
+            self.notes.append((where, f"wrap modes {sorted(wraps)}: 'repeat' is used"))
+        key = f"{name}|{space}|{wrap}"
+        if key not in self._textures:
+            texture_name = name if name not in self.scene.assets.textures else key
+            try:
+                texture = TextureData.from_file(file, srgb=space != "raw", wrap=wrap, name=texture_name)
+            except ResourceError as exc:
+                raise self.ctx.fail(where, "inputs:file", exc.detail) from None
+            except ValueError as exc:
+                raise self.ctx.fail(where, "inputs:file", str(exc)) from None
+            self.scene.assets.texture(texture_name, texture)
+            self._textures[key] = texture_name
+        return self._textures[key]
 
     def guard(self, prim: Usd.Prim, attribute: str, build: Any) -> Any:
         """``build()``, with a component constructor's ValueError/TypeError turned into a USDSceneError."""
@@ -161,13 +361,16 @@ class _Reader:
         except (ValueError, TypeError) as exc:
             raise self.ctx.fail(prim, attribute, str(exc)) from None
 
-    def transform(self, prim: Usd.Prim) -> TransformComponent | None:
+    def transform(self, prim: Usd.Prim) -> tuple[TransformComponent | None, bool]:
+        """The prim's transform (None: it has none) and whether it resets its parents' transforms."""
         ctx = self.ctx
         order = read(ctx, prim, "xformOpOrder", "token[]", None)
         if order is None or len(order) == 0:
-            return None
+            if self.foreign and not authored(prim, "gandalf:name"):
+                return TransformComponent(), False  # an identity, so children compose through it
+            return None, False
         if list(order) != _XFORM_OPS:
-            raise ctx.fail(prim, "xformOpOrder", f"expected {_XFORM_OPS}, got {list(order)}")
+            return self.any_transform(prim), UsdGeom.Xformable(prim).GetResetXformStack()
         t = read_floats(ctx, prim, "xformOp:translate", ("double3",), 3)
         q = read(ctx, prim, "xformOp:orient", "quatd")
         quat = np.array([q.GetReal(), *q.GetImaginary()], dtype=np.float64)  # USD real-first = gandalf (w, x, y, z)
@@ -176,6 +379,26 @@ class _Reader:
         s = read_floats(ctx, prim, "xformOp:scale", ("double3",), 3)
         component = TransformComponent(t, scale=s)
         component.quaternion = quat  # exactly as saved (the constructor would renormalise)
+        return component, False
+
+    def any_transform(self, prim: Usd.Prim) -> TransformComponent:
+        """Any xform op stack (rotations, matrix ops, pivots ...), composed by USD and split into T, R, S."""
+        xformable = UsdGeom.Xformable(prim)
+        if not xformable:
+            raise self.ctx.fail(prim, "xformOpOrder", f"a {prim.GetTypeName()} prim cannot carry xform ops")
+        try:
+            matrix, _ = foreign.local_matrix(xformable, self.notes)
+        except Exception as exc:  # an op of the wrong type, an op named in the order but missing
+            raise self.ctx.fail(prim, "xformOpOrder", f"cannot compose the xform ops: {str(exc).strip()}") from None
+        t, q, s, shear = foreign.decompose(matrix)
+        if not (np.isfinite(t).all() and np.isfinite(q).all() and np.isfinite(s).all()):
+            raise self.ctx.fail(prim, "xformOpOrder", "the composed transform is not finite")
+        if shear > foreign.SHEAR_TOLERANCE:
+            self.notes.append((str(prim.GetPath()), f"the transform has a shear (|R^T R - I| = {shear:.3g}) that "
+                                                    "translation/rotation/scale cannot hold: the nearest rotation "
+                                                    "is used"))
+        component = TransformComponent(t, scale=s)
+        component.quaternion = q
         return component
 
     def camera(self, prim: Usd.Prim) -> CameraComponent:
