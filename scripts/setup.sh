@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 # --8<-- [start:packages]
-APT_PACKAGES=(libegl1 libegl-mesa0 libgl1 libgl1-mesa-dri mesa-vulkan-drivers libvulkan1 xvfb xauth x11-utils)
+APT_PACKAGES=(libegl1 libegl-mesa0 libgl1 libgl1-mesa-dri mesa-vulkan-drivers libvulkan1 xvfb xauth x11-utils chromium)
 # --8<-- [end:packages]
 if command -v dpkg-query >/dev/null 2>&1; then
     missing=()
