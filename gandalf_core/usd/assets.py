@@ -226,13 +226,18 @@ def read_material(ctx: FileContext, prim: Usd.Prim) -> tuple[str, MaterialData]:
 def texture_files(file_stem: str, texture: TextureData | CubeTextureData) -> list[str]:
     """The PNG file names (inside the textures folder) that hold ``texture``."""
     if isinstance(texture, CubeTextureData):
-        return [f"{file_stem}_{suffix}.png" for suffix in CUBE_FACE_SUFFIXES]
+        files = [f"{file_stem}_{suffix}.png" for suffix in CUBE_FACE_SUFFIXES]
+        for k in range(1, len(texture.levels or ()) + 1):  # explicit mip levels: 6 files per level
+            files += [f"{file_stem}_mip{k}_{suffix}.png" for suffix in CUBE_FACE_SUFFIXES]
+        return files
     return [f"{file_stem}.png"]
 
 
 def texture_images(texture: TextureData | CubeTextureData) -> list[np.ndarray]:
     """The images to write, in the order of :func:`texture_files`."""
-    return list(texture.faces) if isinstance(texture, CubeTextureData) else [texture.pixels]
+    if isinstance(texture, CubeTextureData):
+        return [*texture.faces, *(face for level in (texture.levels or ()) for face in level)]
+    return [texture.pixels]
 
 
 def write_texture(stage: Usd.Stage, path: str, name: str, texture: TextureData | CubeTextureData,
@@ -242,7 +247,11 @@ def write_texture(stage: Usd.Stage, path: str, name: str, texture: TextureData |
     write(prim, "gandalf:name", T.String, name)
     write(prim, "gandalf:textureName", T.String, texture.name)
     write(prim, "gandalf:kind", T.String, "cube" if cube else "2d")
-    write(prim, "gandalf:files", T.AssetArray, Sdf.AssetPathArray([Sdf.AssetPath(f) for f in relative_files]))
+    write(prim, "gandalf:files", T.AssetArray, Sdf.AssetPathArray([Sdf.AssetPath(f) for f in relative_files[:6]
+                                                                   if cube] or [Sdf.AssetPath(relative_files[0])]))
+    if cube and len(relative_files) > 6:  # explicit mip levels below level 0, six faces each
+        write(prim, "gandalf:levelFiles", T.AssetArray,
+              Sdf.AssetPathArray([Sdf.AssetPath(f) for f in relative_files[6:]]))
     write(prim, "gandalf:srgb", T.Bool, texture.srgb)
     write(prim, "gandalf:filter", T.String, texture.filter)
     write(prim, "gandalf:mipmaps", T.Bool, texture.mipmaps)
@@ -271,6 +280,23 @@ def read_texture(ctx: FileContext, prim: Usd.Prim, folder: Path) -> tuple[str, T
            else {}),
         "name": read(ctx, prim, "gandalf:textureName", "string", name),
     }
+    if kind == "cube" and authored(prim, "gandalf:levelFiles"):
+        level_files = [Path(a.path) for a in read(ctx, prim, "gandalf:levelFiles", "asset[]")]
+        if len(level_files) % 6:
+            raise ctx.fail(prim, "gandalf:levelFiles", f"needs 6 files per mip level, got {len(level_files)}")
+        images = []
+        for f in level_files:
+            f = f if f.is_absolute() else folder / f
+            if f.suffix.lower() != ".png" or not f.is_file():
+                raise ctx.fail(prim, "gandalf:levelFiles", f"texture file {str(f)!r} is missing or not a .png")
+            try:
+                images.append(TextureData.from_file(f, mipmaps=False).pixels)
+            except ResourceError as exc:
+                raise ctx.fail(prim, "gandalf:levelFiles", exc.detail) from None
+        try:
+            settings["levels"] = tuple(np.stack(images[i:i + 6]) for i in range(0, len(images), 6))
+        except ValueError:
+            raise ctx.fail(prim, "gandalf:levelFiles", "the six faces of a mip level differ in size") from None
     try:
         if kind == "cube":
             return name, CubeTextureData.from_files(paths, **settings)

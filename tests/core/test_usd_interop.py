@@ -175,3 +175,22 @@ def test_old_files_without_mesh_prims_still_load(tmp_path):
     loaded = load_scene(path, strict=False)
     assert len(loaded) == len(scene)
     assert np.array_equal(sorted(loaded.assets.meshes), sorted(scene.assets.meshes))
+
+
+def test_cube_texture_mip_levels_round_trip(tmp_path):
+    """Explicit cube mip levels (a prefiltered environment) are saved as 6 PNGs per level and come back exactly."""
+    from gandalf_core.resources import CubeTextureData, sky_cube
+
+    sky = sky_cube(16)
+    rng = np.random.default_rng(2)
+    levels = tuple(rng.integers(0, 256, (6, 16 >> k, 16 >> k, 4), dtype=np.uint8) for k in (1, 2, 3, 4))
+    scene = Scene("levels")
+    scene.assets.texture("prefiltered", CubeTextureData(sky.faces, levels=levels, name="prefiltered"))
+    scene.assets.texture("plain", sky)
+    path = save_scene(scene, tmp_path / "l.usda")
+    loaded = load_scene(path).assets.textures
+    assert len(loaded["prefiltered"].levels) == 4
+    for k, (a, b) in enumerate(zip(levels, loaded["prefiltered"].levels), start=1):
+        assert np.array_equal(a, b), f"mip level {k} (must be exact)"
+    assert loaded["plain"].levels is None
+    assert len(list((tmp_path / "l_usda_textures").glob("prefiltered_mip*_*.png"))) == 24
