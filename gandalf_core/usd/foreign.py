@@ -150,12 +150,14 @@ def mesh_from_usd(mesh: UsdGeom.Mesh, st_name: str, notes: Notes) -> tuple[MeshD
     if np.any(counts < 3):
         notes.append((path, f"{int(np.sum(counts < 3))} face(s) with fewer than 3 vertices left out"))
     # Fan triangulation, in face-corner numbers: (first, first + k, first + k + 1).
-    tri_corners = [np.stack([np.full(c - 2, f0), f0 + np.arange(1, c - 1), f0 + np.arange(2, c)], axis=1)
-                   for f0, c, k in zip(first_corner, counts, keep) if k and c >= 3]
-    if not tri_corners:
+    per_face = np.where(keep, np.maximum(counts - 2, 0), 0)
+    if not per_face.sum():
         notes.append((path, "no drawable faces"))
         return None, None
-    tri_corners = np.concatenate(tri_corners)
+    face_ids = np.repeat(np.arange(n_faces), per_face)
+    k = np.arange(int(per_face.sum())) - np.repeat(np.cumsum(per_face) - per_face, per_face)
+    f0 = first_corner[face_ids]
+    tri_corners = np.stack([f0, f0 + k + 1, f0 + k + 2], axis=1)
     if mesh.GetOrientationAttr().Get() == UsdGeom.Tokens.leftHanded:
         tri_corners = tri_corners[:, [0, 2, 1]]
 
@@ -218,8 +220,6 @@ def mesh_from_usd(mesh: UsdGeom.Mesh, st_name: str, notes: Notes) -> tuple[MeshD
         normals = per_vertex(values["normal"])
     else:
         normals = smooth_normals(points, indices, tri_corners, face_of_corner, keep)[point_of_vertex]
-    if mesh.GetOrientationAttr().Get() == UsdGeom.Tokens.leftHanded and "normal" in values:
-        pass  # authored normals point outwards already; the winding was flipped above
     length = np.linalg.norm(normals, axis=1, keepdims=True)
     fields["normals"] = np.where(length > 1e-20, normals / np.maximum(length, 1e-300), [0.0, 1.0, 0.0])
     if "uv" in values:

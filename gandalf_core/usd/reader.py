@@ -217,7 +217,7 @@ class _Reader:
         name = read(ctx, prim, "gandalf:name", "string", None)
         if name is not None:
             out.append(InfoComponent(name, read(ctx, prim, "gandalf:tag", "string", "")))
-        elif self.foreign:
+        elif self.foreign or prim.IsA(UsdGeom.Gprim):  # another tool's prim: named after it
             out.append(InfoComponent(prim.GetName()))
         transform, resets = self.transform(prim)
         parent = prim.GetParent()
@@ -366,7 +366,7 @@ class _Reader:
         ctx = self.ctx
         order = read(ctx, prim, "xformOpOrder", "token[]", None)
         if order is None or len(order) == 0:
-            if self.foreign and not authored(prim, "gandalf:name"):
+            if (self.foreign or prim.IsA(UsdGeom.Gprim)) and not authored(prim, "gandalf:name"):
                 return TransformComponent(), False  # an identity, so children compose through it
             return None, False
         if list(order) != _XFORM_OPS:

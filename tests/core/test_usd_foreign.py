@@ -498,3 +498,43 @@ def test_pxr_scene_renders_like_the_same_scene_built_by_hand(tmp_path, backend):
     value = psnr(by_hand[..., :3], got[..., :3])
     assert value >= 40.0, (f"{backend}: the pxr-built scene differs from the one built by hand: PSNR {value:.1f} dB "
                            f"< 40 dB, largest difference {np.abs(by_hand.astype(int) - got).max()}")
+
+
+def test_a_gprim_added_to_a_gandalf_file_by_another_tool_loads(tmp_path):
+    from gandalf_core.usd import save_scene
+
+    scene = Scene("mine")
+    scene.create_entity(InfoComponent("camera"), TransformComponent((0, 0, 5)), CameraComponent())
+    path = save_scene(scene, tmp_path / "mine.usda")
+    stage = Usd.Stage.Open(str(path))
+    ball = UsdGeom.Sphere.Define(stage, "/Scene/added_ball")
+    ball.AddTranslateOp().Set(Gf.Vec3d(1, 2, 3))
+    stage.GetRootLayer().Save()
+    loaded = load(path)
+    entity = names(loaded)["added_ball"]
+    assert loaded.get_component(entity, MeshComponent).mesh == "/Scene/added_ball"
+    np.testing.assert_allclose(loaded.get_component(entity, TransformComponent).translation, (1, 2, 3))
+    assert loaded.get_component(entity, MaterialComponent).material in loaded.assets.materials
+
+
+def test_a_big_plain_mesh_loads_quickly(tmp_path):
+    import time
+
+    n = 200  # a 200 x 200 quad grid: 40k faces
+    stage = new_stage(tmp_path / "big.usda")
+    mesh = UsdGeom.Mesh.Define(stage, "/World/grid")
+    u, v = np.meshgrid(np.arange(n + 1), np.arange(n + 1))
+    mesh.CreatePointsAttr(Vt.Vec3fArray.FromNumpy(np.stack([u, np.zeros_like(u), v], -1).reshape(-1, 3)
+                                                  .astype(np.float32)))
+    i = (np.arange(n)[:, None] * (n + 1) + np.arange(n)[None, :]).reshape(-1)
+    quads = np.stack([i, i + n + 1, i + n + 2, i + 1], 1).astype(np.int32)
+    mesh.CreateFaceVertexCountsAttr(Vt.IntArray.FromNumpy(np.full(len(quads), 4, np.int32)))
+    mesh.CreateFaceVertexIndicesAttr(Vt.IntArray.FromNumpy(quads.reshape(-1)))
+    mesh.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
+    stage.GetRootLayer().Save()
+    start = time.perf_counter()
+    data = load(tmp_path / "big.usda").assets.meshes["/World/grid"]
+    took = time.perf_counter() - start
+    assert len(data.triangles()) == 2 * n * n
+    np.testing.assert_allclose(data.normals, np.tile([0, 1, 0], (len(data.normals), 1)), atol=1e-6)
+    assert took < 5.0, f"40k quads took {took:.2f} s"
