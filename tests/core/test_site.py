@@ -7,8 +7,9 @@ opened at 1280 x 800 and checked for:
 * links and images: every same-site link points to a page or file the build wrote, and its ``#anchor`` to an id on
   that page; every ``<img>`` has loaded (``naturalWidth > 0``);
 * maths: every ``arithmatex`` element (``$...$`` / ``$$...$$`` in the Markdown) holds a KaTeX rendering;
-* width: no code block (``pre`` or its ``code``) is wider than its box (``scrollWidth > clientWidth``), with the
-  tabs of tabbed blocks and ``<details>`` all opened so hidden blocks are measured too.
+* width: no code block (``pre`` or its ``code``) and no display formula is wider than its box
+  (``scrollWidth > clientWidth``), with the tabs of tabbed blocks and ``<details>`` all opened so hidden blocks are
+  measured too.
 
 The browser is Debian's ``chromium`` (``/usr/bin/chromium``, installed by ``scripts/setup.sh``), not a download of
 playwright's own. Without it the test is skipped, saying so; CI installs it, so there it runs.
@@ -43,7 +44,7 @@ _MEASURE = """
   document.head.appendChild(style);
   document.querySelectorAll("details").forEach((d) => { d.open = true; });
   const out = [];
-  document.querySelectorAll("pre, pre > code").forEach((el) => {
+  document.querySelectorAll("pre, pre > code, div.arithmatex").forEach((el) => {
     if (el.clientWidth > 0 && el.scrollWidth > el.clientWidth + 1) {
       const text = (el.textContent || "").trim().split("\\n")[0].slice(0, 80);
       out.push({tag: el.tagName, scroll: el.scrollWidth, client: el.clientWidth, first_line: text});
@@ -196,3 +197,23 @@ def test_site_test_finds_the_browser_set_up_installs() -> None:
     assert "chromium" in setup, "scripts/setup.sh must install Debian's chromium for tests/core/test_site.py"
     if not Path(CHROMIUM).exists() and shutil.which("chromium") is None:
         pytest.skip(f"no Chromium at {CHROMIUM} on this machine")
+
+
+def test_make_diagrams_helps_refuses_to_overwrite_and_draws(tmp_path: Path) -> None:
+    """scripts/make_diagrams.py: --help only prints help; it keeps existing files unless --force; it draws all four."""
+    pytest.importorskip("matplotlib", reason="the diagrams need the dev extra (matplotlib)")
+    script = [sys.executable, str(ROOT / "scripts" / "make_diagrams.py")]
+    helped = subprocess.run([*script, "--help", "--out", str(tmp_path)], capture_output=True, text=True, timeout=60)
+    assert helped.returncode == 0 and "usage:" in helped.stdout, helped.stderr
+    assert not list(tmp_path.iterdir()), "--help must not write anything"
+    drawn = subprocess.run([*script, "--out", str(tmp_path)], capture_output=True, text=True, timeout=120)
+    assert drawn.returncode == 0, drawn.stderr
+    names = sorted(p.name for p in tmp_path.glob("diagram_*.png"))
+    assert names == ["diagram_ecs_frame.png", "diagram_pipeline.png", "diagram_sampling.png", "diagram_spaces.png"]
+    before = {p: p.stat().st_mtime_ns for p in tmp_path.iterdir()}
+    again = subprocess.run([*script, "--out", str(tmp_path)], capture_output=True, text=True, timeout=60)
+    assert again.returncode == 1 and "--force" in again.stderr, (again.returncode, again.stderr)
+    assert before == {p: p.stat().st_mtime_ns for p in tmp_path.iterdir()}, "files changed without --force"
+    for name in names:  # every diagram the script draws is on a page of the site
+        pages = [p for p in (ROOT / "docs").rglob("*.md") if name in p.read_text()]
+        assert pages, f"{name} is on no page of docs/"
