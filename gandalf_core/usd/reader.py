@@ -7,6 +7,7 @@ a problem anywhere raises :class:`USDSceneError` before the caller sees any of i
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import uuid
 import warnings
@@ -149,6 +150,7 @@ class _Reader:
         self.scene: Scene | None = None
         self.foreign_materials: dict[str, tuple[str, str]] = {}  # material prim -> (engine name, st primvar)
         self._textures: dict[str, str] = {}
+        self._layer_assets: dict[str, object] = {}  # referenced gandalf files' assets, by layer
 
     def scene_named(self, name: str | None) -> Scene:
         ctx, stage = self.ctx, self.stage
@@ -235,9 +237,13 @@ class _Reader:
                 UsdLux.NonboundableLightBase):
             self.notes.append((str(prim.GetPath()), f"a {prim.GetTypeName()} has no engine light: left out"))
         mesh = read(ctx, prim, "gandalf:mesh", "string", None)
+        material = read(ctx, prim, "gandalf:material", "string", None)
+        if (mesh is not None and mesh not in self.scene.assets.meshes) or (
+                material is not None and material not in self.scene.assets.materials):
+            # An entity of a gandalf file referenced into this one: its assets are in that file's /Assets.
+            mesh, material = self.referenced_assets(prim, mesh, material)
         if mesh is not None:
             out.append(self.guard(prim, "gandalf:mesh", lambda: MeshComponent(mesh)))
-        material = read(ctx, prim, "gandalf:material", "string", None)
         if material is not None:
             out.append(self.guard(prim, "gandalf:material", lambda: MaterialComponent(material)))
         if mesh is None and (prim.IsA(UsdGeom.Gprim) or prim.IsA(UsdGeom.PointInstancer)):
@@ -283,6 +289,46 @@ class _Reader:
             material_name = self.display_color_material(constant)
         return [MeshComponent(path), MaterialComponent(material_name)]
 
+    def referenced_assets(self, prim: Usd.Prim, mesh: str | None, material: str | None) -> tuple[str | None,
+                                                                                                   str | None]:
+        """The engine names of a referenced gandalf entity's mesh and material, read from its own file's /Assets.
+
+        The assets are registered as ``<file relative to the scene folder>:<name>`` (textures too); names that
+        the referenced file does not hold either are returned unchanged (the renderer will name them).
+        """
+        attr = prim.GetAttribute("gandalf:mesh" if mesh is not None else "gandalf:material")
+        stack = attr.GetPropertyStack(Usd.TimeCode.Default())
+        layer = stack[0].layer if stack else None
+        if layer is None or layer.anonymous or not layer.realPath:
+            return mesh, material
+        source = Path(layer.realPath)
+        if source.resolve() == self.path.resolve():
+            return mesh, material
+        assets = self._layer_assets.get(layer.identifier)
+        if assets is None:
+            reader = _Reader(FileContext(str(source)), Usd.Stage.Open(layer), source, self.strict,
+                             self.allow_outside, self.preview_material)
+            holder = Scene("referenced")
+            reader.read_assets(holder)
+            assets = self._layer_assets[layer.identifier] = holder.assets
+        folder = self.path.parent.resolve()
+        prefix = (source.resolve().relative_to(folder).as_posix() if inside(folder, source) else str(source)) + ":"
+        table = self.scene.assets
+        if mesh is not None and mesh in assets.meshes:
+            if prefix + mesh not in table.meshes:
+                table.mesh(prefix + mesh, assets.meshes[mesh])
+            mesh = prefix + mesh
+        if material is not None and material in assets.materials:
+            data = assets.materials[material]
+            for texture in data.textures:
+                if texture in assets.textures and prefix + texture not in table.textures:
+                    table.texture(prefix + texture, assets.textures[texture])
+            if prefix + material not in table.materials:
+                renamed = [prefix + t if t in assets.textures else t for t in data.textures]
+                table.material(prefix + material, dataclasses.replace(data, textures=renamed))
+            material = prefix + material
+        return mesh, material
+
     def display_color_material(self, linear_rgba: np.ndarray | None) -> str:
         """A material for geometry with no bound material: its constant displayColor, else 18% grey."""
         rgba = np.array([0.18, 0.18, 0.18, 1.0]) if linear_rgba is None else np.asarray(linear_rgba, np.float64)
@@ -308,10 +354,11 @@ class _Reader:
             return self.foreign_materials[path]
         if authored(material.GetPrim(), "inputs:gandalf:shader"):  # a gandalf material, referenced in
             name, data = asset_prims.read_material(self.ctx, material.GetPrim())
-            name = path if name in self.scene.assets.materials else name
-            self.scene.assets.material(name, data)
-            self.foreign_materials[path] = (name, "st")
-            return name, "st"
+            if all(t in self.scene.assets.textures for t in data.textures):  # else: through its preview network
+                name = path if name in self.scene.assets.materials else name
+                self.scene.assets.material(name, data)
+                self.foreign_materials[path] = (name, "st")
+                return name, "st"
         surface, st_name = foreign.preview_surface(material, self.foreign_texture, self.notes)
         self.scene.assets.material(path, self.map_surface(surface, path))
         self.foreign_materials[path] = (path, st_name)

@@ -538,3 +538,39 @@ def test_a_big_plain_mesh_loads_quickly(tmp_path):
     assert len(data.triangles()) == 2 * n * n
     np.testing.assert_allclose(data.normals, np.tile([0, 1, 0], (len(data.normals), 1)), atol=1e-6)
     assert took < 5.0, f"40k quads took {took:.2f} s"
+
+
+def test_a_gandalf_file_referenced_into_another_stage(tmp_path):
+    """A prop saved by gandalf, referenced by a layout file: its meshes, materials and textures come back exactly,
+    read from the prop file's own /Assets (USD does not carry prims outside the referenced default prim)."""
+    from gandalf_core.usd import save_scene
+
+    (tmp_path / "props").mkdir()
+    prop = Scene("prop")
+    prop.assets.mesh("cube", cube())
+    prop.assets.texture("checker", checkerboard(16, 4))
+    prop.assets.material("plain", MaterialData("lit", color=(0.2, 0.4, 0.6)))
+    prop.assets.material("textured", MaterialData("unlit", ["checker"], color=(1.0, 0.5, 0.25)))
+    prop.create_entity(InfoComponent("a"), TransformComponent((1, 0, 0)), MeshComponent("cube"),
+                       MaterialComponent("plain"))
+    prop.create_entity(InfoComponent("b"), TransformComponent((-1, 0, 0)), MeshComponent("cube"),
+                       MaterialComponent("textured"))
+    save_scene(prop, tmp_path / "props" / "prop.usda")
+    stage = new_stage(tmp_path / "layout.usda")
+    placed = UsdGeom.Xform.Define(stage, "/World/prop")
+    placed.AddTranslateOp().Set(Gf.Vec3d(0, 0, -3))
+    placed.GetPrim().GetReferences().AddReference("./props/prop.usda")
+    stage.GetRootLayer().Save()
+    scene = load(tmp_path / "layout.usda")
+    found = names(scene)
+    a, b = found["a"], found["b"]
+    mesh = scene.assets.meshes[scene.get_component(a, MeshComponent).mesh]
+    assert np.array_equal(mesh.positions, cube().positions) and np.array_equal(mesh.uvs, cube().uvs)
+    assert scene.get_component(a, MeshComponent).mesh == "props/prop.usda:cube"
+    plain = scene.assets.materials[scene.get_component(a, MaterialComponent).material]
+    assert plain.shader == "lit" and plain.color == (0.2, 0.4, 0.6, 1.0)
+    textured = scene.assets.materials[scene.get_component(b, MaterialComponent).material]
+    assert textured.shader == "unlit" and textured.textures == ("props/prop.usda:checker",)
+    assert textured.color == (1.0, 0.5, 0.25, 1.0)
+    assert np.array_equal(scene.assets.textures[textured.textures[0]].pixels, checkerboard(16, 4).pixels)
+    np.testing.assert_allclose(worlds(scene)["a"][:3, 3], (1, 0, -3), atol=1e-12)
