@@ -150,6 +150,7 @@ class _Reader:
         self.scene: Scene | None = None
         self.foreign_materials: dict[str, tuple[str, str]] = {}  # material prim -> (engine name, st primvar)
         self._textures: dict[str, str] = {}
+        self._cameras_seen = 0
         self._layer_assets: dict[str, object] = {}  # referenced gandalf files' assets, by layer
 
     def scene_named(self, name: str | None) -> Scene:
@@ -471,9 +472,15 @@ class _Reader:
             projection=str(projection),
             height=read_float(ctx, prim, "gandalf:height", aperture / 10.0),
             aspect=read_float(ctx, prim, "gandalf:aspect", None),
-            primary=read(ctx, prim, "gandalf:primary", "bool", True),
+            # Another tool's file: its first camera is the primary one.
+            primary=read(ctx, prim, "gandalf:primary", "bool", self._first_camera()),
             reverse_z=read(ctx, prim, "gandalf:reverseZ", "bool", False),
         )
+
+    def _first_camera(self) -> bool:
+        first = not self._cameras_seen
+        self._cameras_seen += 1
+        return first
 
     def light(self, prim: Usd.Prim) -> LightComponent | None:
         ctx = self.ctx
@@ -489,7 +496,8 @@ class _Reader:
             if authored(prim, "gandalf:intensity"):
                 intensity = read_float(ctx, prim, "gandalf:intensity")
             else:
-                intensity = read_float(ctx, prim, "inputs:intensity", 1.0)
+                intensity = read_float(ctx, prim, "inputs:intensity", 1.0) * 2.0 ** read_float(
+                    ctx, prim, "inputs:exposure", 0.0)  # UsdLux: intensity x 2^exposure
             return LightComponent(
                 kind, color, intensity, read_float(ctx, prim, "gandalf:range", 0.0),
                 cast_shadows=read(ctx, prim, "gandalf:castShadows", "bool", False),

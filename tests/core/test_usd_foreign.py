@@ -574,3 +574,24 @@ def test_a_gandalf_file_referenced_into_another_stage(tmp_path):
     assert textured.color == (1.0, 0.5, 0.25, 1.0)
     assert np.array_equal(scene.assets.textures[textured.textures[0]].pixels, checkerboard(16, 4).pixels)
     np.testing.assert_allclose(worlds(scene)["a"][:3, 3], (1, 0, -3), atol=1e-12)
+
+
+def test_cameras_and_lights_of_another_tool(tmp_path):
+    stage = new_stage(tmp_path / "c.usda")
+    for name in ("main", "side"):
+        camera = UsdGeom.Camera.Define(stage, f"/World/{name}")
+        camera.CreateFocalLengthAttr(24.0)
+        camera.CreateVerticalApertureAttr(24.0)
+    light = UsdLux.SphereLight.Define(stage, "/World/bulb")
+    light.CreateIntensityAttr(3.0)
+    light.CreateExposureAttr(2.0)
+    light.CreateColorAttr(Gf.Vec3f(1.0, 0.5, 0.0))
+    stage.GetRootLayer().Save()
+    scene = load(tmp_path / "c.usda")
+    found = names(scene)
+    main, side = (scene.get_component(found[n], CameraComponent) for n in ("main", "side"))
+    assert main.primary and not side.primary, "the first camera of another tool's file is the primary one"
+    assert main.fov == pytest.approx(2 * math.degrees(math.atan(0.5)), abs=1e-9)
+    bulb = scene.get_component(found["bulb"], LightComponent)
+    assert bulb.kind == "point" and bulb.intensity == pytest.approx(12.0), "intensity x 2^exposure"
+    np.testing.assert_allclose(bulb.color, linear_to_srgb(np.array([1.0, 0.5, 0.0])), atol=1e-6)
