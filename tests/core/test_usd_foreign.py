@@ -595,3 +595,26 @@ def test_cameras_and_lights_of_another_tool(tmp_path):
     bulb = scene.get_component(found["bulb"], LightComponent)
     assert bulb.kind == "point" and bulb.intensity == pytest.approx(12.0), "intensity x 2^exposure"
     np.testing.assert_allclose(bulb.color, linear_to_srgb(np.array([1.0, 0.5, 0.0])), atol=1e-6)
+
+
+def test_default_material_mapping_draws_with_step06_shaders_in_both_apis(tmp_path):
+    """Without ``preview_material`` the preview surfaces become step 06's ``phong`` / ``phong_textured``; the
+    loaded scene draws with step 06's shaders and both APIs agree (PSNR >= 35 dB)."""
+    from gandalf_core.app.cli import load_impl
+    from step06_lighting.shaders import register_shaders
+
+    path = pxr_scene(tmp_path)
+    pictures = {}
+    for backend in ("opengl", "webgpu"):
+        scene = load_scene(path)
+        shaders = {m.shader for m in scene.assets.materials.values()}
+        assert shaders == {"phong", "phong_textured"}, shaders
+        with Application(backend, W, H, headless=True, fixed_dt=1 / 60) as app:
+            register_shaders(app, load_impl("step06_lighting"))
+            app.add_scene(scene)
+            app.run(frames=2)
+            pictures[backend] = app.capture()
+    colours = len(np.unique(pictures["opengl"][..., :3].reshape(-1, 3), axis=0))
+    assert colours > 20, f"the scene draws something ({colours} colours)"
+    value = psnr(pictures["opengl"][..., :3], pictures["webgpu"][..., :3])
+    assert value >= 35.0, f"OpenGL and WebGPU differ: PSNR {value:.1f} dB < 35 dB"
