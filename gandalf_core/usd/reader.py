@@ -171,8 +171,15 @@ class _Reader:
         self.read_assets(scene)
         prims = []  # parents before children, in authored order; an entity's visible mesh prim is not an entity
         for top in tops:
-            it = iter(Usd.PrimRange(top))
+            # Instance proxies too: the prims under an instanceable reference are part of the picture.
+            it = iter(Usd.PrimRange(top, Usd.TraverseInstanceProxies(Usd.PrimDefaultPredicate)))
             for prim in it:
+                if prim.IsA(UsdGeom.PointInstancer):
+                    it.PruneChildren()  # its prototypes are drawn only through it
+                    self.notes.append((str(prim.GetPath()), "a PointInstancer: its instances and prototypes are "
+                                                            "not drawn"))
+                    prims.append(prim)
+                    continue
                 if authored(prim, ENTITY_MESH_MARK) or str(prim.GetTypeName()) in _SKIPPED_TYPES or (
                         self.foreign and _only_shading(prim)):
                     it.PruneChildren()
@@ -247,10 +254,10 @@ class _Reader:
             out.append(self.guard(prim, "gandalf:mesh", lambda: MeshComponent(mesh)))
         if material is not None:
             out.append(self.guard(prim, "gandalf:material", lambda: MaterialComponent(material)))
-        if mesh is None and (prim.IsA(UsdGeom.Gprim) or prim.IsA(UsdGeom.PointInstancer)):
+        if mesh is None and prim.IsA(UsdGeom.Gprim):
             out.extend(self.foreign_geometry(prim))
         elif mesh is None and self.foreign and str(prim.GetTypeName()) not in _PLAIN_TYPES and not prim.HasAPI(
-                UsdLux.LightAPI):
+                UsdLux.LightAPI) and not prim.IsA(UsdGeom.PointInstancer):
             self.notes.append((str(prim.GetPath()), f"prim type '{prim.GetTypeName()}' has no engine mapping: "
                                                     "loaded as an empty entity"))
         out.extend(self.registered(prim))

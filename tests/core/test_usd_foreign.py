@@ -618,3 +618,25 @@ def test_default_material_mapping_draws_with_step06_shaders_in_both_apis(tmp_pat
     assert colours > 20, f"the scene draws something ({colours} colours)"
     value = psnr(pictures["opengl"][..., :3], pictures["webgpu"][..., :3])
     assert value >= 35.0, f"OpenGL and WebGPU differ: PSNR {value:.1f} dB < 35 dB"
+
+
+def test_instanceable_references_and_point_instancers(tmp_path):
+    write_part(tmp_path)
+    stage = new_stage(tmp_path / "i.usda")
+    for k in range(2):
+        copy = UsdGeom.Xform.Define(stage, f"/World/copy{k}")
+        copy.AddTranslateOp().Set(Gf.Vec3d(3.0 * k, 0, 0))
+        copy.GetPrim().GetReferences().AddReference("./part.usda")
+        copy.GetPrim().SetInstanceable(True)
+    instancer = UsdGeom.PointInstancer.Define(stage, "/World/scatter")
+    UsdGeom.Sphere.Define(stage, "/World/scatter/prototypes/ball")
+    instancer.CreatePrototypesRel().SetTargets(["/World/scatter/prototypes/ball"])
+    instancer.CreateProtoIndicesAttr([0, 0])
+    instancer.CreatePositionsAttr([(0, 0, 0), (1, 0, 0)])
+    stage.GetRootLayer().Save()
+    with pytest.warns(USDSceneWarning, match=r"</World/scatter>: a PointInstancer"):
+        scene = load(tmp_path / "i.usda")
+    assert {"/World/copy0/box", "/World/copy1/box"} <= set(scene.assets.meshes), "instance proxies are drawn"
+    assert not any(m.startswith("/World/scatter/") for m in scene.assets.meshes), "prototypes are not drawn alone"
+    matrices = worlds(scene)
+    np.testing.assert_allclose([matrices[n][0, 3] for n in ("copy0", "copy1")], [0.0, 3.0])
