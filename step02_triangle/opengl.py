@@ -6,26 +6,11 @@ it reads (locations 0 and 4), and binds the mesh's interleaved buffer to them wi
 
 from __future__ import annotations
 
-from pathlib import Path
+from gandalf_core.app.cli import run_variant, variant
 
-from gandalf_core import Application
-from gandalf_core.app.cli import load_impl, run_variant
+from .scene import SHADERS, build_scene, register_shaders  # noqa: F401 (tests and the preview call it)
 
-from .scene import SHADER, build_scene
-
-SHADERS = Path(__file__).resolve().parent / "shaders"
-
-
-def register_shaders(app: Application) -> None:
-    """Build the step's GLSL shader in the app's renderer (under the name the scene's material uses)."""
-    app.renderer.shaders.build(SHADER, SHADERS / "vertex_color.vert", SHADERS / "vertex_color.frag")
-
-
-def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480) -> Application:
-    app = Application("opengl", width, height, title="step02 · OpenGL", headless=headless, fixed_dt=1 / 60)
-    register_shaders(app)
-    app.add_scene(build_scene(load_impl(__package__, student)))
-    return app
+create_app = variant("opengl", __package__, build_scene, SHADERS)
 
 
 if __name__ == "__main__":

@@ -8,9 +8,11 @@ in the course's 4:3 window (step 04's camera does this properly).
 
 from __future__ import annotations
 
+from pathlib import Path
 from types import ModuleType
 
-from gandalf_core import ClearColorComponent, InfoComponent, Scene, TransformComponent
+from gandalf_core import Application, ClearColorComponent, InfoComponent, Scene, TransformComponent
+from gandalf_core.app.cli import build_shaders
 from gandalf_core.components import MaterialComponent, MeshComponent
 from gandalf_core.resources import MaterialData
 
@@ -21,6 +23,8 @@ from .meshes import quad_mesh, triangle_mesh
 TOUR_FRAMES = 2
 #: The shader every shape uses (each variant file builds it from its own source).
 SHADER = "vertex_color"
+#: The shader table the variants build: GLSL ``shaders/<name>.vert/.frag`` or WGSL ``shaders/<name>.wgsl``.
+SHADERS = (SHADER,)
 #: Height over width of the course's 640x480 window: scales x so a square stays square.
 ASPECT_CORRECTION = 3 / 4
 #: Background (sRGB).
@@ -53,3 +57,8 @@ def build_scene(impl: ModuleType) -> Scene:
                         MaterialComponent("vertex_color"), NGonComponent(sides=NGON_SIDES, radius=0.5))
     scene.add_system(impl.NGonSystem())
     return scene
+
+
+def register_shaders(app: Application) -> None:
+    """Build the step's shader table in ``app``'s API (the variants, the preview and the tests use it)."""
+    build_shaders(app, SHADERS, Path(__file__).resolve().parent / "shaders")

@@ -8,19 +8,15 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from gandalf_core import Application
-from gandalf_core.app.cli import load_impl, run_variant
+from gandalf_core.app.cli import run_variant, variant
 
-from .scene import SHADER, build_scene
+from .scene import SHADERS as SHADER_TABLE
+from .scene import build_scene
 
+#: The shader folder (``tests/step03_textures/conftest.py`` reads it).
 SHADERS = Path(__file__).resolve().parent / "shaders"
 
-
-def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480) -> Application:
-    app = Application("opengl", width, height, title="step03 · OpenGL", headless=headless, fixed_dt=1 / 60)
-    app.renderer.shaders.build(SHADER, SHADERS / "textured.vert", SHADERS / "textured.frag")
-    app.add_scene(build_scene(load_impl(__package__, student)))
-    return app
+create_app = variant("opengl", __package__, build_scene, SHADER_TABLE)
 
 
 if __name__ == "__main__":

@@ -28,6 +28,8 @@ from .spin import SpinSystem
 TOUR_FRAMES = 40
 #: Name of the step's shader in both renderers' shader libraries.
 SHADER = "textured"
+#: The shader table the variants build: GLSL ``shaders/<name>.vert/.frag`` or WGSL ``shaders/<name>.wgsl``.
+SHADERS = (SHADER,)
 #: Where the camera stands and what it looks at.
 EYE = (0.0, 1.7, 6.0)
 TARGET = (0.0, 0.8, 0.0)

@@ -8,9 +8,11 @@
 
 from __future__ import annotations
 
+from pathlib import Path
 from types import ModuleType
 
-from gandalf_core import ClearColorComponent, InfoComponent, Scene, TransformComponent
+from gandalf_core import Application, ClearColorComponent, InfoComponent, Scene, TransformComponent
+from gandalf_core.app.cli import build_shaders
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.resources import MaterialData, checkerboard, primitives
 
@@ -77,3 +79,8 @@ def build_scene(impl: ModuleType) -> Scene:
     scene.add_system(LookAtSystem(impl.look_at))
     scene.add_system(CameraSwitchSystem())
     return scene
+
+
+def register_shaders(app: Application) -> None:
+    """Build the step's shader table in ``app``'s API (the variants, the preview and the tests use it)."""
+    build_shaders(app, SHADERS, Path(__file__).resolve().parent / "shaders")

@@ -7,21 +7,14 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from gandalf_core import Application
-from gandalf_core.app.cli import load_impl, run_variant
+from gandalf_core.app.cli import run_variant, variant
 
 from .scene import SHADERS, build_scenes
 
+#: The shader folder (``tests/step05_scenegraph/test_house.py`` reads it).
 SHADER_DIR = Path(__file__).resolve().parent / "shaders"
 
-
-def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480) -> Application:
-    app = Application("opengl", width, height, title="step05 · OpenGL", headless=headless, fixed_dt=1 / 60)
-    for name in SHADERS:
-        app.renderer.shaders.build(name, SHADER_DIR / f"{name}.vert", SHADER_DIR / f"{name}.frag")
-    for scene in build_scenes(load_impl(__package__, student)):
-        app.add_scene(scene)
-    return app
+create_app = variant("opengl", __package__, build_scenes, SHADERS)
 
 
 if __name__ == "__main__":

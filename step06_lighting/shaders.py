@@ -8,6 +8,9 @@ from __future__ import annotations
 
 from pathlib import Path
 from types import ModuleType
+from typing import Any
+
+from gandalf_core.app.cli import build_shaders
 
 SHADER_DIR = Path(__file__).resolve().parent / "shaders"
 
@@ -25,3 +28,8 @@ def impl_shader_dir(impl: ModuleType) -> Path:
     """The folder holding ``impl``'s ``shading.glsl`` and ``shading.wgsl``."""
     return Path(impl.__file__).resolve().parent
 
+
+
+def register_shaders(app: Any, impl: ModuleType) -> None:
+    """Build the step's shaders in ``app``'s API (GLSL programs or WGSL modules), including ``impl``'s ``shading``."""
+    build_shaders(app, SHADERS, SHADER_DIR, [impl_shader_dir(impl)])

@@ -1,13 +1,21 @@
-"""The command line shared by every step variant (``python -m step01_window.opengl --help``)."""
+"""The launchers: a step variant's app and command line, and your own program's.
+
+A step's ``opengl.py`` and ``webgpu.py`` hold only what differs between the APIs:
+``create_app = variant("opengl", __package__, build_scene, SHADERS)`` builds the step's shader table in that API
+and its scene; ``run_variant(create_app)`` is the command line (``python -m step01_window.opengl --help``).
+:func:`run_scene` runs a scene of your own in either API (``--backend``), with the core's ready materials.
+"""
 
 from __future__ import annotations
 
 import argparse
 import importlib
-from collections.abc import Callable
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from pathlib import Path
 from types import ModuleType
 
 from ..ecs import Scene
+from ..render.base import check_backend
 from .application import Application
 
 
@@ -62,3 +70,60 @@ def run_scene(build_scene: Callable[[], Scene], argv: list[str] | None = None, *
         if args.out:
             print(f"saved {app.save_png(args.out)}")
     return 0
+
+
+#: A step's shader table: shader names (files ``<name>.vert``/``.frag`` and ``<name>.wgsl``), or a mapping
+#: name -> (GLSL vertex file, GLSL fragment file[, WGSL file]) with the WGSL file ``<name>.wgsl`` when left out.
+ShaderTable = Mapping[str, Sequence[str]] | Iterable[str]
+
+
+def shader_files(table: ShaderTable) -> dict[str, tuple[str, str, str]]:
+    """``table`` as name -> (GLSL vertex file, GLSL fragment file, WGSL file)."""
+    items = table.items() if isinstance(table, Mapping) else ((name, ()) for name in table)
+    files = {}
+    for name, entry in items:
+        entry = (entry,) if isinstance(entry, str) else tuple(entry)
+        if len(entry) == 0:
+            files[name] = (f"{name}.vert", f"{name}.frag", f"{name}.wgsl")
+        elif len(entry) in (2, 3):
+            files[name] = (entry[0], entry[1], entry[2] if len(entry) == 3 else f"{name}.wgsl")
+        else:
+            raise ValueError(f"shader table: {name!r}: expected (vertex, fragment[, wgsl]) file names, got {entry!r}")
+    return files
+
+
+def build_shaders(app: Application, table: ShaderTable, folder: str | Path,
+                  include_dirs: Sequence[str | Path] = ()) -> None:
+    """Build every shader of ``table`` from ``folder`` in ``app``'s renderer, in the app's API."""
+    folder = Path(folder)
+    for name, (vert, frag, wgsl) in shader_files(table).items():
+        if app.backend == "opengl":
+            app.renderer.shaders.build(name, folder / vert, folder / frag, include_dirs=include_dirs)
+        else:
+            app.renderer.shaders.build(name, folder / wgsl, include_dirs=include_dirs)
+
+
+def variant(backend: str, package: str, build: Callable[[ModuleType], Scene | Iterable[Scene]],
+            shaders: ShaderTable = (), *, include_impl: bool = False) -> Callable[..., Application]:
+    """A step variant's ``create_app``: everything but the API is the same for both variants of a step.
+
+    ``build(impl)`` returns the step's scene (or scenes) for its ``solutions`` or, with ``student``, its
+    ``exercises`` package; ``shaders`` is the step's shader table (files in the step's ``shaders/`` folder);
+    ``include_impl`` lets the shaders ``#include`` files of the implementation's folder (shader exercises).
+    """
+    backend = check_backend(backend)
+    folder = Path(importlib.import_module(package).__file__).resolve().parent / "shaders"
+    title = f"{package.split('_')[0]} · {'OpenGL' if backend == 'opengl' else 'WebGPU'}"
+
+    def create_app(headless: bool | None = None, student: bool = False, width: int = 640,
+                   height: int = 480) -> Application:
+        impl = load_impl(package, student)
+        app = Application(backend, width, height, title=title, headless=headless, fixed_dt=1 / 60)
+        build_shaders(app, shaders, folder, [Path(impl.__file__).resolve().parent] if include_impl else [])
+        scenes = build(impl)
+        for scene in [scenes] if isinstance(scenes, Scene) else scenes:
+            app.add_scene(scene)
+        return app
+
+    create_app.__doc__ = f"The {package} app in {title.split(' · ')[1]} (``headless``, ``student``, size)."
+    return create_app
