@@ -11,6 +11,9 @@ opened at 1280 x 800 and checked for:
   (``scrollWidth > clientWidth``), with the tabs of tabbed blocks and ``<details>`` all opened so hidden blocks are
   measured too.
 
+Every page means every HTML page of the build except ``404.html`` and the study tables under ``images/``, which
+are included into the step pages and checked there.
+
 The browser is Debian's ``chromium`` (``/usr/bin/chromium``, installed by ``scripts/setup.sh``), not a download of
 playwright's own. Without it the test is skipped, saying so; CI installs it, so there it runs.
 """
@@ -33,6 +36,9 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 CHROMIUM = os.environ.get("GANDALF_CHROMIUM", "/usr/bin/chromium")
 VIEWPORT = {"width": 1280, "height": 800}
+#: Folders of docs/ whose Markdown files are tables included into pages by snippets (the studies' outputs); mkdocs
+#: builds each into a page of its own too, which no page links to: they are checked where they are included.
+SNIPPET_FOLDERS = ("images/",)
 #: Seconds a page may take to load (the software renderer makes nothing slow here; a page loads in ~0.3 s).
 PAGE_TIMEOUT_MS = 20_000
 
@@ -113,7 +119,7 @@ def _pages(site: Path) -> list[str]:
     pages = []
     for path in sorted(site.rglob("*.html")):
         rel = path.relative_to(site).as_posix()
-        if rel == "404.html":
+        if rel == "404.html" or rel.startswith(SNIPPET_FOLDERS):
             continue
         pages.append(rel[: -len("index.html")] if rel.endswith("index.html") else rel)
     return pages
