@@ -7,7 +7,8 @@ mean difference ≤ 1.5 steps and 99 % of pixels within 4 steps (8-bit sRGB), me
 on llvmpipe/lavapipe (the tessellated sphere's interpolated normals against the exact ones). The colour and the
 texture variants (a solid-colour texture times the material colour) must give the same picture; the unlit
 material shows its colour exactly (±1 step) and its texture's checker squares; the two APIs agree (PSNR ≥ 40
-dB). Wrong params, values, texture counts and buffers are errors naming the material and the field.
+dB). Wrong params, values, texture counts and buffers are errors naming the material and the field; a mesh
+without normals under gandalf.blinn_phong is an error naming the mesh.
 """
 
 from __future__ import annotations
@@ -29,7 +30,7 @@ from gandalf_core.components import (
 )
 from gandalf_core.math import look_at_rotation
 from gandalf_core.render.builtin_materials import BUILTIN_MATERIALS
-from gandalf_core.resources import MaterialData, ResourceError, checkerboard, quad, solid, uv_sphere
+from gandalf_core.resources import MaterialData, MeshData, ResourceError, checkerboard, quad, solid, uv_sphere
 from gandalf_core.resources.color import srgb_rgba_to_linear
 from gandalf_core.resources.texture_data import linear_to_srgb
 from gandalf_core.testing import psnr
@@ -191,3 +192,14 @@ def test_the_core_material_is_not_step06s_exercise():
         includes = re.findall(r'#include\s+"([^"]+)"', text)
         assert all(name in ("frame.glsl", "frame.wgsl", "instance.glsl", "instance.wgsl")
                    or name.startswith("builtin_") for name in includes), f"{path.name} includes {includes}"
+
+
+@pytest.mark.parametrize("backend", ["opengl", "webgpu"])
+def test_blinn_phong_on_a_mesh_without_normals_is_a_named_error(backend):
+    scene = Scene("no normals")
+    scene.assets.mesh("flat", MeshData([[0, 0, 0], [1, 0, 0], [0, 1, 0]], name="flat"))
+    scene.assets.material("M", MaterialData("gandalf.blinn_phong"))
+    scene.create_entity(TransformComponent(), MeshComponent("flat"), MaterialComponent("M"))
+    scene.create_entity(TransformComponent((0, 0, 3)), CameraComponent())
+    with pytest.raises(ResourceError, match=r"mesh 'flat': normals: .*needs attribute 'normal'"):
+        render(backend, scene)
