@@ -61,6 +61,7 @@ class Application:
         self._prepared: set[int] = set()
         self.running = False
         self._closed = False
+        self._assets_key: tuple[tuple[int, int], ...] | None = None
         #: Asked before a camera controller reads the mouse: a GUI layer (the editor) that has the pointer over
         #: one of its panels sets this to say so. The app owns the flag, so no system needs to know the GUI.
         self.gui_wants_mouse: Callable[[], bool] = _never
@@ -139,7 +140,16 @@ class Application:
             self.window.request_close()
         ts = self.clock.tick(dt)
         scene.update(ts)
+        self._collect_resources()
         return ts
+
+    def _collect_resources(self) -> None:
+        """When any scene's assets changed, release the GPU objects of assets no scene has any more."""
+        key = tuple((id(s), s.assets.version) for s in self.scenes.scenes)
+        if key != self._assets_key:
+            if self._assets_key is not None:
+                self.renderer.collect([s.assets for s in self.scenes.scenes])
+            self._assets_key = key
     # --8<-- [end:step]
 
     def run(self, frames: int | None = None, seconds: float | None = None) -> None:

@@ -92,10 +92,23 @@ class Renderer(ABC):
     meshes: ResourceLib[Any]
     materials: ResourceLib[Any]
 
+    def collect(self, all_assets: list[Assets]) -> None:
+        """Release the GPU objects built from assets that none of ``all_assets`` (every scene of the app) has any
+        more: materials first (they refer to textures), then meshes and textures."""
+        self.materials.collect(name for a in all_assets for name in a.materials)
+        self.meshes.collect(name for a in all_assets for name in a.meshes)
+        self.textures.collect(name for a in all_assets for name in a.textures)
+
+    def _forget_materials_using(self, texture: str) -> None:
+        """A texture is going (released or replaced): the materials that bind it go too (rebuilt on next use)."""
+        for name in [n for n in self.materials.names() if texture in self.materials.get(n).data.textures]:
+            self.materials.forget(name)
+
     def resolve_material(self, name: str, assets: Assets) -> Any:
         """The material a MaterialComponent names, built (with its textures) from the scene's assets."""
         data = assets.materials.get(name)
-        if data is not None and name not in self.materials:
+        if data is not None:
+            # Every frame, so a texture replaced under its name is seen (and its materials rebuilt with it).
             for texture in data.textures:
                 self.textures.resolve(texture, assets.textures, f"material '{name}'")
         return self.materials.resolve(name, assets.materials, "a MaterialComponent")

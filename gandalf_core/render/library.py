@@ -4,12 +4,18 @@ A library builds a GPU object once per name and hands out the cached one afterwa
 ``lib.build(name, data)``. It belongs to one renderer, so a fresh renderer starts with empty libraries.
 :meth:`ResourceLib.resolve` is how the renderers turn the names a scene's components use into GPU
 objects on first use, from the scene's backend-neutral assets.
+
+Objects built from a scene's assets follow them: when the data under a name changes (a texture replaced while
+running), the next use builds it anew; when no scene has the name any more (:meth:`ResourceLib.collect`), its GPU
+object is released. What the app's own code builds with :meth:`build` (shaders, storage buffers) stays until the
+renderer goes. Whatever refers to a released object (a vertex array, a material's bind group) is dropped with it
+through :attr:`ResourceLib.on_forget`.
 """
 
 from __future__ import annotations
 
 from collections import Counter
-from collections.abc import Mapping
+from collections.abc import Callable, Iterable, Mapping
 from typing import Any, Generic, TypeVar
 
 from .errors import MissingResourceError, missing
@@ -26,6 +32,9 @@ class ResourceLib(Generic[T]):
         self.stats = stats
         self._items: dict[str, T] = {}
         self._data: dict[str, Any] = {}
+        self._from_assets: set[str] = set()  # names built by resolve() from a scene's assets
+        #: Called with a name just before its object is released: dependents drop what refers to it.
+        self.on_forget: list[Callable[[str], None]] = []
 
     def build(self, name: str, data: Any) -> T:
         """The GPU object for ``name``, created from ``data`` the first time and cached after that."""
@@ -42,15 +51,39 @@ class ResourceLib(Generic[T]):
         """
         data = table.get(name)
         if name in self._items:
-            if data is not None and self._data.get(name) is not data:
+            if data is None or self._data.get(name) is data:
+                return self._items[name]
+            if name not in self._from_assets:
                 raise ValueError(
-                    f"{self.kind} '{name}' was already built from other data (another scene's assets?): "
-                    f"give one of them another name"
+                    f"{self.kind} '{name}' was built by the app's own code (build()), and a scene's assets hold "
+                    f"other data under that name: give one of them another name"
                 )
-            return self._items[name]
+            self.forget(name)  # the scene's data under this name changed: build it anew
         if data is None:
             raise missing(self.kind, name, list(table), referrer)
-        return self.build(name, data)
+        item = self.build(name, data)
+        self._from_assets.add(name)
+        return item
+
+    def forget(self, name: str) -> None:
+        """Release ``name``'s object (and, through :attr:`on_forget`, what refers to it); nothing if not built."""
+        if name not in self._items:
+            return
+        for callback in self.on_forget:
+            callback(name)
+        item = self._items.pop(name)
+        self._data.pop(name, None)
+        self._from_assets.discard(name)
+        self._release(item)
+
+    def collect(self, live: Iterable[str]) -> list[str]:
+        """Release the objects built from assets whose names are not in ``live`` (no scene has them any more);
+        returns those names."""
+        live = set(live)
+        gone = [name for name in self._from_assets if name not in live]
+        for name in gone:
+            self.forget(name)
+        return gone
 
     def adopt(self, name: str, data: Any) -> None:
         """Record that ``name``'s built object now stands for ``data``: for changes that need no rebuild

@@ -20,12 +20,36 @@ T = TypeVar("T")
 
 
 class Assets:
-    """Named meshes, textures (2D and cube) and materials."""
+    """Named meshes, textures (2D and cube) and materials.
+
+    :attr:`version` counts changes (an asset added, replaced or removed), so a renderer can tell cheaply when to
+    release the GPU objects of assets that no scene has any more.
+    """
 
     def __init__(self) -> None:
         self.meshes: dict[str, MeshData] = {}
         self.textures: dict[str, TextureData | CubeTextureData] = {}
         self.materials: dict[str, MaterialData] = {}
+        self.version = 0
+
+    def remove_mesh(self, name: str) -> None:
+        """Forget the mesh ``name`` (its GPU objects go when no scene of the app has it)."""
+        self._remove(self.meshes, "mesh", name)
+
+    def remove_texture(self, name: str) -> None:
+        """Forget the texture ``name``."""
+        self._remove(self.textures, "texture", name)
+
+    def remove_material(self, name: str) -> None:
+        """Forget the material ``name``."""
+        self._remove(self.materials, "material", name)
+
+    def _remove(self, table: dict[str, T], kind: str, name: str) -> None:
+        if name not in table:
+            raise ResourceError(f"{kind} '{name}'", "name", f"no such {kind} in the scene's assets "
+                                f"(known: {', '.join(sorted(table)) or 'none'})")
+        del table[name]
+        self.version += 1
 
     def mesh(self, name: str, data: MeshData) -> str:
         from .mesh_data import MeshData
@@ -42,11 +66,11 @@ class Assets:
 
         return self._put(self.materials, "material", name, data, MaterialData)
 
-    @staticmethod
-    def _put(table: dict[str, T], kind: str, name: str, data: T, types: type | tuple[type, ...]) -> str:
+    def _put(self, table: dict[str, T], kind: str, name: str, data: T, types: type | tuple[type, ...]) -> str:
         if not isinstance(name, str) or not name:
             raise ResourceError(f"{kind} {name!r}", "name", "expected a non-empty string")
         if not isinstance(data, types):
             raise ResourceError(f"{kind} '{name}'", "data", f"expected {types}, got {type(data).__name__}")
         table[name] = data
+        self.version += 1
         return name

@@ -271,21 +271,37 @@ def test_many_frames_create_nothing_new(backend):
         }
 
 
-def test_one_name_for_different_data_in_two_scenes_is_an_error(backend):
-    """Libraries cache by name; a second scene that reuses a name for other data must not get the first's."""
+def test_one_name_for_different_data_in_two_scenes_draws_each_scenes_own(backend):
+    """Libraries cache by name; a second scene that reuses a name for other data must not get the first's: the
+    name is rebuilt from the active scene's data (and the first scene's again when it comes back)."""
     first, second = cubes_scene(1), cubes_scene(1)
     # The same material and texture objects may be shared by name; only the mesh differs.
     second.assets.material("M", first.assets.materials["M"])
     second.assets.texture("checker", first.assets.textures["checker"])
     second.assets.mesh("cube", cube(2.0))
     second.name = "cubes-2"
+    alone, app_alone = render(backend, second_copy(second))
+    app_alone.close()
     with make_app(backend) as app:
         app.add_scene(first)
         app.add_scene(second)
         app.step()
+        picture_first = app.capture()
         app.switch_scene(second)
-        with pytest.raises(ValueError, match="mesh 'cube' was already built from other data"):
-            app.step()
+        app.step()
+        picture_second = app.capture()
+        app.switch_scene(first)
+        app.step()
+        assert np.array_equal(app.capture(), picture_first)
+    assert not np.array_equal(picture_first, picture_second)
+    assert np.array_equal(picture_second, alone)
+
+
+def second_copy(scene: Scene) -> Scene:
+    """A scene like ``scene`` (one cube of the given mesh, the same camera), built alone."""
+    copy = cubes_scene(1)
+    copy.assets.mesh("cube", scene.assets.meshes["cube"])
+    return copy
 
 
 def test_read_pixel_matches_the_full_read_back(backend):

@@ -95,6 +95,9 @@ class OpenGLRenderer(Renderer):
         self._shadow: tuple[moderngl.Texture, moderngl.Framebuffer] | None = None
         self._instance_buffer: moderngl.Buffer | None = None
         self._vaos: dict[tuple[str, str], moderngl.VertexArray] = {}
+        # Released or replaced resources take what refers to them along (rebuilt on their next use).
+        self.meshes.on_forget.append(self._forget_vertex_arrays)
+        self.textures.on_forget.append(self._forget_materials_using)
         self._state: tuple[Any, ...] | None = None
         self._fbo: moderngl.Framebuffer | None = None
         self._zero_to_one = False  # glClipControl's depth mode now (OpenGL's default: [-1, 1])
@@ -337,6 +340,10 @@ class OpenGLRenderer(Renderer):
             raw_gl.blit_color(self._fbo.glo, self.ctx.screen.glo, (self.width, self.height),
                                     self.ctx.screen.size)
             self.window.swap_buffers()
+
+    def _forget_vertex_arrays(self, mesh: str) -> None:
+        for key in [k for k in self._vaos if k[1] == mesh]:
+            self._vaos.pop(key).release()
 
     def _vertex_array(self, shader: GLShader, mesh: GLMesh) -> moderngl.VertexArray:
         key = (shader.name, mesh.name)

@@ -102,6 +102,9 @@ class WebGPURenderer(Renderer):
         self.buffers = BufferLib(self.device, self.stats)
         self.materials = MaterialLib(self.device, self.shaders, self.textures, self.stats, self.buffers)
         self._pipelines: dict[tuple[Any, ...], Any] = {}
+        # Released or replaced textures take the bind groups that use them along (rebuilt on their next use).
+        self.textures.on_forget.append(self._forget_materials_using)
+        self.textures.on_forget.append(lambda name: self._sky_materials.pop(name, None))
         self._instance_buffer: Any = None
         self._create_targets()
 
