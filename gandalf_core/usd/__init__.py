@@ -36,7 +36,7 @@ def load_scene(path: str | Path, *, name: str | None = None, strict: bool = True
 
     ``allow_outside=True`` lets sublayers, references, payloads and textures lie outside the file's folder;
     ``preview_material`` maps another tool's UsdPreviewSurface (a :class:`gandalf_core.usd.foreign.PreviewSurface`)
-    onto an engine ``MaterialData`` (default: step 06's ``phong`` / ``phong_textured``).
+    onto an engine ``MaterialData`` (default: the built-in ``gandalf.blinn_phong``).
     """
     from .reader import load_scene as load
 

@@ -13,7 +13,7 @@ Everything here turns standard USD data (no ``gandalf:`` attributes) into engine
   ``cube`` and ``plane`` where they exist; cylinder, cone and capsule here), turned to their ``axis``.
 * :func:`preview_surface` — a bound material's ``UsdPreviewSurface`` network read into :class:`PreviewSurface`
   (colour, first ``UsdUVTexture`` on diffuseColor and its ``st`` reader, roughness, metallic, emission,
-  opacity); :func:`default_preview_material` turns that into an engine material.
+  opacity); :func:`default_preview_material` turns that into the built-in ``gandalf.blinn_phong``.
 
 Problems that do not stop the load are appended to a list of ``(prim path, why)``; the reader reports them in
 one warning.
@@ -364,18 +364,18 @@ class PreviewSurface:
 
 
 def default_preview_material(surface: PreviewSurface) -> MaterialData:
-    """Step 06's Blinn-Phong shaders: ``phong`` (colour) or ``phong_textured`` (colour × texture).
+    """The engine's built-in ``gandalf.blinn_phong`` (both APIs, no shader to build), with the surface's colour
+    and its texture (the albedo, multiplied by the colour) when it has one.
 
-    Roughness r becomes shininess 2/r⁴ − 2 (clamped to 1..1024) and specular 0.04 + 0.96·metallic (at most 1).
-    The app must have built those shaders (step 06 does); pass ``preview_material=`` to
-    :func:`gandalf_core.usd.load_scene` to map onto other shaders.
+    Roughness r becomes shininess 2/r⁴ − 2 (clamped to 1..1024) and specular 0.04 + 0.96·metallic (at most 1);
+    emission and opacity have no place in it. Pass ``preview_material=`` to :func:`gandalf_core.usd.load_scene`
+    to map onto other shaders.
     """
     r = max(surface.roughness, 1e-3)
     params = {"specular": min(1.0, 0.04 + 0.96 * surface.metallic),
               "shininess": float(np.clip(2.0 / r**4 - 2.0, 1.0, 1024.0))}
-    if surface.texture is not None:
-        return MaterialData("phong_textured", [surface.texture], color=surface.color, params=params)
-    return MaterialData("phong", color=surface.color, params=params)
+    textures = [surface.texture] if surface.texture is not None else []
+    return MaterialData("gandalf.blinn_phong", textures, color=surface.color, params=params)
 
 
 def _constant(shader: UsdShade.Shader, name: str, notes: Notes, default: object) -> object:

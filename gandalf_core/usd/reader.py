@@ -55,7 +55,7 @@ def load_scene(path: str | Path, *, name: str | None = None, strict: bool = True
     Files from other tools load too (see :mod:`gandalf_core.usd.foreign`): every prim becomes an entity named
     after it, any xform op stack becomes its transform, plain meshes and gprims are converted, and bound
     ``UsdPreviewSurface`` materials become engine materials through ``preview_material`` (default:
-    :func:`~gandalf_core.usd.foreign.default_preview_material`, step 06's ``phong`` / ``phong_textured``).
+    :func:`~gandalf_core.usd.foreign.default_preview_material`, the built-in ``gandalf.blinn_phong``).
     What cannot be mapped is listed, prim by prim, in ONE :class:`USDSceneWarning`. Sublayers, references,
     payloads and texture files must lie inside the file's folder unless ``allow_outside=True``.
     """

@@ -597,20 +597,17 @@ def test_cameras_and_lights_of_another_tool(tmp_path):
     np.testing.assert_allclose(bulb.color, linear_to_srgb(np.array([1.0, 0.5, 0.0])), atol=1e-6)
 
 
-def test_default_material_mapping_draws_with_step06_shaders_in_both_apis(tmp_path):
-    """Without ``preview_material`` the preview surfaces become step 06's ``phong`` / ``phong_textured``; the
-    loaded scene draws with step 06's shaders and both APIs agree (PSNR >= 35 dB)."""
-    from gandalf_core.app.cli import load_impl
-    from step06_lighting.shaders import register_shaders
-
+def test_default_material_mapping_draws_with_the_builtin_blinn_phong_in_both_apis(tmp_path):
+    """Without ``preview_material`` the preview surfaces become the built-in ``gandalf.blinn_phong`` (no shader to
+    build); the loaded scene draws and both APIs agree (PSNR >= 35 dB)."""
     path = pxr_scene(tmp_path)
     pictures = {}
     for backend in ("opengl", "webgpu"):
         scene = load_scene(path)
-        shaders = {m.shader for m in scene.assets.materials.values()}
-        assert shaders == {"phong", "phong_textured"}, shaders
+        materials = list(scene.assets.materials.values())
+        assert {m.shader for m in materials} == {"gandalf.blinn_phong"}
+        assert sorted(len(m.textures) for m in materials) == [0, 1]
         with Application(backend, W, H, headless=True, fixed_dt=1 / 60) as app:
-            register_shaders(app, load_impl("step06_lighting"))
             app.add_scene(scene)
             app.run(frames=2)
             pictures[backend] = app.capture()
