@@ -1,17 +1,19 @@
 """The intro notebooks (``notebooks/*.ipynb``) run from top to bottom in both APIs, so they cannot rot.
 
 Each notebook is executed by nbclient in a fresh ``python3`` kernel (ipykernel from this interpreter) once with
-``GANDALF_BACKEND=opengl`` and once with ``GANDALF_BACKEND=webgpu``, which the notebook's first cell reads. A test
-fails on any cell error (the message names the notebook, the API and the cell), on a notebook that shows no
-picture or a blank one, and when the two APIs' pictures differ: every picture a notebook shows must agree between
-OpenGL and WebGPU with a PSNR of at least 35 dB (the same scene, the same picture; anti-aliased edges may differ
-by a few levels).
+``GANDALF_BACKEND=opengl`` and once with ``GANDALF_BACKEND=webgpu`` (the two side by side), which the notebook's
+first cell reads. A test fails on any cell error (the message names the notebook, the API and the cell), on a
+notebook that shows no picture or a blank one, and when the two APIs' pictures differ: every picture a notebook
+shows must agree between OpenGL and WebGPU with a PSNR of at least 35 dB (the same scene, the same picture;
+anti-aliased edges may differ by a few levels).
 """
 
 from __future__ import annotations
 
+import asyncio
 import base64
 import io
+import os
 import re
 from pathlib import Path
 
@@ -28,6 +30,8 @@ NOTEBOOKS_DIR = Path(__file__).resolve().parents[2] / "notebooks"
 NOTEBOOKS = sorted(NOTEBOOKS_DIR.glob("*.ipynb"))
 #: Seconds one cell may take (the slowest, loading the bunny and rendering, takes about a second here).
 CELL_TIMEOUT = 60
+#: Every notebook runs once per API.
+BACKENDS = ("opengl", "webgpu")
 #: The two APIs' pictures must agree at least this well.
 MIN_PSNR = 35.0
 
@@ -42,21 +46,21 @@ def _plain(exc: Exception) -> str:
     return re.sub(r"\x1b\[[0-9;]*m", "", str(exc))
 
 
-def _execute(path: Path, backend: str, monkeypatch: pytest.MonkeyPatch) -> list[np.ndarray]:
-    """Run the notebook with ``backend``; return the pictures it displayed (RGB arrays)."""
+async def _execute(path: Path, backend: str) -> list[np.ndarray] | str:
+    """Run the notebook with ``backend``; return the pictures it displayed (RGB arrays), or what went wrong."""
     from PIL import Image
 
     notebook = nbformat.read(path, as_version=4)
-    monkeypatch.setenv("GANDALF_BACKEND", backend)
     client = nbclient.NotebookClient(
         notebook, kernel_name="python3", timeout=CELL_TIMEOUT, resources={"metadata": {"path": str(path.parent)}}
     )
     try:
-        client.execute()
-    except nbclient.exceptions.CellExecutionError as exc:
-        pytest.fail(f"{path.name} with GANDALF_BACKEND={backend}: a cell failed:\n{_plain(exc)}")
+        # The kernel gets its own environment: the two APIs' runs go side by side, one kernel per core.
+        await client.async_execute(env={**os.environ, "GANDALF_BACKEND": backend})
     except nbclient.exceptions.CellTimeoutError as exc:
-        pytest.fail(f"{path.name} with GANDALF_BACKEND={backend}: a cell ran over {CELL_TIMEOUT} s:\n{_plain(exc)}")
+        return f"{path.name} with GANDALF_BACKEND={backend}: a cell ran over {CELL_TIMEOUT} s:\n{_plain(exc)}"
+    except nbclient.exceptions.CellExecutionError as exc:
+        return f"{path.name} with GANDALF_BACKEND={backend}: a cell failed:\n{_plain(exc)}"
     pictures = []
     for cell in notebook.cells:
         for output in cell.get("outputs", []):
@@ -66,9 +70,17 @@ def _execute(path: Path, backend: str, monkeypatch: pytest.MonkeyPatch) -> list[
     return pictures
 
 
+async def _execute_both(path: Path) -> dict[str, list[np.ndarray] | str]:
+    runs = await asyncio.gather(*(_execute(path, backend) for backend in BACKENDS))
+    return dict(zip(BACKENDS, runs))
+
+
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=[p.stem for p in NOTEBOOKS])
-def test_notebook_runs_in_both_apis_with_the_same_pictures(path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    shown = {backend: _execute(path, backend, monkeypatch) for backend in ("opengl", "webgpu")}
+def test_notebook_runs_in_both_apis_with_the_same_pictures(path: Path) -> None:
+    shown = asyncio.run(_execute_both(path))
+    failures = [run for run in shown.values() if isinstance(run, str)]
+    if failures:
+        pytest.fail("\n\n".join(failures))
     for backend, pictures in shown.items():
         assert pictures, f"{path.name} with {backend}: no picture was displayed (expected show(app.capture()))"
         for i, picture in enumerate(pictures):
