@@ -14,8 +14,9 @@ A *mutant* is a copy of a step's ``solutions`` package with one thing wrong, def
 Each mutant is graded in its own subprocess: ``pytest --student -x --grade-only <exercise> tests/<step>``
 with ``GANDALF_IMPL=<step>=<copy>`` so the ``impl`` fixture (and ``load_impl(step, student=True)``) import
 the mutant as the step's ``exercises``. A mutant that passes every graded test of its exercise *survives*:
-the tests have a gap. Before the mutants, an unchanged copy of each step's solutions (the control) must
-pass every graded test, so a failure is the mutation's doing and not the copying's.
+the tests have a gap. Before the mutants and again after them, an unchanged copy of each step's solutions
+(the control) must pass every graded test, so a failure is the mutation's doing and not the copying's, nor
+a change of the engine during the run (in a shared working tree).
 
 The run exits with 1 when a mutant survives, a control fails or a mutant cannot be built. Survivors already
 reported to the test authors are listed in ``tests/mutants/known_gaps.txt``: they are printed as KNOWN GAP and
@@ -424,9 +425,14 @@ def main(argv: list[str] | None = None) -> int:
     if not args.no_control:
         jobs += [(None, s, by_step[s]) for s in steps]
     jobs += [(m, m.step, [m.exercise]) for m in mutants]
+    if not args.no_control:
+        # The controls again at the end: a change to the engine or the tests during the run (a shared working
+        # tree) would kill mutants for the wrong reason; a control that fails afterwards flags that run.
+        jobs += [(None, s, by_step[s]) for s in steps]
     print(
         f"mutation check: {len(mutants)} mutants of {sum(len(v) for v in by_step.values())} exercises in "
-        f"{len(steps)} steps, {len(jobs) - len(mutants)} controls, {args.jobs} at a time",
+        f"{len(steps)} steps, {len(jobs) - len(mutants)} control runs (each step before and after), "
+        f"{args.jobs} at a time",
         flush=True,
     )
     start = time.perf_counter()
