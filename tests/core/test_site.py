@@ -8,8 +8,8 @@ opened at 1280 x 800 and checked for:
   that page; every ``<img>`` has loaded (``naturalWidth > 0``);
 * maths: every ``arithmatex`` element (``$...$`` / ``$$...$$`` in the Markdown) holds a KaTeX rendering;
 * width: no code block (``pre`` or its ``code``) and no display formula is wider than its box
-  (``scrollWidth > clientWidth``), with the tabs of tabbed blocks and ``<details>`` all opened so hidden blocks are
-  measured too.
+  (``scrollWidth > clientWidth``), nor the page wider than the window, with the tabs of tabbed blocks and
+  ``<details>`` all opened so hidden blocks are measured too.
 
 Every page means every HTML page of the build except ``404.html`` and the study tables under ``images/``, which
 are included into the step pages and checked there.
@@ -56,6 +56,10 @@ _MEASURE = """
       out.push({tag: el.tagName, scroll: el.scrollWidth, client: el.clientWidth, first_line: text});
     }
   });
+  const page = document.scrollingElement;
+  if (page.scrollWidth > page.clientWidth + 1) {
+    out.push({tag: "html", scroll: page.scrollWidth, client: page.clientWidth, first_line: "the page itself"});
+  }
   style.remove();
   return out;
 }
