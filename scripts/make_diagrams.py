@@ -33,6 +33,9 @@ MISSING = "#ffffff"
 DATA = "#fce5cd"
 SYSTEM = "#d9ead3"
 EDGE = "#333333"
+#: Text in the box diagrams is drawn this much larger than its nominal size: the site shows them at about half
+#: their pixel width, so nominal 8 pt would read as 4.
+TEXT_SCALE = 1.3
 
 
 def _box(ax, x: float, y: float, w: float, h: float, text: str, color: str, *, dashed: bool = False,
@@ -42,7 +45,8 @@ def _box(ax, x: float, y: float, w: float, h: float, text: str, color: str, *, d
     ax.add_patch(FancyBboxPatch((x, y), w, h, boxstyle="round,pad=0.02,rounding_size=0.08", facecolor=color,
                                 edgecolor="#999999" if dashed else EDGE, linestyle="--" if dashed else "-",
                                 linewidth=1.0))
-    ax.text(x + w / 2, y + h / 2, text, ha="center", va="center", fontsize=size, weight=weight, color=text_color,
+    ax.text(x + w / 2, y + h / 2, text, ha="center", va="center", fontsize=size * TEXT_SCALE, weight=weight,
+            color=text_color,
             wrap=True)
 
 
@@ -76,7 +80,7 @@ def pipeline(path: Path) -> None:
         ("rasteriser", FIXED, True), ("fragment\nshader", PROGRAMMABLE, True),
         ("depth test,\nblending", FIXED, True),
     ]
-    w, h, gap = 1.25, 0.8, 0.3
+    w, h, gap = 1.3, 0.9, 0.25
     fig, ax = _canvas(12.5, 5.0, len(stages) * (w + gap) + 0.6, 4.6)
     ax.set_ylim(-0.5, 4.6)
     rows = (("OpenGL 4.x", 3.2, True), ("WebGPU", 1.2, False))
@@ -119,7 +123,7 @@ def ecs_frame(path: Path) -> None:
         ax.text(1.5, 3.95 - i * 0.5, text, ha="center", va="center", fontsize=8)
     # Application.step on top.
     _box(ax, 3.4, 4.7, 8.3, 0.7, "Application.step(): pending scene switch · input · resize · clock.tick() -> ts",
-         FIXED, size=9)
+         FIXED, size=8)
     # Systems in order.
     systems = [("your systems\n(on_update_entity)", "move, spin, animate:\nwrite Transform"),
                ("TransformSystem", "local TRS ->\nworld matrices\n(parents first)"),
@@ -127,8 +131,8 @@ def ecs_frame(path: Path) -> None:
                ("RenderSystem", "camera, batches,\ninstance rows,\nframe uniforms")]
     for i, (name, job) in enumerate(systems):
         x = 3.4 + i * 2.15
-        _box(ax, x, 3.0, 1.85, 0.95, name, SYSTEM, size=8.5, weight="bold")
-        ax.text(x + 0.92, 2.85, job, ha="center", va="top", fontsize=7.5)
+        _box(ax, x, 3.0, 1.85, 0.95, name, SYSTEM, size=7.0, weight="bold")
+        ax.text(x + 0.92, 2.85, job, ha="center", va="top", fontsize=8.5)
         if i:
             _arrow(ax, x - 0.3, 3.47, x, 3.47)
     _arrow(ax, 4.32, 4.7, 4.32, 3.95)
@@ -143,8 +147,8 @@ def ecs_frame(path: Path) -> None:
     _arrow(ax, x_r + 0.92, 1.9, x_r + 0.92, 1.35)
     ax.text(x_r + 1.0, 1.6, "FrameData", ha="left", va="center", fontsize=8)
     _box(ax, 6.0, 0.5, 5.7, 0.85, "Renderer: OpenGLRenderer (moderngl) or WebGPURenderer (wgpu)\nclear · upload "
-         "once · instanced draws · sky · blended · overlays", PROGRAMMABLE, size=8.5)
-    _box(ax, 3.4, 0.5, 2.2, 0.85, "offscreen sRGB target\n-> window / capture()", FIXED, size=8)
+         "once · instanced draws · sky · blended · overlays", PROGRAMMABLE, size=6.8)
+    _box(ax, 3.4, 0.5, 2.2, 0.85, "offscreen sRGB target\n-> window / capture()", FIXED, size=6.5)
     _arrow(ax, 6.0, 0.93, 5.6, 0.93)
     _save(fig, path)
 
