@@ -106,7 +106,8 @@ def run_child(cfg: dict[str, Any]) -> dict[str, Any]:
         "bench": "gandalf-skybox", "backend": cfg["backend"], "face_size": cfg["size"],
         "window": cfg["window"], "load_s": round(t1 - t0, 3), "first_frame_s": round(t3 - t2, 3),
         "frame_ms_median": round(float(np.median(frames)) * 1e3, 2) if frames else None,
-        "rss_before_mb": before, "rss_loaded_mb": loaded, "peak_rss_mb": rss_mb(), "sky_pixel": [int(v) for v in np.ravel(pixel)[:3]],
+        "rss_before_mb": before, "rss_loaded_mb": loaded, "peak_rss_mb": rss_mb(),
+        "sky_pixel": [int(v) for v in np.ravel(pixel)[:3]],
     }
     app.close()
     return record
