@@ -27,6 +27,7 @@ _SLERP_MIN_ANGLE = 1e-6
 # documented errors or handles the extremes exactly as before.
 _ND = np.ndarray
 _F64 = np.dtype(np.float64)
+_S4 = (4,)
 _NUMBER = (float, int, np.float64)
 _FLOAT = (float, np.float64)
 _array = np.array
@@ -117,20 +118,22 @@ def quat_mul(a: ArrayLike, b: ArrayLike) -> np.ndarray:
     would otherwise compound: a unit quaternion stored in float64 is off by up to ~1e-16, and a million
     compositions (frames of a spinning object) would drift by ~1e-10.
     """
-    ca = _floats(a, 4)
-    if ca is not None:
-        cb = _floats(b, 4)
-        if cb is not None:
-            aw, ax, ay, az = ca
-            bw, bx, by, bz = cb
-            w = aw * bw - ax * bx - ay * by - az * bz
-            x = aw * bx + ax * bw + ay * bz - az * by
-            y = aw * by - ax * bz + ay * bw + az * bx
-            z = aw * bz + ax * by - ay * bx + az * bw
-            n2 = w * w + x * x + y * y + z * z
-            if _SAFE_MIN_SQ < n2 < _SAFE_MAX_SQ:  # False for NaN and inf: the general path raises
-                n = math.sqrt(n2)
-                return _array([w / n, x / n, y / n, z / n])
+    # The usual case (two float64 arrays of shape (4,)) is tested inline; _floats handles the rest.
+    if type(a) is _ND and type(b) is _ND and a.dtype is _F64 and b.dtype is _F64 and a.shape == _S4 == b.shape:
+        ca, cb = a.tolist(), b.tolist()  # type: ignore[union-attr]
+    else:
+        ca, cb = _floats(a, 4), _floats(b, 4)
+    if ca is not None and cb is not None:
+        aw, ax, ay, az = ca
+        bw, bx, by, bz = cb
+        w = aw * bw - ax * bx - ay * by - az * bz
+        x = aw * bx + ax * bw + ay * bz - az * by
+        y = aw * by - ax * bz + ay * bw + az * bx
+        z = aw * bz + ax * by - ay * bx + az * bw
+        n2 = w * w + x * x + y * y + z * z
+        if _SAFE_MIN_SQ < n2 < _SAFE_MAX_SQ:  # False for NaN and inf: the general path raises
+            n = math.sqrt(n2)
+            return _array([w / n, x / n, y / n, z / n])
     qa = _checked(a, "a", (4,))
     qb = _checked(b, "b", (4,))
     aw, ax, ay, az = np.moveaxis(qa, -1, 0)
