@@ -43,7 +43,10 @@ class WGPUTerrain:
         # --8<-- [end:mesh]
 
     def material(self, base: MaterialData) -> MaterialData:
-        return MaterialData(base.shader, base.textures, color=base.color, params=base.params, cull=base.cull,
+        # The level of detail is the compute tessellator's (it gets its own copy each frame), not the render
+        # shader's: the WGSL material has no "lod", and a parameter nothing reads is an error.
+        params = {key: value for key, value in base.params.items() if key != "lod"}
+        return MaterialData(base.shader, base.textures, color=base.color, params=params, cull=base.cull,
                             name=base.name, buffers=(VERTEX_BUFFER,))
 
     def update(self, eye: np.ndarray) -> None:

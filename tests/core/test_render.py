@@ -389,7 +389,8 @@ def quads_scene(*quads: tuple[str, float, dict], sky: bool = False) -> Scene:
         scene.assets.texture("sky", sky_cube(8))
         scene.create_entity(SkyboxComponent("sky"))
     for name, z, material in quads:
-        scene.assets.material(name, MaterialData("flat", **{"params": {"tint": (1, 1, 1, 1)}, **material}))
+        params = {"tint": (1, 1, 1, 1), "m": np.zeros(16)}
+        scene.assets.material(name, MaterialData("flat", **{"params": params, **material}))
         scene.create_entity(TransformComponent((0, 0, z)), MeshComponent("quad"), MaterialComponent(name))
     add_camera(scene, eye=(0, 0, 2), far=50.0)
     return scene
@@ -418,14 +419,38 @@ def test_depth_test_off_still_writes_depth_in_both_backends(backend):
     assert pixel[:3].tolist() == [255, 0, 0]
 
 
-def test_matrix_params_and_missing_members_reach_the_shader_alike(backend):
+def test_matrix_params_reach_the_shader_alike(backend):
     m = np.eye(4)
     m[0, 1] = 1.0  # row 0, column 1: GLSL's u_m[1].x and WGSL's material.m[1].x
     material = {"color": (1, 0, 0), "params": {"tint": (1, 1, 1, 1), "m": m.ravel()}}
     pixel = centre(backend, quads_scene(("a", -1.0, material)))
     assert pixel[:3].tolist() == [255, 0, 255]
-    untinted = centre(backend, quads_scene(("a", -1.0, {"color": (1, 0, 0), "params": {}})))
-    assert untinted[:3].tolist() == [0, 0, 0]  # a member with no value is zero in both
+
+
+@pytest.mark.parametrize(("params", "needle"), [
+    ({"m": np.zeros(16)}, r"material 'a': params: shader 'flat' .* reads '(u_)?tint', which the material never "
+                          r"sets \(it would read 0\)"),
+    ({"tint": (1, 1, 1, 1), "m": np.zeros(16), "tnit": 1.0},
+     r"material 'a': params\['tnit'\]: shader 'flat' .* has no value '(u_)?tnit'.*did you mean 'tint'"),
+    ({"u_tint": (1, 1, 1, 1), "m": np.zeros(16)}, None),
+])
+def test_material_values_are_matched_to_the_shader_by_name_or_refused(backend, params, needle):
+    """A value the shader reads but the material never sets, a misspelt parameter, or (OpenGL) a name given with
+    its u_ prefix: each an error naming the material, the shader and the field, never a silent 0 or a dropped
+    value."""
+    from gandalf_core.resources import ResourceError
+
+    scene = Scene("values")
+    scene.assets.mesh("quad", cube())
+    scene.assets.material("a", MaterialData("flat", color=(1, 0, 0), params=params))
+    scene.create_entity(TransformComponent((0, 0, -3)), MeshComponent("quad"), MaterialComponent("a"))
+    add_camera(scene, eye=(0, 0, 2), far=50.0)
+    if needle is None:  # the u_ prefix: OpenGL says to leave it out; WebGPU's struct has no such field
+        needle = (r"params\['u_tint'\]: give it without the 'u_' prefix: 'tint'" if backend == "opengl"
+                  else r"params\['u_tint'\]: shader 'flat' .* has no value 'u_tint'")
+    with flat_app(backend) as app, pytest.raises(ResourceError, match=needle):
+        app.add_scene(scene)
+        app.step()
 
 
 def test_a_material_with_the_wrong_number_of_textures_is_named(backend):
@@ -491,7 +516,8 @@ def test_transparent_instances_sort_by_view_depth_not_distance(backend, projecti
     scene = Scene("depth order")
     scene.assets.mesh("plane", plane(10.0, 1))
     for name, rgb in (("red", (1, 0, 0)), ("green", (0, 1, 0))):
-        scene.assets.material(name, MaterialData("flat", color=(*rgb, 0.5), params={"tint": (1, 1, 1, 1)},
+        params = {"tint": (1, 1, 1, 1), "m": np.zeros(16)}
+        scene.assets.material(name, MaterialData("flat", color=(*rgb, 0.5), params=params,
                                                  blend="alpha", depth_write=False, cull="none"))
     scene.create_entity(ClearColorComponent((0, 0, 0)))
     scene.create_entity(TransformComponent((0.0, 1.0, 0.0)), MeshComponent("plane"), MaterialComponent("red"))

@@ -22,6 +22,7 @@ from ...resources import CubeTextureData, MaterialData, MeshData, ResourceError,
 from ..builtin_materials import prepare as prepare_builtin
 from ..errors import ShaderCompileError
 from ..library import ResourceLib
+from ..material_checks import check_parameters
 from ..material_values import MaterialValues
 from ..patches import declared_patch_size
 from ..shader_files import load_shader
@@ -150,6 +151,9 @@ class GLShader:
     storage_blocks: list[str] = field(default_factory=list)  # shader storage blocks in declaration order
     active_storage: dict[str, int] = field(default_factory=dict)  # block -> binding, of the blocks still in use
     cube_samplers: dict[str, bool] = field(default_factory=dict)  # sampler -> samples a cube map
+    #: Material values the program declares (``u_<name>`` uniforms, not samplers) -> stated a default (``= ...``).
+    material_uniforms: dict[str, bool] = field(default_factory=dict)
+    source: str = ""  # the stage files, for messages
 
 
 class ShaderLib(ResourceLib[GLShader]):
@@ -232,8 +236,10 @@ class ShaderLib(ResourceLib[GLShader]):
                 program[sampler].value = unit
         storage_blocks = list(dict.fromkeys(b for src in stages.values() for b in _declared_storage_blocks(src.text)))
         kinds = dict(kind for src in stages.values() for kind in _declared_sampler_kinds(src.text))
+        values = {k: v for src in stages.values() for k, v in _declared_material_uniforms(src.text).items()}
         shader = GLShader(name, program, attributes, samplers, uniforms, patch_vertices, storage_blocks, active_storage,
-                          {s: "Cube" in kinds.get(s, "") for s in samplers})
+                          {s: "Cube" in kinds.get(s, "") for s in samplers}, values,
+                          ", ".join(src.filename for src in stages.values()))
         self._items[name] = shader
         self._data[name] = stages
         return shader
@@ -257,6 +263,18 @@ def _declared_sampler_kinds(glsl: str) -> list[tuple[str, str]]:
         if tok == "uniform" and tokens[i + 1].startswith(("sampler", "isampler", "usampler")):
             found.append((tokens[i + 2], tokens[i + 1]))
     return found
+
+
+_MATERIAL_UNIFORM = re.compile(r"\buniform\s+(?!sampler|isampler|usampler)[A-Za-z_]\w*\s+u_([A-Za-z_]\w*)\s*"
+                               r"(?:\[[^\]]*\]\s*)?(=)?")
+
+
+def _declared_material_uniforms(glsl: str) -> dict[str, bool]:
+    """The material values a GLSL stage declares: ``uniform <type> u_<name>`` (not samplers, not blocks) ->
+    whether it states a default (``= value``), comments stripped."""
+    text = re.sub(r"/\*.*?\*/", " ", glsl, flags=re.S)
+    text = re.sub(r"//[^\n]*", " ", text)
+    return {m.group(1): m.group(2) is not None for m in _MATERIAL_UNIFORM.finditer(text)}
 
 
 def _declared_storage_blocks(glsl: str) -> list[str]:
@@ -424,4 +442,5 @@ class MaterialLib(ResourceLib[GLMaterial]):
         buffers = [self.buffers.get(buf, referrer) for buf in data.buffers]
         check_texture_kinds(name, shader.name, [(s, shader.cube_samplers.get(s, False)) for s in shader.samplers],
                             [(t, self.textures.data_of(t)) for t in data.textures])
+        check_parameters(name, shader.name, shader.source, data.params, shader.material_uniforms, prefix="u_")
         return GLMaterial(name, data, shader, textures, buffers)

@@ -25,6 +25,7 @@ from ...resources import CubeTextureData, MaterialData, MeshData, ResourceError,
 from ..builtin_materials import prepare as prepare_builtin
 from ..errors import ShaderCompileError
 from ..library import ResourceLib
+from ..material_checks import check_parameters
 from ..material_values import MaterialValues
 from ..shader_files import load_shader
 from ..storage import buffer_bytes
@@ -439,6 +440,10 @@ class MaterialLib(ResourceLib[WGPUMaterial]):
         buffers = [self.buffers.get(buf, referrer) for buf in data.buffers]
         slots = [(b.name, b.view_dimension == "cube") for b in shader.material_bindings if b.kind == "texture"]
         check_texture_kinds(name, shader.name, slots, [(t, self.textures.data_of(t)) for t in data.textures])
+        uniform = next((b for b in shader.material_bindings if b.kind == "uniform"), None)
+        fields = ({f.name: f.name.startswith("_") for f in shader.reflection.structs[uniform.struct].fields}
+                  if uniform is not None else {})
+        check_parameters(name, shader.name, shader.source.filename, data.params, fields)
         return WGPUMaterial(name, data, shader, textures, self.device, buffers)
 
     def _release(self, item: WGPUMaterial) -> None:

@@ -1,17 +1,10 @@
-// Two-sided Blinn-Phong with every light of the scene (the same sums as explode_shading.glsl), the material's
-// uniform struct and the fragment stage both WGSL surface shaders of the technique share.
+// Two-sided Blinn-Phong with every light of the scene (the same sums as explode_shading.glsl) and the fragment
+// stage both WGSL surface shaders of the technique share.
 #include "frame.wgsl"
 #include "../../shaders/blinn_phong.wgsl"
 
-struct Material {
-    color: vec4<f32>,
-    explode_time: f32,  // seconds on the explosion clock (set every frame by ExplodeSystem)
-    amount: f32,        // how far a face moves at the peak (world units)
-    period: f32,        // seconds from one whole mesh to the next
-    specular: f32,
-    shininess: f32,
-};
-@group(1) @binding(0) var<uniform> material: Material;
+// The including file declares `struct Material` (with color, specular and shininess) at @group(1) @binding(0):
+// the exploding shader's has the explosion's values too, the unexploded reference's only what it reads.
 
 struct SurfaceOut {
     @builtin(position) position: vec4<f32>,
