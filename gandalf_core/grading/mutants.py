@@ -437,15 +437,18 @@ def main(argv: list[str] | None = None) -> int:
     )
     start = time.perf_counter()
 
+    known = {} if args.strict else load_known_gaps(args.known_gaps or args.dir / "known_gaps.txt")
+
     def progress(done: int, total: int, outcome: Outcome) -> None:
         mark = {"killed": "ok", "passed": "ok"}.get(outcome.status, outcome.status.upper())
+        if outcome.status == "survived" and outcome.mutant.ident in known:
+            mark = "KNOWN"
         print(f"[{done:>3}/{total}] {mark:<8} {outcome.mutant.ident:<58} {outcome.seconds:5.1f} s", flush=True)
 
     outcomes = run_jobs(jobs, args.jobs, args.timeout, progress)
 
     controls = [o for o in outcomes if o.mutant.name == "control" and o.mutant.exercise == "*"]
     results = [o for o in outcomes if o not in controls]
-    known = {} if args.strict else load_known_gaps(args.known_gaps or args.dir / "known_gaps.txt")
     for o in results:
         if o.status == "survived" and o.mutant.ident in known:
             o.status = "known-gap"
