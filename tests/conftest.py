@@ -10,6 +10,10 @@ import pytest
 ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
+# Helpers every step's tests share (the shader harness) live in tests/ itself.
+TESTS = Path(__file__).resolve().parent
+if str(TESTS) not in sys.path:
+    sys.path.append(str(TESTS))
 
 
 @pytest.fixture(params=["opengl", "webgpu"])

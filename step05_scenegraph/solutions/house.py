@@ -78,5 +78,5 @@ class HouseRotationSystem(System):
         if app is not None and app.input.pressed(rotation.pause_key):
             rotation.paused = not rotation.paused
         if not rotation.paused:
-            rotation.angle = math.fmod(rotation.angle + rotation.speed * ts, 360.0)
+            rotation.angle = (rotation.angle + rotation.speed * ts) % 360.0  # Python's % wraps negatives into [0, 360)
         transform.quaternion = quat_from_axis_angle((0.0, 1.0, 0.0), math.radians(rotation.angle))

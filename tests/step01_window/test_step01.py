@@ -63,3 +63,25 @@ def test_each_entity_cycles_at_its_own_speed(impl):
     assert scene.get_component(a, HueCycleComponent).hue == pytest.approx(145.0)
     assert scene.get_component(b, HueCycleComponent).hue == pytest.approx(320.0)
     assert np.allclose(scene.get_component(a, ClearColorComponent).color[:3], colorsys.hsv_to_rgb(145 / 360, 1, 1))
+
+
+@pytest.mark.exercise("HueCycleSystem")
+@pytest.mark.parametrize(("hue", "speed", "steps", "expected"), [
+    (10.0, -20.0, 3, 310.0),    # turning backwards past 0 wraps to the top of the circle
+    (5.0, -3600.0, 1, 5.0),     # ten whole turns backwards in one step: back where it started
+    (350.0, 45.0, 2, 80.0),     # forwards past 360
+])
+def test_the_hue_wraps_to_0_360_in_both_directions(impl, hue, speed, steps, expected):
+    """The stub's rule: the hue advances by speed * dt, "wrapping to [0, 360)" — for negative speeds too."""
+    from gandalf_core import Scene
+
+    scene = Scene("wrap")
+    e = scene.create_entity(ClearColorComponent(), HueCycleComponent(hue=hue, speed=speed, saturation=1, value=1))
+    scene.add_system(impl.HueCycleSystem())
+    for _ in range(steps):
+        scene.update(1.0)
+    got = scene.get_component(e, HueCycleComponent).hue
+    assert 0.0 <= got < 360.0, f"hue {hue} at speed {speed} for {steps} s gave {got}: keep it in [0, 360)"
+    assert got == pytest.approx(expected, abs=1e-9), (
+        f"hue {hue} at speed {speed} for {steps} s: expected {expected}, got {got} (hint: Python's % wraps "
+        "negative numbers into [0, 360), math.fmod does not)")

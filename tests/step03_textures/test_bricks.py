@@ -154,3 +154,27 @@ def test_bricks_on_a_quad_sample_the_right_texels(impl, backend, render_scene):
     assert np.all(np.abs(inside - _bytes(BRICK)) <= _bytes(np.asarray(BRICK) * 0.1) + BYTE)
     # The whole picture: decoding sRGB to linear and encoding it again may move a value by one step.
     assert np.abs(rgb - _texels(tex)).max() <= BYTE
+
+
+@pytest.mark.exercise("brick_texture")
+def test_bricks_come_out_both_darker_and_lighter(impl):
+    """The factor is drawn "uniformly from [1 - variation, 1 + variation]": about half the bricks darker than
+    brick_color and half lighter (with 512 bricks, each side must hold at least 30 %)."""
+    w, h, bw, bh, m = 256, 256, 16, 8, 1
+    tex = impl.brick_texture(w, h, brick_size=(bw, bh), mortar=m, brick_color=BRICK, mortar_color=MORTAR,
+                             variation=0.2, seed=11)
+    texels = _texels(tex).astype(int)
+    base = _bytes(BRICK).astype(int)
+    darker = lighter = 0
+    for course in range(h // bh):
+        shift = bw // 2 if course % 2 else 0
+        for column in range(w // bw):
+            x = (shift + column * bw + m + (bw - m) // 2) % w
+            y = course * bh + m + (bh - m) // 2
+            brick = texels[y, x, :3]
+            darker += int((brick < base[:3]).all())
+            lighter += int((brick > base[:3]).all())
+    total = (h // bh) * (w // bw)
+    assert darker >= 0.3 * total and lighter >= 0.3 * total, (
+        f"of {total} bricks {darker} are darker and {lighter} lighter than brick_color {tuple(base[:3])}: "
+        "draw the factor from [1 - variation, 1 + variation], both sides of 1")

@@ -218,3 +218,24 @@ def test_pause_key_toggles_the_rotation(impl, backend):
         app.input.key("P")
         app.run(frames=20)
         assert not rotation.paused and rotation.angle == pytest.approx(paused_angle + 20 * 0.75, abs=1e-9)
+
+
+@pytest.mark.exercise("HouseRotationSystem")
+@pytest.mark.parametrize(("speed", "start", "seconds", "expected"), [
+    (90.0, 300.0, 1.0, 30.0),     # forwards past 360
+    (-30.0, 10.0, 1.0, 340.0),    # backwards past 0
+    (-720.0, 45.0, 1.0, 45.0),    # two whole turns backwards in one step
+])
+def test_the_angle_stays_in_0_360(impl, speed, start, seconds, expected):
+    """The docstring's rule: advance the angle and "keep it in [0, 360)", whichever way the house turns."""
+    from gandalf_core import Scene, TransformComponent
+
+    scene = Scene("wrap")
+    house = scene.create_entity(HouseRotationComponent(speed=speed, angle=start), TransformComponent())
+    scene.add_system(impl.HouseRotationSystem())
+    scene.update(seconds)
+    angle = scene.get_component(house, HouseRotationComponent).angle
+    assert 0.0 <= angle < 360.0 and angle == pytest.approx(expected, abs=1e-9), (
+        f"speed {speed} from {start} for {seconds} s: expected {expected}, got {angle} (math.fmod keeps the sign: "
+        "use Python's %, or add 360 to a negative result)")
+    assert _angle_about_y(scene.get_component(house, TransformComponent).quaternion, expected)

@@ -28,13 +28,18 @@ def _random_lights(rng: np.random.Generator, count: int) -> list[tuple[LightComp
 
 def _packed(system: LightSystem, lights) -> tuple[bytes, bytes]:
     """(the system's bytes, the core's bytes) after one update of a scene holding ``lights``."""
+    _update(system, lights)
+    return system.data, pack_lights(system.components)
+
+
+def _update(system: LightSystem, lights) -> None:
+    """One update of a scene holding ``lights`` with ``system`` (only the student's code runs)."""
     scene = Scene("lights")
     for light, transform in lights:
         scene.create_entity(transform, light)
     scene.add_system(TransformSystem())
     scene.add_system(system)
     scene.update(0.0)
-    return system.data, pack_lights(system.components)
 
 
 def _assert_same_block(actual: bytes, expected: bytes) -> None:
@@ -61,8 +66,10 @@ def test_no_lights_is_an_empty_block(impl):
 @pytest.mark.exercise("LightCollectionSystem")
 def test_more_than_max_lights_warns_and_keeps_the_first(impl):
     lights = [(LightComponent("point", (1, 1, 1), 1.0), TransformComponent((i, 0, 0))) for i in range(MAX_LIGHTS + 6)]
-    with pytest.warns(UserWarning, match=str(MAX_LIGHTS)):
-        actual, _ = _packed(impl.LightCollectionSystem(), lights)
+    system = impl.LightCollectionSystem()
+    with pytest.warns(UserWarning, match=str(MAX_LIGHTS)):  # only the student's code runs inside this block
+        _update(system, lights)
+    actual = system.data
     with pytest.warns(UserWarning):
         expected = pack_lights([(light, t) for light, t in lights])
     _assert_same_block(actual, expected)
@@ -77,3 +84,27 @@ def test_rendering_with_the_system_equals_the_core_lights(impl, backend):
     core = render(backend, solutions, sphere_scene(material, lights, light_system=LightSystem()))
     assert np.abs(mine.astype(int) - core.astype(int)).max() <= 1
     assert mine[..., :3].max() > 40  # something is lit
+
+
+@pytest.mark.exercise("LightCollectionSystem")
+def test_a_parented_light_is_placed_by_its_world_position(impl):
+    """"(world position, 1)": a point light under a moved and turned parent is where the parent puts it, and a
+    directional light under a turned parent shines along its world -Z, not its local one."""
+    from gandalf_core.components import LinkComponent
+
+    scene = Scene("parented lights")
+    parent = scene.create_entity(TransformComponent((3.0, 1.0, -2.0), (0.0, 90.0, 0.0), 2.0))
+    scene.create_entity(TransformComponent((1.0, 0.5, 0.0)), LightComponent("point", (1, 1, 1), 2.0),
+                        LinkComponent(parent))
+    scene.create_entity(TransformComponent(rotation=(-40.0, 0.0, 0.0)), LightComponent("directional"),
+                        LinkComponent(parent))
+    scene.add_system(TransformSystem())
+    system = scene.add_system(impl.LightCollectionSystem())
+    scene.update(0.0)
+    expected = pack_lights(system.components)
+    block = np.frombuffer(system.data, np.float32)
+    positions = block[8:8 + 8].reshape(2, 4)
+    want = np.frombuffer(expected, np.float32)[8:8 + 8].reshape(2, 4)
+    assert np.allclose(positions, want, atol=1e-5), (
+        f"light positions/directions {positions.tolist()} expected {want.tolist()}: use the world matrix "
+        "(transform.world), not the local translation and rotation")
