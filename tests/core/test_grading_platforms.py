@@ -63,7 +63,7 @@ def _classroom() -> list[dict]:
 
 def test_classroom_configuration_has_one_entry_per_step():
     tests = _classroom()
-    steps = sorted(p.name for p in (ROOT / "tests").glob("step0[1-6]_*") if p.is_dir())
+    steps = sorted(p.name for p in (ROOT / "tests").glob("step0[1-7]_*") if p.is_dir())
     named = [shlex.split(t["run"])[3] for t in tests]
     assert named == [f"tests/{s}" for s in steps]
     for t in tests:
@@ -74,7 +74,7 @@ def test_classroom_configuration_has_one_entry_per_step():
     assert "education/autograding" in workflow and "scripts/setup.sh" in workflow
 
 
-@pytest.mark.parametrize("entry", range(6))
+@pytest.mark.parametrize("entry", range(7))
 def test_each_classroom_command_collects_its_graded_tests(entry):
     t = _classroom()[entry]
     args = shlex.split(t["run"])
