@@ -1,8 +1,9 @@
 """Helpers for tests and the autograder: headless renders and image comparison with stated tolerances.
 
-``compare_images`` writes the actual, expected and an amplified difference image under
-``tests/_failures/`` (or ``$GANDALF_FAILURE_DIR``) when a comparison fails, so a student or CI log can
-show what went wrong. Set ``GANDALF_UPDATE_REFERENCES=1`` to (re)write reference images.
+``compare_images`` writes the actual, expected and an amplified difference image when a comparison fails, so a
+student or CI log can show what went wrong: into ``$GANDALF_FAILURE_DIR`` when it is set, else ``tests/_failures/`` of
+a checkout, else ``gandalf-failures/`` in the current folder (never into an installed package's folder).
+Set ``GANDALF_UPDATE_REFERENCES=1`` to (re)write reference images.
 """
 
 from __future__ import annotations
@@ -17,9 +18,16 @@ from numpy.typing import ArrayLike
 from .app import Application
 from .ecs import Scene
 
-FAILURE_DIR = Path(
-    os.environ.get("GANDALF_FAILURE_DIR", Path(__file__).resolve().parent.parent / "tests" / "_failures")
-)
+
+def _failure_dir() -> Path:
+    chosen = os.environ.get("GANDALF_FAILURE_DIR")
+    if chosen:
+        return Path(chosen)
+    checkout_tests = Path(__file__).resolve().parent.parent / "tests"
+    return checkout_tests / "_failures" if checkout_tests.is_dir() else Path.cwd() / "gandalf-failures"
+
+
+FAILURE_DIR = _failure_dir()
 
 
 def render_frames(create_app: Callable[..., Application], frames: int = 1, **kwargs: object) -> np.ndarray:
