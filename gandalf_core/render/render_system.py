@@ -134,16 +134,25 @@ class RenderSystem(System):
         self._number_batches()
         self._rows = np.concatenate([b.rows for b in self.batches])
 
-    def _split_mirrored(self, world: np.ndarray) -> list[DrawBatch]:
-        """This frame's batches, with each batch's mirrored instances (negative determinant) split into a
-        batch of their own; the batches themselves when nothing is mirrored (the common case: one vectorised
-        triple product per instance, no copies)."""
-        rows = self._rows
-        m = world[rows, :3, :3]
-        det = np.einsum("ij,ij->i", m[:, :, 0], np.cross(m[:, :, 1], m[:, :, 2]))
-        flipped = det < 0.0
-        if not flipped.any():
-            return self.batches
+    def _mirrored(self, world: np.ndarray) -> np.ndarray:
+        """Per packed instance: does its world matrix flip handedness (negative determinant)?
+
+        Read from the float32 rows just packed (no second gather of the float64 matrices: this runs every
+        frame); the few rows where float32 cannot tell (a determinant that underflows to 0 or overflows, at
+        scales like 1e-20 or 1e20) are decided again in float64 from the world matrices."""
+        p = self._instances.reshape(-1, 3, 4)
+        with np.errstate(over="ignore", invalid="ignore"):  # the rows it overflows in are decided below
+            det = np.einsum("ij,ij->i", p[:, :, 0], np.cross(p[:, :, 1], p[:, :, 2]))
+        unsure = ~np.isfinite(det) | (det == 0.0)
+        if unsure.any():
+            rows = np.arange(len(world))[self._rows][unsure]
+            m = world[rows, :3, :3]
+            m = m / np.abs(m).max(axis=(1, 2), keepdims=True).clip(min=np.finfo(np.float64).tiny)
+            det[unsure] = np.einsum("ij,ij->i", m[:, :, 0], np.cross(m[:, :, 1], m[:, :, 2]))
+        return det < 0.0
+
+    def _split_mirrored(self, flipped: np.ndarray) -> list[DrawBatch]:
+        """The frame's batches with each batch's mirrored instances split into a batch of their own."""
         batches, first = [], 0
         for batch in self.batches:
             mask = flipped[first:first + batch.count]
@@ -185,10 +194,14 @@ class RenderSystem(System):
         batches = self.batches
         if batches:
             world = scene.store(TransformComponent).columns["world"]
-            self._sort_transparent(world, view)
-            batches = self._split_mirrored(world)
-            rows = self._rows if batches is self.batches else np.concatenate([b.rows for b in batches])
-            self._instances = pack_instances(world, rows, self._instances, origin)
+            self._sort_transparent(world, view)  # may reorder the blended batches: a new self.batches
+            batches = self.batches
+            self._instances = pack_instances(world, self._rows, self._instances, origin)
+            flipped = self._mirrored(world)
+            if flipped.any():  # rare: mirrored instances get batches of their own, and the rows are packed anew
+                batches = self._split_mirrored(flipped)
+                rows = np.concatenate([b.rows for b in batches])
+                self._instances = pack_instances(world, rows, self._instances, origin)
         light_systems = [s for s in scene.systems if isinstance(s, LightSystem)]
         # The light system knows the lights, the renderer the depth range their shadow projection needs.
         lights = (light_systems[0].relative(origin) + light_systems[0].shadow(self.renderer.depth_range, origin)

@@ -74,3 +74,23 @@ def test_mirrored_and_plain_instances_in_one_batch(backend):
 def test_mirrored_with_shadows(backend):
     assert_same(render(backend, [(1.0, 1.0, -1.0)], shadows=True), render(backend, [(1.0, 1.0, 1.0)], shadows=True),
                 "mirrored, with a shadow-casting light")
+
+
+@pytest.mark.parametrize("s", [1e-20, 1e20])
+def test_mirroring_is_seen_at_extreme_scales(s):
+    """The mirror test reads the packed float32 rows; where float32 cannot tell (1e-20 or 1e20 cubed) it decides in
+    float64, so a mirrored tiny or huge instance still gets its own clockwise batch."""
+    from gandalf_core.render.render_system import RenderSystem
+
+    scene = Scene("extreme")
+    scene.assets.mesh("sphere", uv_sphere(0.8, 8, 4))
+    scene.assets.material("M", MaterialData("lit"))
+    for scale in ((s, s, s), (-s, s, s)):
+        scene.create_entity(TransformComponent(scale=scale), MeshComponent("sphere"), MaterialComponent("M"))
+    with Application("opengl", 8, 8, headless=True) as app:
+        app.renderer.shaders.build("lit", SHADERS / "lit.vert", SHADERS / "lit.frag")
+        app.add_scene(scene)
+        app.step()
+        system = next(x for x in scene.systems if isinstance(x, RenderSystem))
+        batches = system.frame_data(0.0).batches
+    assert sorted((b.mirrored, b.count) for b in batches) == [(False, 1), (True, 1)]
