@@ -4,7 +4,8 @@
     Sobel edges         | Sobel edges of the blur (less noise)
 
 The GPU filters run once at start-up (``compute_gl.py`` / ``compute_wgpu.py``, in the variant files); their
-results are read back and registered as ordinary ``TextureData`` assets, drawn by an unlit textured material.
+results are read back and registered as ordinary ``TextureData`` assets, drawn by the core's ready unlit material
+(``gandalf.unlit``).
 That keeps the engine untouched: a texture asset is CPU data the renderer uploads. The round trip costs one
 read-back per image at start-up, nothing per frame.
 """

@@ -18,8 +18,8 @@ from gandalf_core.render.shader_files import load_shader
 from gandalf_core.resources import ShaderSource
 
 SHADER_DIR = Path(__file__).resolve().parent / "shaders"
-#: The display material's shader (a textured quad, unlit).
-DISPLAY_SHADER = "filter_textured"
+#: The display material's shader: the core's ready unlit material (colour times one texture), in both APIs.
+DISPLAY_SHADER = "gandalf.unlit"
 #: Output formats per API: the float intermediate and the 8-bit result.
 FORMATS = {
     "opengl": {"float": "rgba32f", "unorm8": "rgba8"},
