@@ -1,0 +1,409 @@
+"""One layout rule for every uniform block: GLSL's std140 and WGSL's uniform address space, packed by field name.
+
+A block is declared once, as a list of fields::
+
+    LIGHT = Struct("Light", [("position", "vec4"), ("color", "vec4")])
+    layout = BlockLayout("Lights", [("count", "u32"), ("ambient", "vec3"), ("lights", (LIGHT, 8))])
+    layout.offset("lights[1].color"), layout.size, layout.pack({"count": 1, "ambient": (0.1, 0.1, 0.1), ...})
+
+Types are the course's: scalars (``f32``/``float``, ``i32``/``int``, ``u32``/``uint``), vectors (``vec3``,
+``vec3<f32>``, ``vec3f``, ``ivec4``, ``vec4<u32>`` ...), square matrices (``mat3``, ``mat4x4<f32>`` ...; stored as
+columns, each padded like a ``vec4`` for mat3), fixed-size arrays ``(type, count)`` and structs (:class:`Struct`, or
+its name when ``structs=`` maps names to them). A field is ``(name, type)`` or ``(name, type, default)``.
+
+``rules`` picks the layout: ``"std140"`` (GLSL), ``"wgsl"`` (WGSL's uniform address space: natural alignment,
+with its extra rules checked) or ``"both"`` (the default): the block must lay out the same way under both, so the
+same bytes feed a GLSL ``layout(std140) uniform`` block and a WGSL ``var<uniform>`` struct. Where they differ
+(``mat2``, an array of scalars, a struct not padded to 16 bytes) the error names the block and the field.
+
+Values: scalars a number; vectors N numbers; matrices an ``(n, n)`` array in maths convention (row, column) or
+``n·n`` floats row-major (written column by column); arrays a leading axis (structs: a sequence of dicts); structs
+a dict. Floats become float32, integers int32/uint32, only here (CPU maths stays float64).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+RULES = ("std140", "wgsl", "both")
+_MISSING = object()
+
+
+class LayoutError(ValueError):
+    """A block declaration or a value that does not fit it; the message names the block and the field."""
+
+
+def _round_up(align: int, n: int) -> int:
+    return -(-n // align) * align
+
+
+# --- types ------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Leaf:
+    """A scalar, vector or square matrix: ``kind`` 'f', 'i' or 'u'; ``columns`` 0 for scalars and vectors."""
+
+    name: str
+    kind: str
+    rows: int  # 1 for a scalar
+    columns: int = 0  # matrices: number of columns (= rows)
+
+    @property
+    def dtype(self) -> np.dtype:
+        return np.dtype({"f": "<f4", "i": "<i4", "u": "<u4"}[self.kind])
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        if self.columns:
+            return (self.rows, self.columns)
+        return () if self.rows == 1 else (self.rows,)
+
+
+@dataclass(frozen=True)
+class Struct:
+    """A struct type: its name and fields (``(name, type)`` or ``(name, type, default)``)."""
+
+    name: str
+    fields: Sequence[tuple[Any, ...]]
+
+
+@dataclass(frozen=True)
+class Array:
+    elem: Any  # Leaf | Array | Struct
+    count: int
+
+
+_SCALARS = {"f32": "f", "float": "f", "i32": "i", "int": "i", "u32": "u", "uint": "u"}
+_GLSL_VEC = re.compile(r"^([iu]?)vec([234])$")
+_WGSL_VEC = re.compile(r"^vec([234])(?:<(f32|i32|u32)>|([fiu]))$")
+_GLSL_MAT = re.compile(r"^mat([234])(?:x([234]))?$")
+_WGSL_MAT = re.compile(r"^mat([234])x([234])(?:<f32>|f)$")
+
+
+def parse_type(text: str) -> Leaf:
+    """A scalar, vector or matrix type named in GLSL or WGSL (``vec3``, ``vec3<f32>``, ``vec3f``, ``mat4``)."""
+    t = text.replace(" ", "")
+    if t in _SCALARS:
+        return Leaf(t, _SCALARS[t], 1)
+    if m := _GLSL_VEC.match(t):
+        return Leaf(t, {"": "f", "i": "i", "u": "u"}[m.group(1)], int(m.group(2)))
+    if m := _WGSL_VEC.match(t):
+        kind = (m.group(2) or m.group(3))[0]
+        return Leaf(t, kind, int(m.group(1)))
+    if (m := _GLSL_MAT.match(t)) or (m := _WGSL_MAT.match(t)):
+        columns, rows = int(m.group(1)), int(m.group(2) or m.group(1))
+        if columns != rows:
+            raise ValueError(f"type '{text}': only square matrices are supported")
+        return Leaf(t, "f", rows, columns)
+    raise ValueError(f"unknown type '{text}' (expected a scalar, vector or square matrix, e.g. float, vec3, mat4)")
+
+
+# --- sizes and alignments under each rule ---------------------------------------------------------
+def _leaf_layout(leaf: Leaf, rules: str) -> tuple[int, int]:
+    """(align, size) of a leaf."""
+    if leaf.columns:  # a matrix: an array of column vectors
+        col_align, col_size = _leaf_layout(Leaf("", "f", leaf.rows), rules)
+        if rules == "std140":
+            return 16, 16 * leaf.columns
+        return col_align, leaf.columns * _round_up(col_align, col_size)
+    n = leaf.rows
+    return {1: 4, 2: 8, 3: 16, 4: 16}[n], 4 * n
+
+
+@dataclass(frozen=True)
+class FieldInfo:
+    """A laid-out field: byte ``offset``, ``size``, ``align``; ``stride`` for arrays (0 otherwise)."""
+
+    name: str
+    type: Any
+    offset: int
+    size: int
+    align: int
+    stride: int = 0
+    default: Any = _MISSING
+    members: tuple[FieldInfo, ...] = ()  # a struct's fields (of one element, for an array of structs)
+
+    @property
+    def has_default(self) -> bool:
+        return self.default is not _MISSING
+
+
+def _type_name(t: Any) -> str:
+    if isinstance(t, Leaf):
+        return t.name
+    if isinstance(t, Struct):
+        return t.name
+    if isinstance(t, Array):
+        return f"{_type_name(t.elem)}[{t.count}]"
+    return str(t)
+
+
+class BlockLayout:
+    """A uniform block's layout, declared once by field list; :meth:`pack` makes its bytes by field name."""
+
+    def __init__(self, name: str, fields: Sequence[tuple[Any, ...]], *, rules: str = "both",
+                 structs: Mapping[str, Struct | Sequence[tuple[Any, ...]]] | None = None) -> None:
+        if rules not in RULES:
+            raise ValueError(f"block '{name}': rules must be one of {RULES}, got {rules!r}")
+        self.name, self.rules = name, rules
+        self._structs = {k: v if isinstance(v, Struct) else Struct(k, v) for k, v in (structs or {}).items()}
+        if not fields:
+            raise LayoutError(f"block '{name}': no fields")
+        if rules == "both":
+            std140 = self._lay_struct(name, fields, "std140", name)
+            wgsl = self._lay_struct(name, fields, "wgsl", name)
+            _compare(name, std140[2], wgsl[2], name)
+            self.align, self.size, self.fields = std140
+            self.size = max(self.size, wgsl[1])
+        else:
+            self.align, self.size, self.fields = self._lay_struct(name, fields, rules, name)
+        self._by_name = {f.name: f for f in self.fields}
+        self._pack_cache: bytes | None = None
+
+    # --- laying out -----------------------------------------------------------------------------
+    def _resolve(self, t: Any, path: str) -> Any:
+        if isinstance(t, (Leaf, Struct, Array)):
+            return t
+        if isinstance(t, tuple) and len(t) == 2 and isinstance(t[1], (int, np.integer)):
+            if int(t[1]) < 1:
+                raise LayoutError(f"block '{self.name}' field '{path}': array count must be ≥ 1, got {t[1]}")
+            return Array(self._resolve(t[0], path), int(t[1]))
+        if isinstance(t, str):
+            if t in self._structs:
+                return self._structs[t]
+            try:
+                return parse_type(t)
+            except ValueError as exc:
+                raise LayoutError(f"block '{self.name}' field '{path}': {exc}") from None
+        raise LayoutError(f"block '{self.name}' field '{path}': cannot read type {t!r}")
+
+    def _lay(self, t: Any, rules: str, path: str) -> tuple[int, int, int, tuple[FieldInfo, ...]]:
+        """(align, size, stride, members) of a resolved type."""
+        if isinstance(t, Leaf):
+            align, size = _leaf_layout(t, rules)
+            return align, size, 0, ()
+        if isinstance(t, Struct):
+            align, size, members = self._lay_struct(t.name, t.fields, rules, path)
+            return align, size, 0, members
+        elem_align, elem_size, _, members = self._lay(t.elem, rules, path + "[]")
+        if rules == "std140":
+            align = _round_up(16, elem_align)
+            stride = _round_up(align, elem_size)
+        else:
+            align, stride = elem_align, _round_up(elem_align, elem_size)
+            if stride % 16:
+                raise LayoutError(f"block '{self.name}' field '{path}': an array in a WGSL uniform block needs an "
+                                  f"element stride that is a multiple of 16, {_type_name(t.elem)} has {stride} "
+                                  "(use vec4 elements, or pad the struct)")
+        return align, stride * t.count, stride, members
+
+    def _lay_struct(self, name: str, fields: Sequence[tuple[Any, ...]], rules: str,
+                    path: str) -> tuple[int, int, tuple[FieldInfo, ...]]:
+        offset, max_align, out, min_next = 0, 4 if rules == "wgsl" else 16, [], 0
+        seen: set[str] = set()
+        for spec in fields:
+            if not isinstance(spec, tuple) or len(spec) not in (2, 3) or not isinstance(spec[0], str):
+                raise LayoutError(f"block '{self.name}' ({path}): a field is (name, type) or (name, type, default), "
+                                  f"got {spec!r}")
+            fname = spec[0]
+            if fname in seen:
+                raise LayoutError(f"block '{self.name}' field '{_join(path, self.name, fname)}': declared twice")
+            seen.add(fname)
+            fpath = _join(path, self.name, fname)
+            t = self._resolve(spec[1], fpath)
+            align, size, stride, members = self._lay(t, rules, fpath)
+            start = _round_up(align, max(offset, min_next))
+            if rules == "wgsl":
+                needs16 = isinstance(t, (Struct, Array))
+                if needs16 and start % 16:
+                    raise LayoutError(f"block '{self.name}' field '{fpath}': WGSL's uniform address space puts a "
+                                      f"{'struct' if isinstance(t, Struct) else 'array'} at a multiple of 16 bytes, "
+                                      f"here it falls at {start} (add padding before it)")
+                if min_next and offset < min_next:
+                    raise LayoutError(f"block '{self.name}' field '{fpath}': WGSL's uniform address space needs "
+                                      f"{min_next - offset} more bytes after the struct before it (pad that struct "
+                                      "to a multiple of 16 bytes)")
+                min_next = start + _round_up(16, size) if isinstance(t, Struct) else 0
+            default = spec[2] if len(spec) == 3 else _MISSING
+            out.append(FieldInfo(fname, t, start, size, align, stride, default, members))
+            offset = start + size
+            max_align = max(max_align, align)
+        if rules == "std140":
+            max_align = _round_up(16, max_align)
+        return max_align, _round_up(max_align, offset), tuple(out)
+
+    # --- queries --------------------------------------------------------------------------------
+    def field(self, path: str) -> FieldInfo:
+        """The field at ``path`` (``"ambient"``, ``"lights[2].color"``), offsets from the block's start."""
+        fields, base, found = self.fields, 0, None
+        for part in path.split("."):
+            m = re.fullmatch(r"(\w+)(?:\[(\d+)\])?", part)
+            named = {f.name: f for f in fields}
+            if m is None or m.group(1) not in named:
+                raise LayoutError(f"block '{self.name}' has no field '{path}' (fields: {', '.join(named)})")
+            f = named[m.group(1)]
+            offset = base + f.offset
+            if m.group(2) is not None:
+                if not isinstance(f.type, Array) or int(m.group(2)) >= f.type.count:
+                    raise LayoutError(f"block '{self.name}' field '{path}': index out of range or not an array")
+                offset += int(m.group(2)) * f.stride
+                elem = f.type.elem
+                size = f.stride if isinstance(elem, Struct) else f.size // f.type.count
+                f = FieldInfo(f"{f.name}[{m.group(2)}]", elem, 0, size, f.align, 0, _MISSING, f.members)
+            found = FieldInfo(f.name, f.type, offset, f.size, f.align, f.stride, f.default, f.members)
+            fields, base = f.members, offset
+        assert found is not None
+        return found
+
+    def offset(self, path: str) -> int:
+        """Byte offset of the field at ``path`` (see :meth:`field`)."""
+        return self.field(path).offset
+
+    def names(self) -> list[str]:
+        return [f.name for f in self.fields]
+
+    def leaves(self) -> list[tuple[str, int, str]]:
+        """Every scalar/vector/matrix in the block as ``(path, offset, type)``; arrays as their first element
+        ``name[0]`` (then the array stride gives the others) — how GL's introspection names block members."""
+        out: list[tuple[str, int, str]] = []
+
+        def walk(fields: tuple[FieldInfo, ...], prefix: str, base: int) -> None:
+            for f in fields:
+                t, path = f.type, prefix + f.name
+                if isinstance(t, Array):
+                    elem = t.elem
+                    if isinstance(elem, Struct):
+                        for i in range(t.count):
+                            walk(f.members, f"{path}[{i}].", base + f.offset + i * f.stride)
+                    else:
+                        out.append((f"{path}[0]", base + f.offset, _type_name(elem)))
+                elif isinstance(t, Struct):
+                    walk(f.members, path + ".", base + f.offset)
+                else:
+                    out.append((path, base + f.offset, t.name))
+
+        walk(self.fields, "", 0)
+        return out
+
+    def __repr__(self) -> str:
+        inner = ", ".join(f"{f.name}: {_type_name(f.type)} @{f.offset}" for f in self.fields)
+        return f"BlockLayout({self.name!r}, {self.rules}, size {self.size}: {inner})"
+
+    # --- packing --------------------------------------------------------------------------------
+    def pack(self, values: Mapping[str, Any]) -> bytes:
+        """The block's bytes, each field from ``values`` by name (a field with a default may be left out)."""
+        buf = bytearray(self.size)
+        self._write_struct(buf, 0, self.fields, values, "")
+        return bytes(buf)
+
+    def _write_struct(self, buf: bytearray, base: int, fields: tuple[FieldInfo, ...], values: Any,
+                      prefix: str) -> None:
+        if not isinstance(values, Mapping):
+            raise LayoutError(f"block '{self.name}' field '{prefix.rstrip('.') or self.name}': expected a dict of "
+                              f"fields, got {type(values).__name__}")
+        names = {f.name for f in fields}
+        for key in values:
+            if key not in names:
+                raise LayoutError(f"block '{self.name}' has no field '{prefix}{key}' "
+                                  f"(fields: {', '.join(f.name for f in fields)})")
+        for f in fields:
+            value = values.get(f.name, _MISSING)
+            if value is _MISSING:
+                if not f.has_default:
+                    raise LayoutError(f"block '{self.name}' field '{prefix}{f.name}': no value given and no default")
+                value = f.default
+                if np.ndim(value) == 0 and not isinstance(f.type, Struct):  # a scalar default fills the field
+                    value = np.full(_flat_count(f.type), value)
+            self._write(buf, base + f.offset, f, f.type, value, prefix + f.name)
+
+    def _write(self, buf: bytearray, offset: int, f: FieldInfo, t: Any, value: Any, path: str) -> None:
+        if isinstance(t, Struct):
+            self._write_struct(buf, offset, f.members, value, path + ".")
+            return
+        if isinstance(t, Array) and isinstance(t.elem, Struct):
+            items = list(value) if not isinstance(value, Mapping) else [value]
+            if len(items) != t.count:
+                raise LayoutError(f"block '{self.name}' field '{path}': expected {t.count} elements "
+                                  f"({_type_name(t)}), got {len(items)}")
+            for i, item in enumerate(items):
+                self._write_struct(buf, offset + i * f.stride, f.members, item, f"{path}[{i}].")
+            return
+        count = t.count if isinstance(t, Array) else None
+        leaf = t.elem if isinstance(t, Array) else t
+        if not isinstance(leaf, Leaf):
+            raise LayoutError(f"block '{self.name}' field '{path}': arrays of arrays are not supported")
+        arr = _numbers(self.name, path, value, leaf, count)
+        shape, strides = leaf.shape, _leaf_strides(leaf, self.rules)
+        if count is not None:
+            shape, strides = (count, *shape), (f.stride, *strides)
+        np.ndarray(shape, leaf.dtype, buffer=buf, offset=offset, strides=strides)[...] = arr
+
+
+def _join(path: str, block: str, name: str) -> str:
+    return name if path == block else f"{path}.{name}"
+
+
+def _flat_count(t: Any) -> int:
+    if isinstance(t, Array):
+        return t.count * _flat_count(t.elem)
+    return int(np.prod(t.shape)) if t.shape else 1
+
+
+def _leaf_strides(leaf: Leaf, rules: str) -> tuple[int, ...]:
+    if leaf.columns:  # (row, column): rows 4 bytes apart, columns one padded column vector apart
+        col = 16 if rules in ("std140", "both") or leaf.rows != 2 else 8
+        return (4, col)
+    return () if leaf.rows == 1 else (4,)
+
+
+def _numbers(block: str, path: str, value: Any, leaf: Leaf, count: int | None) -> np.ndarray:
+    want = leaf.shape if count is None else (count, *leaf.shape)
+    try:
+        arr = np.asarray(value, dtype=np.float64 if leaf.kind == "f" else None)
+        if leaf.kind != "f":
+            arr = np.asarray(value)
+    except (TypeError, ValueError):
+        raise LayoutError(f"block '{block}' field '{path}': expected numbers for {leaf.name}, got {value!r}") from None
+    if arr.dtype.kind not in "biuf":
+        raise LayoutError(f"block '{block}' field '{path}': expected numbers for {leaf.name}, got {value!r}")
+    n = int(np.prod(want)) if want else 1
+    if arr.shape != want:
+        if arr.size != n:
+            what = f"{count} × {leaf.name}" if count is not None else leaf.name
+            raise LayoutError(f"block '{block}' field '{path}': expected {n} value(s) ({what}), got {arr.size} "
+                              f"(shape {arr.shape})")
+        arr = arr.reshape(want)  # flat: a matrix's n·n floats row-major, an array's elements one after another
+    if leaf.kind == "f":
+        if not np.all(np.isfinite(arr)):
+            raise LayoutError(f"block '{block}' field '{path}': values must be finite, got {value!r}")
+        with np.errstate(over="ignore"):
+            converted = arr.astype(np.float32)
+        if not np.all(np.isfinite(converted)):
+            raise LayoutError(f"block '{block}' field '{path}': values beyond float32's range, got {value!r}")
+        return converted
+    if arr.dtype.kind == "f" and not np.array_equal(arr, np.trunc(arr)):
+        raise LayoutError(f"block '{block}' field '{path}': {leaf.name} holds integers, got {value!r}")
+    info = np.iinfo(leaf.dtype)
+    if arr.size and (arr.min() < info.min or arr.max() > info.max):
+        raise LayoutError(f"block '{block}' field '{path}': out of {leaf.name}'s range [{info.min}, {info.max}], "
+                          f"got {value!r}")
+    return arr.astype(leaf.dtype)
+
+
+def _compare(block: str, a: tuple[FieldInfo, ...], b: tuple[FieldInfo, ...], path: str) -> None:
+    """Raise when the std140 (``a``) and WGSL (``b``) layouts of the same fields differ."""
+    for fa, fb in zip(a, b):
+        where = fa.name if path == block else f"{path}.{fa.name}"
+        if (fa.offset, fa.size, fa.stride) != (fb.offset, fb.size, fb.stride):
+            hint = ("mat2's columns are 16 bytes apart in std140 and 8 in WGSL: use vec4 or mat4"
+                    if isinstance(fa.type, Leaf) and fa.type.columns == 2 else
+                    "pad it so both rules agree (vec4 elements, structs padded to 16 bytes)")
+            raise LayoutError(f"block '{block}' field '{where}': std140 puts it at offset {fa.offset} (size {fa.size}"
+                              f"{f', stride {fa.stride}' if fa.stride else ''}), WGSL at {fb.offset} (size {fb.size}"
+                              f"{f', stride {fb.stride}' if fb.stride else ''}): {hint}")
+        if fa.members:
+            _compare(block, fa.members, fb.members, where)
