@@ -6,8 +6,9 @@ last row is always 0 0 0 1): 48 bytes an instance, uploaded in one write per fra
 the model matrix from the rows and the normal matrix from cross products of its columns, so the CPU
 never inverts a matrix per entity.
 
-The frame and light uniform blocks are the same bytes in GLSL (std140) and WGSL because they hold
-only mat4/vec4 members and vec4 arrays (see ``shaders/frame.glsl`` and ``shaders/frame.wgsl``).
+The frame and light uniform blocks are declared once (``resources/blocks.py``: FRAME_LAYOUT, LIGHTS_LAYOUT) and
+packed by field name with the one layout rule (``resources/layout.py``): the same bytes in GLSL (std140) and WGSL
+(see ``shaders/frame.glsl`` and ``shaders/frame.wgsl``).
 
 **Camera-relative positions.** Everything the GPU sees is relative to the camera: the instance rows' translations,
 the view matrix, point lights and the shadow projection are moved by ``-origin`` (the camera's world position) in
@@ -27,6 +28,7 @@ import numpy as np
 from ..resources import MaterialData
 
 # The lights block's sizes live below the systems that pack it; the renderers read them from here too.
+from ..resources.blocks import FRAME_LAYOUT as FRAME_LAYOUT
 from ..resources.blocks import LIGHTS_BLOCK_BYTES as LIGHTS_BLOCK_BYTES
 from ..resources.blocks import LIGHTS_BYTES as LIGHTS_BYTES
 from ..resources.blocks import MAX_LIGHTS as MAX_LIGHTS
@@ -36,7 +38,7 @@ from ..resources.blocks import SHADOW_MAP_SIZE as SHADOW_MAP_SIZE
 INSTANCE_FLOATS = 12
 INSTANCE_STRIDE = INSTANCE_FLOATS * 4
 # view, projection, camera_position, time, clip_to_direction, depth, origin_high, origin_low
-FRAME_FLOATS = 16 + 16 + 4 + 4 + 16 + 4 + 4 + 4
+FRAME_FLOATS = FRAME_LAYOUT.size // 4
 #: ``time.x`` wraps after this many seconds: float32's step at 1024 s is 1.2e-4 s, under 1% of 1/60 s.
 TIME_WRAP = 1024.0
 
@@ -99,15 +101,9 @@ def pack_frame(
     draws at the far one. ``clip_to_direction`` maps a clip-space point on the far plane to a world
     direction (the inverse of projection × the view's rotation).
     """
-    data = np.zeros(FRAME_FLOATS, dtype=np.float32)
-    data[0:16] = view.T.ravel()
-    data[16:32] = projection.T.ravel()
-    data[32:35] = camera_position
-    data[35] = 1.0
     wraps, wrapped = divmod(float(time), TIME_WRAP)
-    data[36] = wrapped
-    data[37] = dt
-    data[38] = wraps
+    values = {"view": view, "projection": projection, "camera_position": (*np.asarray(camera_position)[:3], 1.0),
+              "time": (wrapped, dt, wraps, 0.0), "depth": (*depth_ends, 0.0, 0.0)}
     rotation_only = np.eye(4)
     rotation_only[:3, :3] = view[:3, :3]
     if projection[3, 3] != 0.0 and projection[3, 2] == 0.0:
@@ -119,15 +115,14 @@ def pack_frame(
         clip_to_direction = np.linalg.inv(projection @ rotation_only)
     except np.linalg.LinAlgError:
         clip_to_direction = np.eye(4)
-    data[40:56] = clip_to_direction.T.ravel()
-    data[56] = depth_ends[0]
-    data[57] = depth_ends[1]
+    values["clip_to_direction"] = clip_to_direction
+    high = low = np.zeros(3)
     if origin is not None:
         origin = np.asarray(origin, dtype=np.float64)
-        high = origin.astype(np.float32)
-        data[60:63] = high
-        data[64:67] = (origin - high.astype(np.float64)).astype(np.float32)
-    return data.tobytes()
+        high = origin.astype(np.float32).astype(np.float64)
+        low = origin - high
+    values["origin_high"], values["origin_low"] = (*high, 0.0), (*low, 0.0)
+    return FRAME_LAYOUT.pack(values)
 
 
 def instance_capacity(nbytes: int) -> int:

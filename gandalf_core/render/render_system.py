@@ -22,15 +22,16 @@ from ..components import (
 from ..ecs import System
 from ..math import depth_range, invert_affine
 from ..resources import MaterialData
+from ..resources.blocks import LIGHTS_LAYOUT
 from ..systems.light_system import LightSystem, pack_lights, pack_shadow
 from .base import Renderer
 from .color import srgb_rgba_to_linear
-from .frame import LIGHTS_BYTES, DrawBatch, FrameData, pack_frame, pack_instances
+from .frame import DrawBatch, FrameData, pack_frame, pack_instances
 
 DEFAULT_CLEAR = (0.0, 0.0, 0.0, 1.0)
 _NO_LIGHTS = pack_lights([]) + pack_shadow([])
-# Offset of shadow.x in the lights block: after the lights part and the light's view-projection matrix.
-_SHADOW_ON_OFFSET = LIGHTS_BYTES + 64
+# Offset of shadow.x in the lights block.
+_SHADOW_ON_OFFSET = LIGHTS_LAYOUT.offset("shadow")
 
 
 class RenderSystem(System):

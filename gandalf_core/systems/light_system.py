@@ -1,6 +1,7 @@
 """The light system: collects every Light into the lights uniform block, once per frame.
 
-The block has the same bytes in GLSL (std140) and WGSL (see ``render/shaders/frame.glsl``)::
+The block is declared once, :data:`~gandalf_core.resources.blocks.LIGHTS_LAYOUT` (the same bytes in GLSL's std140
+and WGSL, see ``render/shaders/frame.glsl``), and packed by field name::
 
     count: ivec4 (x = lights used), ambient: vec4 (rgb, linear),
     position[64]: vec4 (xyz position with w = 1, or direction towards the light with w = 0),
@@ -24,7 +25,7 @@ from ..components import TransformComponent
 from ..components.light import LightComponent
 from ..ecs import System
 from ..math import orthographic
-from ..resources.blocks import LIGHTS_BYTES, MAX_LIGHTS, SHADOW_BYTES, SHADOW_MAP_SIZE
+from ..resources.blocks import LIGHTS_BYTES, LIGHTS_LAYOUT, MAX_LIGHTS, SHADOW_MAP_SIZE
 from ..resources.color import srgb_rgba_to_linear
 
 
@@ -59,7 +60,8 @@ def relative_lights(block: bytes, origin: np.ndarray) -> bytes:
     """A packed lights part with its point lights (w = 1) moved by ``-origin`` (in float64)."""
     data = np.frombuffer(block, dtype=np.float32).copy()
     count = int(data[0:1].view(np.int32)[0])
-    positions = data[8:8 + 4 * MAX_LIGHTS].reshape(MAX_LIGHTS, 4)[:count]
+    first = LIGHTS_LAYOUT.offset("position") // 4
+    positions = data[first:first + 4 * MAX_LIGHTS].reshape(MAX_LIGHTS, 4)[:count]
     points = positions[:, 3] == 1.0
     positions[points, :3] = positions[points, :3].astype(np.float64) - np.asarray(origin, dtype=np.float64)
     return data.tobytes()
@@ -68,11 +70,9 @@ def relative_lights(block: bytes, origin: np.ndarray) -> bytes:
 def pack_lights(components: list[tuple[Any, Any]], origin: np.ndarray | None = None) -> bytes:
     """The lights block for (LightComponent, TransformComponent) pairs (world matrices already computed); point
     lights relative to ``origin`` (subtracted in float64)."""
-    block = np.zeros(LIGHTS_BYTES // 4, dtype=np.float32)
-    count = block[0:4].view(np.int32)
-    ambient = block[4:8]
-    positions = block[8 : 8 + 4 * MAX_LIGHTS].reshape(MAX_LIGHTS, 4)
-    colors = block[8 + 4 * MAX_LIGHTS :].reshape(MAX_LIGHTS, 4)
+    ambient = np.zeros(4)
+    positions = np.zeros((MAX_LIGHTS, 4))
+    colors = np.zeros((MAX_LIGHTS, 4))
     n = dropped = 0
     for light, transform in components:
         linear = srgb_rgba_to_linear((*light.color, 1.0))[:3] * light.intensity
@@ -93,11 +93,11 @@ def pack_lights(components: list[tuple[Any, Any]], origin: np.ndarray | None = N
             positions[n] = (*towards, 0.0)
         colors[n] = (*linear, light.range)
         n += 1
-    count[0] = n
     if dropped:
         warnings.warn(f"{n + dropped} point and directional lights; only the first {MAX_LIGHTS} are used",
                       stacklevel=2)
-    return block.tobytes()
+    block = LIGHTS_LAYOUT.pack({"count": (n, 0, 0, 0), "ambient": ambient, "position": positions, "color": colors})
+    return block[:LIGHTS_BYTES]
 
 
 # --8<-- [start:pack_shadow]
@@ -111,7 +111,6 @@ def pack_shadow(components: list[tuple[Any, Any]], depth_range: str | tuple[floa
     ``2 · shadow_extent`` wide and high and ``shadow_depth`` long; ``depth_range`` is the API's NDC depth
     range, as for a camera. With ``origin`` the matrix takes positions relative to it (camera-relative rendering).
     """
-    block = np.zeros(SHADOW_BYTES // 4, dtype=np.float32)
     index = 0  # the light's slot in position[] and color[], counted as pack_lights() does
     for light, transform in components:
         if light.kind == "ambient":
@@ -126,15 +125,18 @@ def pack_shadow(components: list[tuple[Any, Any]], depth_range: str | tuple[floa
             if origin is not None:  # positions arrive relative to origin: move them back first (float64)
                 view = view.copy()
                 view[:3, 3] += view[:3, :3] @ np.asarray(origin, dtype=np.float64)
-            block[0:16] = (projection @ view).T.ravel()
             texel = 2.0 * extent / SHADOW_MAP_SIZE
             # Depth is stored in [0, 1] over the box's length in both APIs: one texel's width in those units.
             # y: the bias of one map texel's depth, scaled by the light's shadow_bias (1 by default).
-            block[16:20] = (1.0, light.shadow_bias * texel / depth, 1.0 / SHADOW_MAP_SIZE, float(index))
-            break
+            shadow = (1.0, light.shadow_bias * texel / depth, 1.0 / SHADOW_MAP_SIZE, float(index))
+            block = LIGHTS_LAYOUT.pack({"light_view_projection": projection @ view, "shadow": shadow})
+            return block[LIGHTS_BYTES:]
         index += 1
-    return block.tobytes()
+    return _NO_SHADOW
 # --8<-- [end:pack_shadow]
+
+
+_NO_SHADOW = LIGHTS_LAYOUT.pack({})[LIGHTS_BYTES:]
 
 
 def light_view(world: np.ndarray) -> np.ndarray:

@@ -151,3 +151,71 @@ def test_leaves_name_members_as_gl_introspection_does():
                                ("lights[0].color", 32, "vec4"), ("lights[1].position", 48, "vec3"),
                                ("lights[1].range", 60, "float"), ("lights[1].color", 64, "vec4"),
                                ("pos[0]", 80, "vec4")]
+
+
+# --- the engine's Frame and Lights blocks: declared once, checked against both APIs' own view ----------------
+def _engine_layouts():
+    from gandalf_core.resources.blocks import FRAME_LAYOUT, LIGHTS_LAYOUT
+
+    return {"Frame": FRAME_LAYOUT, "Lights": LIGHTS_LAYOUT}
+
+
+def test_frame_and_lights_blocks_match_the_glsl_programs_offsets():
+    """The driver's std140 offsets of every member of frame.glsl's blocks are the declared layout's."""
+    moderngl = pytest.importorskip("moderngl")
+    from gandalf_core.render.opengl.raw_gl import block_members
+    from gandalf_core.render.shader_files import SNIPPETS_DIR
+    from gandalf_core.resources.blocks import GLSL_MEMBERS
+
+    ctx = moderngl.create_standalone_context(backend="egl", require=330)
+    try:
+        src = (SNIPPETS_DIR / "frame.glsl").read_text()
+        # std140 blocks keep every member active, read or not
+        main = "void main() { gl_Position = u_view[0] + u_shadow; }"
+        program = ctx.program(vertex_shader=f"#version 330\n{src}\n{main}",
+                              fragment_shader="#version 330\nout vec4 f;\nvoid main() { f = vec4(1.0); }")
+        members = block_members(program.glo)
+        for block, layout in _engine_layouts().items():
+            names = GLSL_MEMBERS[block]
+            expected = {}
+            for path, offset, _type in layout.leaves():
+                field, _, rest = path.partition("[")
+                expected[names[field] + ("[" + rest if rest else "")] = offset
+            got = {name: offset for name, (offset, _stride) in members[block].items()}
+            assert got == expected, f"block {block}: GL offsets {got} != declared {expected}"
+            assert program[block].size == layout.size, block
+    finally:
+        ctx.release()
+
+
+def test_frame_and_lights_blocks_match_the_wgsl_structs():
+    from gandalf_core.render.shader_files import SNIPPETS_DIR
+    from gandalf_core.render.wgsl_reflect import reflect
+
+    reflection = reflect((SNIPPETS_DIR / "frame.wgsl").read_text(), "frame.wgsl")
+    for block, layout in _engine_layouts().items():
+        struct = reflection.structs[block]
+        assert [f.name for f in struct.fields] == layout.names(), block
+        assert {f.name: f.offset for f in struct.fields} == {f.name: f.offset for f in layout.fields}, block
+        assert struct.size == layout.size, block
+
+
+def test_pack_frame_and_lights_put_values_at_the_declared_offsets():
+    from gandalf_core.render.frame import pack_frame
+    from gandalf_core.resources.blocks import FRAME_LAYOUT, LIGHTS_LAYOUT
+    from gandalf_core.systems.light_system import pack_lights, pack_shadow
+
+    view = np.arange(16.0).reshape(4, 4)
+    data = pack_frame(view, np.eye(4), np.array([1.0, 2.0, 3.0]), 5.0, 0.25, (0.0, 1.0), origin=np.array([1e7 + 0.3,
+                                                                                                         0.0, 0.0]))
+    assert len(data) == FRAME_LAYOUT.size
+    floats = np.frombuffer(data, np.float32)
+    np.testing.assert_array_equal(floats[:16].reshape(4, 4).T, view)  # column-major
+    at = {name: FRAME_LAYOUT.offset(name) // 4 for name in FRAME_LAYOUT.names()}
+    np.testing.assert_array_equal(floats[at["camera_position"]:at["camera_position"] + 4], (1, 2, 3, 1))
+    np.testing.assert_array_equal(floats[at["time"]:at["time"] + 3], (5, 0.25, 0))
+    np.testing.assert_array_equal(floats[at["depth"]:at["depth"] + 2], (0, 1))
+    high, low = floats[at["origin_high"]], floats[at["origin_low"]]
+    assert float(high) + float(low) == pytest.approx(1e7 + 0.3, abs=1e-6)
+    empty = pack_lights([]) + pack_shadow([])
+    assert empty == bytes(LIGHTS_LAYOUT.size)

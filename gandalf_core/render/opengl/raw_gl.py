@@ -89,3 +89,49 @@ def blit_color(source_glo: int, target_glo: int, size: tuple[int, int], target_s
     bind(GL_READ_FRAMEBUFFER, source_glo)
     bind(GL_DRAW_FRAMEBUFFER, target_glo)
     blit(0, 0, *size, 0, 0, *target_size, GL_COLOR_BUFFER_BIT, GL_NEAREST)
+
+
+GL_ACTIVE_UNIFORMS = 0x8B86
+GL_UNIFORM_BLOCK_INDEX = 0x8A3A
+GL_UNIFORM_OFFSET = 0x8A3B
+GL_UNIFORM_ARRAY_STRIDE = 0x8A3C
+
+
+def block_members(program_glo: int) -> dict[str, dict[str, tuple[int, int]]]:
+    """Every uniform block of a linked program as the driver lays it out: ``{block: {member: (offset, array
+    stride)}}`` (arrays named ``member[0]``, as GL names them), for the context current on this thread.
+
+    moderngl reports a block's size but not its members' offsets; the layout checks compare these with
+    :class:`~gandalf_core.resources.layout.BlockLayout`'s.
+    """
+    i32p = ctypes.POINTER(ctypes.c_int)
+    get_program = _gl_function("glGetProgramiv", (ctypes.c_uint, ctypes.c_uint, i32p))
+    uniform_name = _gl_function("glGetActiveUniformName", (ctypes.c_uint, ctypes.c_uint, ctypes.c_int, i32p,
+                                                           ctypes.c_char_p))
+    uniforms_iv = _gl_function("glGetActiveUniformsiv", (ctypes.c_uint, ctypes.c_int, ctypes.POINTER(ctypes.c_uint),
+                                                         ctypes.c_uint, i32p))
+    block_name = _gl_function("glGetActiveUniformBlockName", (ctypes.c_uint, ctypes.c_uint, ctypes.c_int, i32p,
+                                                              ctypes.c_char_p))
+    count = ctypes.c_int()
+    get_program(program_glo, GL_ACTIVE_UNIFORMS, ctypes.byref(count))
+    n = count.value
+    if n == 0:
+        return {}
+    indices = (ctypes.c_uint * n)(*range(n))
+    blocks, offsets, strides = (ctypes.c_int * n)(), (ctypes.c_int * n)(), (ctypes.c_int * n)()
+    uniforms_iv(program_glo, n, indices, GL_UNIFORM_BLOCK_INDEX, blocks)
+    uniforms_iv(program_glo, n, indices, GL_UNIFORM_OFFSET, offsets)
+    uniforms_iv(program_glo, n, indices, GL_UNIFORM_ARRAY_STRIDE, strides)
+    out: dict[str, dict[str, tuple[int, int]]] = {}
+    buffer, length = ctypes.create_string_buffer(512), ctypes.c_int()
+    names: dict[int, str] = {}
+    for i in range(n):
+        if blocks[i] < 0:
+            continue
+        if blocks[i] not in names:
+            block_name(program_glo, blocks[i], 512, ctypes.byref(length), buffer)
+            names[blocks[i]] = buffer.value.decode()
+        uniform_name(program_glo, i, 512, ctypes.byref(length), buffer)
+        member = buffer.value.decode()
+        out.setdefault(names[blocks[i]], {})[member] = (offsets[i], strides[i])
+    return out
