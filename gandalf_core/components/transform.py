@@ -14,24 +14,28 @@ from numpy.typing import ArrayLike
 from ..ecs import ColumnarComponent
 from ..ecs.component import ColumnBatch
 from ..math import quat_from_euler, quat_normalize, quat_to_euler
+from .fields import FieldError, Vector, as_floats
 
 _ZERO3 = (0.0, 0.0, 0.0)
 _ONE3 = (1.0, 1.0, 1.0)
+_ROTATION = "3 finite numbers (Euler degrees about X, then Y, then Z)"
 
 
 class TransformComponent(ColumnarComponent):
     """Local TRS relative to the parent (or the world for roots); ``world`` is written by the transform system.
 
     ``rotation`` takes Euler degrees (X, then Y, then Z) for convenience; the state is ``quaternion``
-    (w, x, y, z).
+    (w, x, y, z). Every field is checked whenever it is set (a :class:`~gandalf_core.components.fields.FieldError`
+    names the field): ``translation`` 3 finite numbers; ``quaternion`` 4 finite numbers scaled to unit length
+    (all zero reads as no rotation); ``scale`` 3 finite numbers or one for all three (0 and negative scales are
+    allowed: a collapsed or mirrored object); ``world`` a 4x4 matrix of finite numbers.
     """
 
-    columns = {
-        "translation": ((3,), 0.0),
-        "quaternion": ((4,), (1.0, 0.0, 0.0, 0.0)),
-        "scale": ((3,), 1.0),
-        "world": ((4, 4), np.eye(4)),
-    }
+    translation = Vector(3, 0.0, expected="x, y, z")
+    quaternion = Vector(4, (1.0, 0.0, 0.0, 0.0), unit=True,
+                        expected="w, x, y, z; scaled to unit length, all zero reads as no rotation")
+    scale = Vector(3, 1.0, uniform=True, expected="x, y, z, or one number for all three")
+    world = Vector((4, 4), np.eye(4), expected="a 4x4 matrix")
 
     def __init__(
         self,
@@ -45,9 +49,13 @@ class TransformComponent(ColumnarComponent):
         if translation is not _ZERO3:  # the defaults are already in place
             self.translation = translation
         if quaternion is not None:
-            self.quaternion = quat_normalize(quaternion)
-        elif rotation is not _ZERO3 and any(rotation):
-            self.quaternion = quat_from_euler(rotation)
+            if rotation is not _ZERO3:
+                raise FieldError("TransformComponent: give rotation (Euler degrees) or quaternion, not both; got "
+                                 f"rotation={rotation!r}, quaternion={quaternion!r}")
+            self.quaternion = quaternion  # checked (a bad one names the field) and scaled to unit length
+        elif rotation is not _ZERO3 and not ((type(rotation) is tuple or type(rotation) is list)
+                                             and tuple(rotation) == _ZERO3):
+            self.rotation = rotation
         if scale is not _ONE3:
             self.scale = scale
 
@@ -84,7 +92,11 @@ class TransformComponent(ColumnarComponent):
             except ValueError as exc:
                 raise ValueError(f"TransformComponent.batch: rotations: {exc}") from None
         if scales is not None:
-            arr = np.asarray(scales, dtype=np.float64)
+            arr = np.asarray(scales) if not isinstance(scales, (str, bytes)) else np.asarray(None)
+            if arr.dtype.kind not in "iuf":
+                raise ValueError(f"TransformComponent.batch: scales must be numbers: (n, 3), (n,) uniform, (3,) or one "
+                                 f"number for all, got {scales!r:.80}")
+            arr = arr.astype(np.float64, copy=False)
             if arr.ndim == 0 or (arr.ndim == 1 and arr.shape != (3,)):  # uniform: one number, or one per entity
                 arr = np.repeat(arr[..., None], 3, axis=-1)
             values["scale"] = arr
@@ -97,7 +109,10 @@ class TransformComponent(ColumnarComponent):
 
     @rotation.setter
     def rotation(self, degrees: Sequence[float]) -> None:
-        self.quaternion = quat_from_euler(degrees)
+        angles = as_floats(degrees, (3,))
+        if angles is None:
+            raise FieldError(f"TransformComponent.rotation must be {_ROTATION}, got {degrees!r}")
+        self.quaternion = quat_from_euler(angles)
 
     @property
     def world_position(self) -> np.ndarray:

@@ -106,8 +106,15 @@ class ColumnarComponent(Component):
 
     def __init_subclass__(cls, **kwargs: Any) -> None:
         super().__init_subclass__(**kwargs)
+        # Validated fields declared on the class (``translation = Vector(3, 0.0)``, see components.fields) are
+        # columns too: anything with a ``column_shape`` and a ``column_default`` (the ECS imports no component).
+        declared = {name: (tuple(attr.column_shape), attr.column_default) for name, attr in vars(cls).items()
+                    if hasattr(attr, "column_shape") and hasattr(attr, "column_default")}
+        if declared:
+            cls.columns = {**cls.columns, **declared}
         for name, (shape, _default) in cls.columns.items():
-            setattr(cls, name, _ColumnField(name, tuple(shape)))
+            if not hasattr(getattr(cls, name, None), "column_shape"):  # a plain column: the unchecked descriptor
+                setattr(cls, name, _ColumnField(name, tuple(shape)))
         # Built once per class: creating 100k components then costs a few array copies each.
         cls._defaults = {
             name: np.array(np.broadcast_to(np.asarray(default, np.float64), shape))
@@ -158,7 +165,11 @@ class ColumnBatch:
             if value is None:
                 continue
             shape = tuple(component_type.columns[field][0])
-            arr = np.asarray(value, dtype=np.float64)
+            arr = np.asarray(value) if not isinstance(value, (str, bytes)) else np.asarray(None)
+            if arr.dtype.kind not in "iuf":
+                raise ValueError(f"{name}: {field} must be numbers of shape {shape} (one value for all) or (n, "
+                                 f"{', '.join(map(str, shape))}) (one per component), got {value!r:.80}")
+            arr = arr.astype(np.float64, copy=False)
             if arr.shape != shape:
                 if arr.ndim != len(shape) + 1 or arr.shape[1:] != shape:
                     raise ValueError(f"{name}: {field} must have shape {shape} (one value for all) or "

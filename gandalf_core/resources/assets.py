@@ -70,7 +70,8 @@ class Assets:
         if not isinstance(name, str) or not name:
             raise ResourceError(f"{kind} {name!r}", "name", "expected a non-empty string")
         if not isinstance(data, types):
-            raise ResourceError(f"{kind} '{name}'", "data", f"expected {types}, got {type(data).__name__}")
+            wanted = " or ".join(t.__name__ for t in (types if isinstance(types, tuple) else (types,)))
+            raise ResourceError(f"{kind} '{name}'", "data", f"expected {wanted}, got {type(data).__name__}")
         table[name] = data
         self.version += 1
         return name

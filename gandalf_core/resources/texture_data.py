@@ -159,6 +159,13 @@ def _reduce_axis(img: np.ndarray, axis: int) -> np.ndarray:
     return out
 
 
+def _check_flags(label: str, srgb: Any, mipmaps: Any) -> None:
+    """``srgb`` and ``mipmaps`` are True or False: a string such as "no" would otherwise count as True."""
+    for field, value in (("srgb", srgb), ("mipmaps", mipmaps)):
+        if not isinstance(value, (bool, np.bool_)):
+            raise ResourceError(label, field, f"expected True or False, got {value!r}")
+
+
 def _mip_chain(pixels: np.ndarray, srgb: bool) -> list[np.ndarray]:
     """Box-filtered mip levels of (..., H, W, 4) uint8 pixels, averaged in linear light when ``srgb``."""
     levels = [pixels]
@@ -277,6 +284,7 @@ class TextureData:
         label = _label("texture", self.name)
         _check_settings(label, self.wrap, self.filter)
         object.__setattr__(self, "pixels", _check_rgba8(label, "pixels", self.pixels))
+        _check_flags(label, self.srgb, self.mipmaps)
         object.__setattr__(self, "srgb", bool(self.srgb))
         object.__setattr__(self, "mipmaps", bool(self.mipmaps))
         a = self.anisotropy
@@ -412,6 +420,7 @@ class CubeTextureData:
                 detail = f"size {f.shape[1]}x{f.shape[0]} differs from face +X ({first}x{first})"
                 raise ResourceError(label, f"faces[{face}]", detail)
         object.__setattr__(self, "faces", checked)
+        _check_flags(label, self.srgb, self.mipmaps)
         object.__setattr__(self, "srgb", bool(self.srgb))
         object.__setattr__(self, "mipmaps", bool(self.mipmaps))
         if self.levels is not None:
