@@ -46,6 +46,9 @@ class Application:
         editor: bool = False,
     ) -> None:
         self.backend = check_backend(backend)  # fails before any GPU library is imported
+        for label, value in (("width", width), ("height", height)):
+            if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value <= 0:
+                raise ValueError(f"Application: {label} must be a positive whole number of pixels, got {value!r}")
         self.headless = (not display_available()) if headless is None else bool(headless)
         self.input = Input()
         self.clock = Clock(fixed_dt)
@@ -77,6 +80,8 @@ class Application:
     def add_scene(self, scene: Scene) -> Scene:
         """Register a scene; the first one becomes active. A scene belongs to one application at a time."""
         self._check_open("add_scene")
+        if not isinstance(scene, Scene):
+            raise TypeError(f"Application.add_scene: {scene!r} is not a Scene")
         if scene.app is not None and scene.app is not self and not scene.app.closed:
             raise ValueError(f"scene '{scene.name}' already runs in another Application; a scene's systems and "
                              "resources belong to one renderer: build a second scene for the second app")
@@ -155,6 +160,12 @@ class Application:
     def run(self, frames: int | None = None, seconds: float | None = None) -> None:
         """Run until the window closes, or for ``frames`` frames / ``seconds`` of clock time."""
         self._check_open("run")
+        if frames is not None and (isinstance(frames, bool) or not isinstance(frames, (int, np.integer))
+                                   or frames < 0):
+            raise ValueError(f"Application.run: frames must be a whole number >= 0, got {frames!r}")
+        if seconds is not None and (isinstance(seconds, bool) or not isinstance(seconds, (int, float, np.number))
+                                    or not np.isfinite(seconds) or seconds < 0):
+            raise ValueError(f"Application.run: seconds must be a finite number >= 0, got {seconds!r}")
         self.running = True
         self.clock.restart()
         start = self.clock.time

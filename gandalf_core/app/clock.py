@@ -9,6 +9,7 @@ with a warning: simulated time is never lost silently.
 from __future__ import annotations
 
 import math
+import numbers
 import time
 import warnings
 
@@ -22,7 +23,7 @@ class Clock:
     FIRST_DT = 1 / 60
 
     def __init__(self, fixed_dt: float | None = None) -> None:
-        if fixed_dt is not None and not (math.isfinite(fixed_dt) and fixed_dt > 0):
+        if fixed_dt is not None and not (_is_number(fixed_dt) and math.isfinite(fixed_dt) and fixed_dt > 0):
             raise ValueError(f"fixed_dt must be positive seconds (and finite), got {fixed_dt!r}")
         self.fixed_dt = fixed_dt
         #: The largest step any system sees in one frame.
@@ -47,6 +48,8 @@ class Clock:
                 dt = self.FIRST_DT  # the time since start-up (loading, compiling) is not a frame
             else:
                 dt = now - self._last
+        elif not _is_number(dt):
+            raise TypeError(f"a frame's dt must be a number of seconds, got {dt!r}")
         elif not math.isfinite(dt):
             raise ValueError(f"a frame's dt must be finite, got {dt!r}")
         elif dt < 0:
@@ -61,3 +64,8 @@ class Clock:
         self.time += dt
         self.frame += 1
         return dt
+
+
+def _is_number(value: object) -> bool:
+    """A real number of seconds (a numpy scalar too), not a string or a boolean."""
+    return isinstance(value, numbers.Real) and not isinstance(value, bool)

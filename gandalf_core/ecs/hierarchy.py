@@ -15,6 +15,9 @@ class LinkComponent(Component):
     """Parent/child relation. ``parent`` is an entity id or None; ``children`` is kept by the scene."""
 
     def __init__(self, parent: uuid.UUID | None = None) -> None:
+        if parent is not None and not isinstance(parent, uuid.UUID):
+            raise TypeError(f"LinkComponent.parent must be an entity id (a uuid.UUID from create_entity) or None, "
+                            f"got {parent!r}")
         self._parent = parent
         self.children: list[uuid.UUID] = []
 
