@@ -2,7 +2,7 @@
 
 ``python -m gandalf_core.tour`` opens each step in a window when a display exists; headless (or with
 ``--headless``) it renders every step offscreen and writes ``OUT/stepNN_<topic>-<backend>.png``; a step whose
-package lists ``TECHNIQUES`` (step 07) gets one picture pair per technique,
+package lists ``TECHNIQUES`` (step 07) or ``CONCEPTS`` (step 05) gets one picture pair per sub-package,
 ``OUT/stepNN_<topic>-<technique>-<backend>.png``.
 Steps are found by folder name next to ``gandalf_core`` at run time (the framework never imports a
 step statically).
@@ -28,10 +28,16 @@ def find_steps(root: Path = REPO_ROOT) -> list[str]:
     return sorted(p.name for p in root.iterdir() if STEP_PATTERN.match(p.name) and (p / "__init__.py").exists())
 
 
+#: The names a step package may list its runnable sub-packages under (step 07's techniques, step 05's concepts).
+PART_LISTS = ("TECHNIQUES", "CONCEPTS")
+
+
 def step_parts(step: str) -> list[str]:
-    """The runnable packages of a step: the step itself, or ``step.technique`` for each of its ``TECHNIQUES``."""
-    techniques = getattr(importlib.import_module(step), "TECHNIQUES", None)
-    return [f"{step}.{name}" for name in techniques] if techniques else [step]
+    """The runnable packages of a step: the step itself, or ``step.part`` for each of its ``TECHNIQUES`` or
+    ``CONCEPTS``."""
+    package = importlib.import_module(step)
+    parts = next((getattr(package, name) for name in PART_LISTS if getattr(package, name, None)), None)
+    return [f"{step}.{name}" for name in parts] if parts else [step]
 
 
 def render_step(part: str, backend: str, out_dir: Path, width: int = 640, height: int = 480) -> Path:

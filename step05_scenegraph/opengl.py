@@ -1,21 +1,17 @@
-"""Step 05, OpenGL variant: ``python -m step05_scenegraph.opengl`` (keys 1/2/3 or TAB switch scenes).
+"""Step 05, OpenGL: ``python -m step05_scenegraph.opengl [--concept NAME] [--student] [--headless] ...``.
 
-The scenes are the same for both APIs; only the shaders differ: GLSL 330 (``shaders/*.vert``/``*.frag``).
+Each concept also runs on its own: ``python -m step05_scenegraph.hierarchy.opengl``.
 """
 
-from __future__ import annotations
+from gandalf_core.app.cli import launch_part
 
-from pathlib import Path
+from . import CONCEPTS, DEFAULT_CONCEPT
 
-from gandalf_core.app.cli import run_variant, variant
 
-from .scene import SHADERS, build_scenes
-
-#: The shader folder (``tests/step05_scenegraph/test_house.py`` reads it).
-SHADER_DIR = Path(__file__).resolve().parent / "shaders"
-
-create_app = variant("opengl", __package__, build_scenes, SHADERS)
+def main(argv: list[str] | None = None) -> int:
+    """Run ``--concept``'s OpenGL variant (default: every scene in one app) with the other options."""
+    return launch_part(__package__, "opengl", CONCEPTS, "concept", argv, default=DEFAULT_CONCEPT)
 
 
 if __name__ == "__main__":
-    raise SystemExit(run_variant(create_app, description=__doc__))
+    raise SystemExit(main())

@@ -1,16 +1,17 @@
-"""Step 05, WebGPU variant: ``python -m step05_scenegraph.webgpu`` (keys 1/2/3 or TAB switch scenes).
+"""Step 05, WebGPU: ``python -m step05_scenegraph.webgpu [--concept NAME] [--student] [--headless] ...``.
 
-The scenes are the same for both APIs; only the shaders differ: WGSL (``shaders/*.wgsl``).
+Each concept also runs on its own: ``python -m step05_scenegraph.hierarchy.webgpu``.
 """
 
-from __future__ import annotations
+from gandalf_core.app.cli import launch_part
 
-from gandalf_core.app.cli import run_variant, variant
+from . import CONCEPTS, DEFAULT_CONCEPT
 
-from .scene import SHADERS, build_scenes
 
-create_app = variant("webgpu", __package__, build_scenes, SHADERS)
+def main(argv: list[str] | None = None) -> int:
+    """Run ``--concept``'s WebGPU variant (default: every scene in one app) with the other options."""
+    return launch_part(__package__, "webgpu", CONCEPTS, "concept", argv, default=DEFAULT_CONCEPT)
 
 
 if __name__ == "__main__":
-    raise SystemExit(run_variant(create_app, description=__doc__))
+    raise SystemExit(main())

@@ -127,3 +127,44 @@ def variant(backend: str, package: str, build: Callable[[ModuleType], Scene | It
 
     create_app.__doc__ = f"The {package} app in {title.split(' · ')[1]} (``headless``, ``student``, size)."
     return create_app
+
+
+def available_parts(step_package: str, names: Sequence[str]) -> list[str]:
+    """The sub-packages of ``names`` present in ``step_package`` (all of them in a full checkout)."""
+    found = []
+    for name in names:
+        try:
+            importlib.import_module(f"{step_package}.{name}")
+        except ModuleNotFoundError as exc:
+            if exc.name != f"{step_package}.{name}":
+                raise
+            continue
+        found.append(name)
+    return found
+
+
+def launch_part(step_package: str, backend: str, names: Sequence[str], option: str, argv: list[str] | None = None,
+                *, default: str | None = None) -> int:
+    """A step of several runnable sub-packages (step 05's concepts, step 07's techniques): run one of them.
+
+    ``python -m step07_advanced.opengl --technique terrain`` picks the part with ``--<option>`` (``default``, or
+    the first of ``names``) and hands the other options (``--student``, ``--headless``, ...) to its variant's
+    ``main(argv)``; ``--help`` prints this and the part's options.
+    """
+    import sys
+
+    names = available_parts(step_package, names)
+    default = default if default in names else names[0]
+    parser = argparse.ArgumentParser(
+        prog=f"python -m {step_package}.{backend}", add_help=False,
+        description=f"{step_package} in {backend}: one {option} at a time ({', '.join(names)}).",
+    )
+    parser.add_argument(f"--{option}", default=default, choices=names, help=f"which {option} (default {default})")
+    parser.add_argument("-h", "--help", action="store_true", help=f"show this help and the {option}'s options")
+    args, rest = parser.parse_known_args(sys.argv[1:] if argv is None else argv)
+    variant = importlib.import_module(f"{step_package}.{getattr(args, option)}.{backend}")
+    if args.help:
+        parser.print_help()
+        print()
+        rest = ["--help"]
+    return variant.main(rest)

@@ -17,7 +17,7 @@ from gandalf_core import System, TransformComponent
 from gandalf_core.components import CameraComponent
 from gandalf_core.resources import MaterialData, MeshData, TextureData
 
-from ..components import HouseRotationComponent
+from ..house.components import HouseRotationComponent
 
 #: The roof colour (sRGB, as a colour picker shows it).
 ORANGE = (1.0, 0.5, 0.0)

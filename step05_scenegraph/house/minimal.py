@@ -1,4 +1,4 @@
-"""The paper's house with the core's ready materials, no shader: python -m step05_scenegraph.house_minimal --help"""
+"""The paper's house with the core's ready materials, no shader: python -m step05_scenegraph.house.minimal --help"""
 import math
 
 import numpy as np

@@ -1,4 +1,4 @@
-"""The integrator study: ``python -m step05_scenegraph.study [--out DIR]`` (plots go to ``out/`` by default).
+"""The integrator study: ``python -m step05_scenegraph.integrators.study [--out DIR]`` (plots: ``out/``).
 
 (a) Accuracy against cost: each integrator follows a damped oscillator (k = 10, m = 1, c = 0.4, x0 = 1,
     v0 = 0) for 10 seconds at several time steps; the largest position error against the exact solution is
@@ -17,12 +17,12 @@ from pathlib import Path
 
 import numpy as np
 
-from .integrators import (
+from ..solutions.integrators import rk4_step, semi_implicit_euler_step
+from .methods import (
     damped_spring_exact,
     explicit_euler_step,
     implicit_euler_spring_step,
 )
-from .solutions.integrators import rk4_step, semi_implicit_euler_step
 
 INTEGRATOR_NAMES = ("explicit_euler", "semi_implicit_euler", "rk4", "implicit_euler")
 ERROR_CASE = {"k": 10.0, "m": 1.0, "c": 0.4, "x0": 1.0, "v0": 0.0, "duration": 10.0}

@@ -1,8 +1,8 @@
-"""The fixed-step study: ``python -m step05_scenegraph.study_fixed_step --out DIR [--quick]``.
+"""The fixed-step study: ``python -m step05_scenegraph.integrators.study_fixed_step --out DIR [--quick]``.
 
-:class:`~step05_scenegraph.fixed_step.FixedStep` has two knobs: the step ``dt`` and ``max_steps``, the most steps
-one frame may run (time beyond that is dropped). This study sets the error of what the player SEES against the
-cost of the simulation, for each pair of knobs:
+:class:`~step05_scenegraph.custom_systems.fixed_step.FixedStep` has two knobs: the step ``dt`` and ``max_steps``,
+the most steps one frame may run (time beyond that is dropped). This study sets the error of what the player SEES
+against the cost of the simulation, for each pair of knobs:
 
 * the case: a projectile (launched at (3, 10, 0) m/s from the origin, gravity -9.81 m/s², no floor) stepped with
   the reference semi-implicit Euler integrator inside ``FixedStep(dt, max_steps=...)``, driven by a stream of
@@ -31,8 +31,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .fixed_step import FixedStep
-from .solutions.integrators import semi_implicit_euler_step
+from ..custom_systems.fixed_step import FixedStep
+from ..solutions.integrators import semi_implicit_euler_step
 
 STEM = "step05_study_fixed_step"
 DTS = (1 / 30, 1 / 60, 1 / 120, 1 / 240, 1 / 480, 1 / 960)
@@ -146,8 +146,8 @@ def plot(result: dict, path: Path) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m step05_scenegraph.study_fixed_step", description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(prog="python -m step05_scenegraph.integrators.study_fixed_step",
+                                     description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", type=Path, default=Path("out"), help=f"folder for {STEM}.json/.md/.png")
     parser.add_argument("--quick", action="store_true", help="three time steps and two max_steps")
     parser.add_argument("--repeats", type=int, default=None, help="timed runs per case (default 9, quick 3)")

@@ -11,7 +11,7 @@ from gandalf_core.components import CameraComponent
 from gandalf_core.math import look_at_rotation, quat_from_axis_angle
 from gandalf_core.resources import MaterialData, MeshData, TextureData, cube, pyramid
 
-from ..components import HouseRotationComponent
+from ..house.components import HouseRotationComponent
 
 WALL_HEIGHT = 1.0
 ROOF_BASE = 1.3

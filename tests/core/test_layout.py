@@ -32,7 +32,8 @@ def test_step_has_the_standard_files(step):
     for name in ("__init__.py", "opengl.py", "webgpu.py", "exercises/__init__.py", "solutions/__init__.py"):
         assert (folder / name).is_file(), f"{step} lacks {name}"
     assert (REPO_ROOT / "tests" / step).is_dir(), f"{step} has no tests/{step} folder (its autograder)"
-    # A step of several techniques (step 07) has one sub-package per technique, each in the step's own shape.
+    # A step of several techniques (step 07) or concepts (step 05) has one sub-package per part, each in the step's
+    # own shape, runnable on its own (``main``) and from the step's launcher.
     for part in step_parts(step):
         part_folder = REPO_ROOT / part.replace(".", "/")
         for name in ("__init__.py", "scene.py", "opengl.py", "webgpu.py"):
@@ -40,6 +41,11 @@ def test_step_has_the_standard_files(step):
         for variant in ("opengl", "webgpu"):
             module = importlib.import_module(f"{part}.{variant}")
             assert callable(getattr(module, "create_app", None)), f"{part}.{variant} has no create_app"
+            if part != step:
+                assert callable(getattr(module, "main", None)), f"{part}.{variant} has no main(argv)"
+        if part != step:
+            assert ast.get_docstring(ast.parse((part_folder / "__init__.py").read_text())), f"{part} has no docstring"
+            assert importlib.import_module(part).STEP == step, f"{part}.STEP must name its step ({step})"
 
 
 @pytest.mark.parametrize("step", STEPS)

@@ -13,16 +13,18 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
+import step05_scenegraph
 import step05_scenegraph.solutions as reference
 from gandalf_core import Application
 from gandalf_core.math import quat_from_axis_angle
 from gandalf_core.resources import MaterialData, MeshData, TextureData
 from gandalf_core.testing import compare_images, compare_to_reference, psnr
-from step05_scenegraph.components import HouseRotationComponent
-from step05_scenegraph.opengl import SHADER_DIR
-from step05_scenegraph.scene import SHADERS, build_house_scene
+from step05_scenegraph import SHADERS
+from step05_scenegraph.house.components import HouseRotationComponent
+from step05_scenegraph.house.scene import build_house_scene
 
 REFERENCES = Path(__file__).parent / "references"
+SHADER_DIR = Path(step05_scenegraph.__file__).resolve().parent / "shaders"
 W, H = 96, 72
 # The house image vs. its committed reference: software rasterisers agree to the byte here; 35 dB leaves
 # room for a different driver's rounding without letting a misplaced roof or a flat texture through.

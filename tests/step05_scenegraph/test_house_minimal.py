@@ -1,4 +1,4 @@
-"""The house in under 40 lines (``step05_scenegraph/house_minimal.py``): core materials, no shader, both APIs.
+"""The house in under 40 lines (``step05_scenegraph/house/minimal.py``): core materials, no shader, both APIs.
 
 Checked on 96 × 72 headless pictures with a fixed step of 1/4 s, in each API: the house is in view (it covers
 8-60 % of the frame and touches no edge); orange roof pixels (red ≥ 220, green 0.35-0.7 · red, blue < 0.3 · red)
@@ -20,7 +20,7 @@ import pytest
 from gandalf_core import Application
 from gandalf_core.app.cli import run_scene
 from gandalf_core.testing import psnr
-from step05_scenegraph import house_minimal
+from step05_scenegraph.house import minimal as house_minimal
 
 W, H = 96, 72
 STEP = 0.25

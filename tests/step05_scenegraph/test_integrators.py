@@ -1,17 +1,31 @@
-"""Grades the integrator exercise numerically, and checks the lesson's other integrators and the study.
+"""Grades the integrator exercise numerically, and checks the lesson's other integrators, the study and the
+springs scene.
 
 Orders of convergence are measured from the error ratio when dt is halved: ``p = log2(e(dt) / e(dt/2))``.
+The springs scene's pictures (160 × 120, 60 frames): the two APIs agree to PSNR ≥ 40 dB and OpenGL matches
+``references/scene_springs.png`` to ≥ 35 dB.
 """
 
 from __future__ import annotations
 
 import math
+import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
 
-from step05_scenegraph import integrators as lesson
-from step05_scenegraph.study import stiffness_sweep
+from gandalf_core import Scene, TransformComponent, TransformSystem
+from gandalf_core.testing import compare_images, compare_to_reference
+from step05_scenegraph.integrators import methods as lesson
+from step05_scenegraph.integrators import opengl, webgpu
+from step05_scenegraph.integrators.components import SpringComponent
+from step05_scenegraph.integrators.scene import build_springs_scene
+from step05_scenegraph.integrators.study import stiffness_sweep
+from step05_scenegraph.integrators.systems import SpringSystem
+
+REFERENCES = Path(__file__).parent / "references"
+VARIANTS = {"opengl": opengl, "webgpu": webgpu}
 
 K, M, C = 4.0, 1.0, 0.4  # a lightly damped spring, period about 3.1 s
 
@@ -153,3 +167,72 @@ def test_bad_spring_parameters_are_named():
         lesson.implicit_euler_spring_step(0.0, 0.0, -1.0, 1.0, 0.0, 0.1)
     with pytest.raises(ValueError, match="dt"):
         lesson.implicit_euler_spring_step(0.0, 0.0, 1.0, 1.0, 0.0, float("nan"))
+
+
+# --- the springs scene (not graded: it runs the reference integrators) ------------------------------------------
+def run_scene(scene: Scene, frames: int, dt: float = 1 / 60) -> None:
+    if not any(isinstance(s, TransformSystem) for s in scene.systems):
+        scene.add_system(TransformSystem())
+    for _ in range(frames):
+        scene.update(dt)
+
+
+def test_springs_each_integrator_behaves_as_taught():
+    scene = build_springs_scene()
+    with pytest.warns(UserWarning, match="explicit_euler .* ran away"):  # the reset never hides the blow-up
+        run_scene(scene, 60 * 30)  # 30 seconds
+    springs = {c.integrator: (c, scene.get_component(e, TransformComponent)) for e, (c,) in scene.view(SpringComponent)}
+    assert springs["explicit_euler"][0].resets >= 1  # it blew up (and was put back)
+    for name in ("semi_implicit_euler", "rk4", "implicit_euler"):
+        assert springs[name][0].resets == 0
+    exact, _ = lesson.damped_spring_exact(1.0, 0.0, 40.0, 1.0, 0.2, 30.0)
+    for name in ("semi_implicit_euler", "rk4"):
+        spring, transform = springs[name]
+        assert transform.translation[1] - 2.0 == pytest.approx(exact, abs=0.02)
+
+
+@pytest.mark.parametrize(("integrator", "stiffness", "warns"), [
+    ("semi_implicit_euler", 14400.0 * 4.1, True),  # omega*dt = 2.02 at dt = 1/120: beyond 2
+    ("semi_implicit_euler", 14400.0 * 3.9, False),
+    ("rk4", 14400.0 * 8.2, True),  # beyond 2*sqrt(2)
+    ("implicit_euler", 1e12, False),  # stable at any stiffness
+])
+def test_a_stiff_spring_says_it_will_blow_up(integrator, stiffness, warns):
+    scene = Scene("stiff")
+    scene.add_system(SpringSystem())
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        scene.create_entity(TransformComponent((0, 1, 0)), SpringComponent(rest=(0, 0, 0), stiffness=stiffness,
+                                                                           integrator=integrator))
+    said = [w for w in caught if "stability limit" in str(w.message)]
+    assert bool(said) == warns, [str(w.message) for w in caught]
+
+
+def test_springs_survive_a_huge_frame_time():
+    scene = Scene("stall")
+    e = scene.create_entity(TransformComponent((0, 1, 0)), SpringComponent(rest=(0, 0, 0), integrator="rk4"))
+    system = scene.add_system(SpringSystem())
+    with pytest.warns(UserWarning, match="dropped"):  # never silently
+        run_scene(scene, 1, dt=5.0)  # a five-second stall: clamped, capped at max_steps
+    assert system.clock.steps == system.clock.max_steps
+    assert system.clock.dropped > 4.0
+    assert np.all(np.isfinite(scene.get_component(e, TransformComponent).translation))
+
+
+def test_a_spring_names_a_bad_integrator():
+    with pytest.raises(ValueError, match="SpringComponent.integrator must be one of"):
+        SpringComponent(rest=(0, 0, 0), integrator="verlet")
+
+
+def _picture(backend: str) -> np.ndarray:
+    with VARIANTS[backend].create_app(headless=True, width=160, height=120) as app:
+        app.run(frames=60)
+        return app.capture()
+
+
+def test_both_apis_draw_the_same_springs():
+    compare_images(_picture("webgpu"), _picture("opengl"), "step05-springs-webgpu-vs-opengl", min_psnr=40.0)
+
+
+def test_the_springs_match_their_reference():
+    compare_to_reference(_picture("opengl"), REFERENCES / "scene_springs.png", min_psnr=35.0)

@@ -1,4 +1,4 @@
-"""The fixed-step study (``step05_scenegraph.study_fixed_step``) runs and measures what it claims: not graded."""
+"""The fixed-step study (``step05_scenegraph.integrators.study_fixed_step``) measures what it claims (not graded)."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import json
 
 import pytest
 
-from step05_scenegraph import study_fixed_step as study
+from step05_scenegraph.integrators import study_fixed_step as study
 
 
 def test_error_falls_with_the_step_when_no_time_is_dropped():

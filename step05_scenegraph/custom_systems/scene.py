@@ -1,0 +1,54 @@
+"""The custom systems' scene, the same for OpenGL and WebGPU: balls that fall and bounce, losing height.
+
+``build_scene(impl)`` returns it (``impl`` is unused: the custom systems have no exercise).
+"""
+
+from __future__ import annotations
+
+from types import ModuleType
+
+from gandalf_core import ClearColorComponent, InfoComponent, Scene, TransformComponent
+from gandalf_core.components import MaterialComponent, MeshComponent
+from gandalf_core.resources import MaterialData, plane, uv_sphere
+
+from ..hierarchy.scene import add_camera
+from .components import GravityComponent
+from .systems import GravitySystem
+
+#: Frames the course tour renders before it takes the picture (at 60 frames per simulated second).
+TOUR_FRAMES = 90
+
+#: The balls' start heights (m) and colours.
+BALLS = ((1.5, (0.9, 0.9, 0.9)), (2.5, (0.95, 0.6, 0.25)), (3.5, (0.35, 0.6, 0.95)))
+
+
+def build_gravity_scene() -> Scene:
+    """Three balls dropped from 1.5, 2.5 and 3.5 m onto a floor that gives back 80 % of their speed."""
+    scene = Scene("gravity")
+    assets = scene.assets
+    assets.mesh("gravity.ball", uv_sphere(1.0, 24, 12))
+    assets.mesh("gravity.floor", plane(1.0))
+    assets.material("gravity.floor", MaterialData("shaded", color=(0.35, 0.4, 0.35), name="gravity.floor"))
+    scene.create_entity(InfoComponent("background"), ClearColorComponent((0.12, 0.12, 0.15)))
+    scene.create_entity(
+        InfoComponent("floor"), TransformComponent((0.0, -0.05, 0.0), scale=(14.0, 1.0, 6.0)),
+        MeshComponent("gravity.floor"), MaterialComponent("gravity.floor"),
+    )
+    # --8<-- [start:balls]
+    for i, (height, color) in enumerate(BALLS):
+        material = f"gravity.ball{i}"
+        assets.material(material, MaterialData("shaded", color=color, name=material))
+        scene.create_entity(
+            InfoComponent(f"ball {i}"), TransformComponent((-1.2 + 1.2 * i, height, 0.0), scale=0.25),
+            MeshComponent("gravity.ball"), MaterialComponent(material),
+            GravityComponent(floor=0.25, restitution=0.8),
+        )
+    scene.add_system(GravitySystem())
+    # --8<-- [end:balls]
+    add_camera(scene, (0.0, 2.0, 6.0), (0.0, 1.5, 0.0), 50.0)
+    return scene
+
+
+def build_scene(impl: ModuleType | None = None) -> Scene:
+    """The bouncing balls (the variants pass the step's ``impl``; this concept has no exercise)."""
+    return build_gravity_scene()
