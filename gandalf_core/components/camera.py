@@ -87,7 +87,15 @@ class CameraComponent(Component):
                 raise ValueError(f"CameraComponent.height must be a positive number, got {self.height!r}")
             half_h = self.height / 2
             half_w = half_h * aspect
-            return orthographic(
-                -half_w, half_w, -half_h, half_h, self.near, self.far, depth_range=depth_range, reverse_z=self.reverse_z
-            )
+            if not math.isfinite(half_w):
+                raise ValueError(f"CameraComponent.height ({self.height!r}) times the aspect ({aspect!r}) is too large "
+                                 "to represent")
+            try:
+                return orthographic(-half_w, half_w, -half_h, half_h, self.near, self.far, depth_range=depth_range,
+                                    reverse_z=self.reverse_z)
+            except ValueError as exc:
+                if "left" not in str(exc):
+                    raise
+                message = f"CameraComponent.height ({self.height!r}) with the aspect ({aspect!r}): {exc}"
+                raise ValueError(message) from None
         raise ValueError(f"CameraComponent.projection must be one of {PROJECTIONS}, got {self.projection!r}")

@@ -260,8 +260,7 @@ class Vector(Field):
             peak = float(np.max(np.abs(arr)))
             if peak == 0.0:
                 return arr  # all zero: kept, and read as no rotation (the transform system's rule)
-            n2 = float(np.dot(arr, arr))
-            if not abs(n2 - 1.0) <= _UNIT_TOLERANCE:
+            if peak > 1.0 or not abs(float(np.dot(arr, arr)) - 1.0) <= _UNIT_TOLERANCE:  # no overflow past 1
                 scaled = arr / peak  # dividing by the largest entry first: no overflow or underflow
                 arr = scaled / math.sqrt(float(np.dot(scaled, scaled)))
         return arr

@@ -74,6 +74,7 @@ def perspective(
     m[2, 2] = a
     m[2, 3] = b
     m[3, 2] = -1.0
+    _require_finite(m, f"fovy_degrees={fovy_degrees!r}, aspect={aspect!r}, near={near!r}, far={far!r}")
     return m
 
 
@@ -104,6 +105,7 @@ def orthographic(
     m[2, 2] = (d_near - d_far) / (far - near)
     m[2, 3] = (d_near * far - d_far * near) / (far - near)
     m[3, 3] = 1.0
+    _require_finite(m, ", ".join(f"{k}={v!r}" for k, v in bounds.items()))
     return m
 
 
@@ -117,3 +119,10 @@ def _require(ok: bool, name: str, rule: str, value: float) -> None:
     """Raise a ValueError naming the camera parameter `name` unless `ok`."""
     if not ok:
         raise ValueError(f"{name} must {rule}, got {value!r}")
+
+
+def _require_finite(m: np.ndarray, given: str) -> None:
+    """Extreme but valid inputs (a field of view of 1e-310 degrees, an aspect of 1e-320) can overflow: refuse a
+    projection that is not finite rather than hand the GPU infinities."""
+    if not np.isfinite(m).all():
+        raise ValueError(f"the projection is not finite for {given}: the values are too extreme to represent")
