@@ -83,6 +83,8 @@ class CameraComponent(Component):
         if self.projection == "perspective":
             return perspective(self.fov, aspect, self.near, self.far, depth_range=depth_range, reverse_z=self.reverse_z)
         if self.projection == "orthographic":
+            if not self.far > self.near:  # the box would be inside out: nothing in front of the camera would show
+                raise ValueError(f"far must be greater than near ({self.near!r}), got {self.far!r}")  # named below
             if not (math.isfinite(self.height) and self.height > 0):
                 raise ValueError(f"CameraComponent.height must be a positive number, got {self.height!r}")
             half_h = self.height / 2

@@ -98,7 +98,8 @@ for label, value, why in [("string", "wxyz", "must be numbers"), ("nan", (nan, 0
 for label, value, why in [("string", "I", "must be numbers"), ("3x3", np.eye(3), "must have shape (4, 4)"),
                           ("nan", np.full((4, 4), nan), "must be finite"), ("flat-16", np.eye(4).ravel(),
                                                                                "must have shape (4, 4)")]:
-    TRANSFORM.append(error(f"world-set-{label}", _assign("world", value), FieldError, f"TransformComponent.world {why}"))
+    TRANSFORM.append(error(f"world-set-{label}", _assign("world", value), FieldError,
+                           f"TransformComponent.world {why}"))
 
 
 def _refused_then_read(field: str, good, bad):
