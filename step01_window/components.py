@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from gandalf_core import Component
+from gandalf_core.usd import register_component
 
 
 class HueCycleComponent(Component):
@@ -13,3 +14,6 @@ class HueCycleComponent(Component):
         self.speed = speed
         self.saturation = saturation
         self.value = value
+
+
+register_component(HueCycleComponent, fields=["hue", "speed", "saturation", "value"])  # saved in USD files

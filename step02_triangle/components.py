@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from gandalf_core import Component
+from gandalf_core.usd import register_component
 
 
 class NGonComponent(Component):
@@ -14,3 +15,6 @@ class NGonComponent(Component):
     def __init__(self, sides: int = 6, radius: float = 0.5) -> None:
         self.sides = sides
         self.radius = radius
+
+
+register_component(NGonComponent, fields=["sides", "radius"])  # saved in USD files

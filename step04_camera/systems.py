@@ -9,6 +9,7 @@ import numpy as np
 from gandalf_core import System, TransformComponent
 from gandalf_core.components import CameraComponent
 from gandalf_core.math import decompose_trs, invert_affine
+from gandalf_core.usd import register_system
 
 from .components import LookAtComponent
 
@@ -50,3 +51,8 @@ class CameraSwitchSystem(System):
         current = next((i for i, c in enumerate(cameras) if c.primary), -1)
         for i, camera in enumerate(cameras):
             camera.primary = i == (current + 1) % len(cameras)
+
+
+# Allowed in saved scenes; LookAtSystem keeps its look_at function (one registered with register_function).
+register_system(LookAtSystem, settings=["look_at"])
+register_system(CameraSwitchSystem)

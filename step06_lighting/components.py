@@ -7,6 +7,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from gandalf_core import Component
+from gandalf_core.usd import register_component
 
 
 class OrbitComponent(Component):
@@ -23,3 +24,6 @@ class OrbitComponent(Component):
         """The point on the circle for the current angle (0° is +X, 90° is -Z: counter-clockwise from above)."""
         a = np.radians(self.angle)
         return self.center + self.radius * np.array([np.cos(a), 0.0, -np.sin(a)])
+
+
+register_component(OrbitComponent, fields=["center", "radius", "angle", "speed"])  # saved in USD files

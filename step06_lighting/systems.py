@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from gandalf_core import System, TransformComponent
+from gandalf_core.usd import register_system
 
 from .components import OrbitComponent
 
@@ -17,3 +18,6 @@ class OrbitSystem(System):
         orbit, transform = components
         orbit.angle = (orbit.angle + orbit.speed * ts) % 360.0
         transform.translation = orbit.position()
+
+
+register_system(OrbitSystem)  # allowed in saved scenes (gandalf_core.usd)

@@ -2,7 +2,8 @@
 
 ``save_scene(scene, "level.usda")`` and ``scene = load_scene("level.usda")``; the mapping of components to
 USD prims and attributes is described in ``docs/usd.md`` and :mod:`gandalf_core.usd.mapping`. Steps' own
-components are saved once registered with :func:`register_component`.
+components are saved once registered with :func:`register_component`, and a scene's systems by name once their
+classes are on the allow-list (:func:`register_system`; see :mod:`gandalf_core.usd.registry`).
 
 Importing this package does not import USD (``pxr``); saving or loading does.
 """
@@ -13,7 +14,15 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from .errors import USDSceneError, USDSceneWarning
-from .registry import register_component, unregister_component
+from .registry import (
+    allow_package,
+    register_component,
+    register_function,
+    register_system,
+    unregister_component,
+    unregister_function,
+    unregister_system,
+)
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -46,8 +55,13 @@ def load_scene(path: str | Path, *, name: str | None = None, strict: bool = True
 __all__ = [
     "USDSceneError",
     "USDSceneWarning",
+    "allow_package",
     "load_scene",
     "register_component",
+    "register_function",
+    "register_system",
     "save_scene",
     "unregister_component",
+    "unregister_function",
+    "unregister_system",
 ]

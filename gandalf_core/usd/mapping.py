@@ -9,6 +9,12 @@ Layout of a saved scene::
         /Meshes/<mesh>      UsdGeom.Mesh
         /Materials/<mat>    UsdShade.Material with inputs:gandalf:* values and a UsdPreviewSurface network
         /Textures/<tex>     Scope with gandalf:files (the PNGs next to the USD file)
+    /Systems                Scope: one prim per saved system, in update order (gandalf:system = its import path,
+        /<System>           gandalf:enabled, gandalf:settings:<name> values, gandalf:functions:<name> functions)
+
+A registered component's fields are ``gandalf:<ClassName>:<field>`` attributes on its entity's prim (an entity
+field is a relationship of that name to the entity's prim); the prim's ``gandalf:components`` lists the classes
+by import path.
 """
 
 from __future__ import annotations
@@ -35,6 +41,7 @@ ASSETS = "/Assets"
 MESHES = "/Assets/Meshes"
 MATERIALS = "/Assets/Materials"
 TEXTURES = "/Assets/Textures"
+SYSTEMS = "/Systems"
 
 BUILTIN_TYPES = (
     InfoComponent,

@@ -36,8 +36,8 @@ from . import foreign
 from .attributes import FileContext, authored, read, read_float, read_floats
 from .errors import USDSceneError, USDSceneWarning
 from .foreign import PreviewSurface, default_preview_material, inside
-from .mapping import ASSETS, ENTITY_MESH_MARK, FORMAT_VERSION, LIGHT_KINDS, MATERIALS, MESHES, TEXTURES
-from .registry import registration_named
+from .mapping import ASSETS, ENTITY_MESH_MARK, FORMAT_VERSION, LIGHT_KINDS, MATERIALS, MESHES, SYSTEMS, TEXTURES
+from .registry import Registration, resolve_component, resolve_function, resolve_system
 from .writer import file_format
 
 _XFORM_OPS = ["xformOp:translate", "xformOp:orient", "xformOp:scale"]
@@ -152,6 +152,7 @@ class _Reader:
         self._textures: dict[str, str] = {}
         self._cameras_seen = 0
         self._layer_assets: dict[str, object] = {}  # referenced gandalf files' assets, by layer
+        self.system_prims: dict[int, Usd.Prim] = {}
 
     def scene_named(self, name: str | None) -> Scene:
         ctx, stage = self.ctx, self.stage
@@ -166,7 +167,7 @@ class _Reader:
             tops = list(root.GetChildren())
         else:  # another tool's file: every prim on the stage (outside gandalf's asset scope) is an entity
             scene = Scene(name or self.path.stem)
-            tops = [p for p in stage.GetPseudoRoot().GetChildren() if str(p.GetPath()) != ASSETS]
+            tops = [p for p in stage.GetPseudoRoot().GetChildren() if str(p.GetPath()) not in (ASSETS, SYSTEMS)]
         self.scene = scene
         self.read_assets(scene)
         prims = []  # parents before children, in authored order; an entity's visible mesh prim is not an entity
@@ -195,8 +196,19 @@ class _Reader:
             entity = self.entity_of[str(prim.GetPath())]
             for component in self.components(prim):
                 self.add(scene, entity, prim, component)
+        for prim in prims:
+            entity = self.entity_of[str(prim.GetPath())]
+            for component in self.registered(prim):
+                self.add(scene, entity, prim, component)
         if not self.foreign:
             self.read_root_components(scene, root)
+            for system in self.systems():
+                try:
+                    scene.add_system(system)
+                except Exception as exc:  # noqa: BLE001 - a system's on_create hooks may fail on the loaded data
+                    raise ctx.fail(self.system_prims[id(system)], "gandalf:system",
+                                   f"adding {type(system).__name__} to the scene failed: {type(exc).__name__}: "
+                                   f"{exc}") from None
         if self.notes:
             lines = "; ".join(f"<{p}>: {why}" for p, why in self.notes)
             warnings.warn(f"{self.path}: not everything could be mapped: {lines}", USDSceneWarning, stacklevel=4)
@@ -260,7 +272,6 @@ class _Reader:
                 UsdLux.LightAPI) and not prim.IsA(UsdGeom.PointInstancer):
             self.notes.append((str(prim.GetPath()), f"prim type '{prim.GetTypeName()}' has no engine mapping: "
                                                     "loaded as an empty entity"))
-        out.extend(self.registered(prim))
         return out
 
     # --- other tools' geometry and materials ------------------------------------------------------------
@@ -519,26 +530,44 @@ class _Reader:
         ctx = self.ctx
         out = []
         for name in read(ctx, prim, "gandalf:components", "string[]", []):
-            reg = registration_named(name)
+            reg, why = resolve_component(name)
             if reg is None:
-                detail = (f"unknown component '{name}': register its class with "
-                          "gandalf_core.usd.register_component before loading")
+                detail = (f"unknown component '{name}' ({why}): register its class with "
+                          "gandalf_core.usd.register_component")
                 if self.strict:
                     raise ctx.fail(prim, "gandalf:components", detail)
                 warnings.warn(str(ctx.fail(prim, "gandalf:components", detail + "; left out")), USDSceneWarning,
                               stacklevel=4)
                 continue
-            component = reg.cls()
-            for field in reg.fields:
-                attr = f"gandalf:{name}:{field}"
-                value = self.field_value(prim, attr, getattr(component, field, None))
-                self.guard(prim, attr, lambda: setattr(component, field, value))  # noqa: B023 (called at once)
-            out.append(component)
+            out.append(self.guard(prim, "gandalf:components", lambda: self.component(prim, reg)))  # noqa: B023
         return out
+
+    def component(self, prim: Usd.Prim, reg: Registration) -> Component:
+        """A registered component: ``cls()`` with each saved field assigned, or ``cls(**fields)``."""
+        name = reg.cls.__name__
+        component = reg.cls() if reg.default_constructible else None
+        values = {}
+        for field in reg.fields:
+            attr = f"gandalf:{name}:{field}"
+            values[field] = self.field_value(prim, attr, getattr(component, field, None))
+        if component is None:
+            return reg.cls(**values)
+        for field, value in values.items():
+            self.guard(prim, f"gandalf:{name}:{field}", lambda: setattr(component, field, value))  # noqa: B023
+        return component
 
     def field_value(self, prim: Usd.Prim, attr: str, template: Any) -> Any:
         """A registered field's saved value, converted to the type of the field's default value."""
         ctx = self.ctx
+        rel = prim.GetRelationship(attr)
+        if template is None and not rel and not authored(prim, attr):  # an optional field saved unset
+            return None
+        if rel and not prim.GetAttribute(attr):  # another entity
+            targets = rel.GetTargets()
+            entity = self.entity_of.get(str(targets[0])) if len(targets) == 1 else None
+            if entity is None:
+                raise ctx.fail(prim, attr, f"must name one entity prim of this scene, got {[str(t) for t in targets]}")
+            return entity
         if isinstance(template, (bool, np.bool_)):
             return bool(read(ctx, prim, attr, "bool"))
         if isinstance(template, (int, np.integer)):
@@ -552,8 +581,63 @@ class _Reader:
         if isinstance(template, (list, tuple, np.ndarray)):
             values = read_floats(ctx, prim, attr, ("double[]",), len(template))
             return values if isinstance(template, np.ndarray) else type(template)(values.tolist())
-        value = read(ctx, prim, attr, ("bool", "int64", "double", "string", "double[]"))
-        return tuple(value) if str(prim.GetAttribute(attr).GetTypeName()) == "double[]" else value
+        return self.plain_value(prim, attr)
+
+    def plain_value(self, prim: Usd.Prim, attr: str) -> Any:
+        """A saved value typed by its USD type alone (bool, int, float, str, or a float array as numpy)."""
+        value = read(self.ctx, prim, attr, ("bool", "int64", "double", "string", "double[]"))
+        if str(prim.GetAttribute(attr).GetTypeName()) == "double[]":
+            return read_floats(self.ctx, prim, attr, ("double[]",), None)
+        return value
+
+    # --- systems ------------------------------------------------------------------------------------
+    def systems(self) -> list[Any]:
+        """The saved systems, in update order, built from the allow-list only (see :mod:`.registry`)."""
+        ctx = self.ctx
+        holder = self.stage.GetPrimAtPath(SYSTEMS)
+        out = []
+        for prim in holder.GetChildren() if holder else ():
+            key = read(ctx, prim, "gandalf:system", "string")
+            reg, why = resolve_system(key)
+            if reg is not None and reg.unsaveable is not None:
+                reg, why = None, f"it cannot be loaded: {reg.unsaveable}"
+            if reg is None:
+                detail = f"system '{key}' is not allowed ({why})"
+                if self.strict:
+                    raise ctx.fail(prim, "gandalf:system", detail)
+                warnings.warn(str(ctx.fail(prim, "gandalf:system", detail + "; left out")), USDSceneWarning,
+                              stacklevel=4)
+                continue
+            settings: dict[str, Any] = {}
+            for prop in prim.GetAuthoredAttributes():
+                attr = prop.GetName()
+                for prefix in ("gandalf:settings:", "gandalf:functions:"):
+                    if not attr.startswith(prefix):
+                        continue
+                    setting = attr[len(prefix):]
+                    if setting not in reg.settings:
+                        raise ctx.fail(prim, attr, f"{reg.cls.__name__} declares no setting '{setting}' (its "
+                                                   f"settings: {list(reg.settings) or 'none'})")
+                    if prefix == "gandalf:functions:":
+                        name = read(ctx, prim, attr, "string")
+                        fn, why = resolve_function(name)
+                        if fn is None:
+                            raise ctx.fail(prim, attr, f"function '{name}' is not allowed ({why})")
+                        settings[setting] = fn
+                    else:
+                        settings[setting] = self.plain_value(prim, attr)
+            missing = [s for s in reg.settings if s not in settings]
+            if missing:
+                raise ctx.fail(prim, None, f"{reg.cls.__name__}: settings {missing} are missing")
+            try:
+                system = reg.cls(**settings)
+            except Exception as exc:  # noqa: BLE001 - any failure of the constructor names the prim
+                raise ctx.fail(prim, "gandalf:system", f"{reg.cls.__name__}(**{settings}) failed: "
+                                                       f"{type(exc).__name__}: {exc}") from None
+            system.enabled = bool(read(ctx, prim, "gandalf:enabled", "bool", True))
+            self.system_prims[id(system)] = prim
+            out.append(system)
+        return out
 
     def read_root_components(self, scene: Scene, root: Usd.Prim) -> None:
         ctx = self.ctx

@@ -22,7 +22,7 @@ from ..components import (
     SkyboxComponent,
     TransformComponent,
 )
-from ..ecs import Component, Scene
+from ..ecs import Scene
 from ..resources import CubeTextureData, srgb_to_linear
 from . import assets as asset_prims
 from .atomic import StagedFiles
@@ -40,12 +40,13 @@ from .mapping import (
     MATERIALS,
     MESHES,
     ROOT,
+    SYSTEMS,
     TEXTURES,
     VERTICAL_APERTURE_MM,
     texture_folder_name,
 )
 from .names import UniqueNames
-from .registry import registration_for
+from .registry import class_key, function_key, registration_for, system_registration_for
 
 T = Sdf.ValueTypeNames
 
@@ -112,6 +113,7 @@ class _Writer:
 
     # --- whole scene --------------------------------------------------------------------------------
     def write(self) -> None:
+        self.check_systems()  # before anything else: a scene that cannot be saved says why at once
         stage = self.stage
         UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.y)
         UsdGeom.SetStageMetersPerUnit(stage, 1.0)
@@ -131,6 +133,10 @@ class _Writer:
             prim_path = f"{parent_path}/{scope.take(info.name if info else 'entity')}"
             self.prim_of[entity] = prim_path
             self.write_entity(entity, prim_path, root)
+        # After every entity prim exists: a field may name another entity.
+        for entity, prim_path in self.prim_of.items():
+            self.write_registered(entity, self.stage.GetPrimAtPath(prim_path))
+        self.write_systems()
         if self.unsaved:
             warnings.warn(
                 f"{self.path}: components with no USD mapping were not saved (register them with "
@@ -243,7 +249,6 @@ class _Writer:
                     continue
                 write(root, attr, type_name_, value(comps[component_type]))
                 root.CreateRelationship(attr + "Entity", custom=True).SetTargets([path])
-        self.write_registered(entity, prim, comps)
 
     def write_transform(self, prim: Usd.Prim, t: TransformComponent) -> None:
         xform = UsdGeom.Xformable(prim)
@@ -289,9 +294,11 @@ class _Writer:
         write(prim, "gandalf:shadowDepth", T.Double, light.shadow_depth)
         write(prim, "gandalf:shadowBias", T.Double, light.shadow_bias)
 
-    def write_registered(self, entity: uuid.UUID, prim: Usd.Prim, comps: dict[type, Component]) -> None:
+    def write_registered(self, entity: uuid.UUID, prim: Usd.Prim) -> None:
         saved: list[str] = []
-        for component_type, component in comps.items():
+        names: dict[str, str] = {}
+        for component in self.scene.components_of(entity):
+            component_type = type(component)
             if component_type in BUILTIN_TYPES:
                 continue
             reg = registration_for(component_type)
@@ -299,15 +306,85 @@ class _Writer:
                 self.unsaved.append(f"{self.scene.describe(entity)}: {component_type.__name__}")
                 continue
             name = component_type.__name__
+            if name in names:  # the attributes are named by the class name: two such classes would mix
+                raise self.fail(entity, f"two registered components are both called {name} ({names[name]} and "
+                                        f"{reg.key}): rename one", str(prim.GetPath()))
+            names[name] = reg.key
             for field in reg.fields:
-                try:
-                    type_name, value = simple_value(getattr(component, field))
-                except (AttributeError, TypeError, ValueError) as exc:
-                    raise self.fail(entity, f"{name}.{field}: {exc}", str(prim.GetPath())) from None
-                write(prim, f"gandalf:{name}:{field}", type_name, value)
-            saved.append(name)
+                self.write_field(entity, prim, f"gandalf:{name}:{field}", f"{name}.{field}",
+                                 getattr(component, field, _MISSING))
+            saved.append(reg.key)
         if saved:
             write(prim, "gandalf:components", T.StringArray, saved)
+
+    def write_field(self, entity: uuid.UUID, prim: Usd.Prim, attr: str, label: str, value: object) -> None:
+        if value is _MISSING:
+            raise self.fail(entity, f"{label}: the component has no such attribute", str(prim.GetPath()))
+        if value is None:  # an optional field left unset: nothing is written, the loader keeps the default
+            return
+        if isinstance(value, uuid.UUID):  # another entity: a relationship to its prim
+            if value not in self.prim_of:
+                raise self.fail(entity, f"{label}: names entity {value}, which is not saved", str(prim.GetPath()))
+            prim.CreateRelationship(attr, custom=True).SetTargets([self.prim_of[value]])
+            return
+        try:
+            type_name, usd_value = simple_value(value)
+        except (TypeError, ValueError) as exc:
+            raise self.fail(entity, f"{label}: {exc}", str(prim.GetPath())) from None
+        write(prim, attr, type_name, usd_value)
+
+    # --- systems --------------------------------------------------------------------------------------
+    def check_systems(self) -> None:
+        for system in self.scene.systems:
+            reg = None if _tool_owned(system) else system_registration_for(type(system))
+            if reg is not None and reg.unsaveable is not None:
+                raise USDSceneError(self.path, f"scene '{self.scene.name}': system {type(system).__name__} "
+                                               f"({reg.key}) cannot be saved: {reg.unsaveable}")
+
+    def write_systems(self) -> None:
+        """Every system the scene's own code added, in update order; the app's and the editor's are left out."""
+        systems = [s for s in self.scene.systems if not _tool_owned(s)]
+        if not systems:
+            return
+        UsdGeom.Scope.Define(self.stage, SYSTEMS)
+        unique = UniqueNames()
+        for system in systems:
+            name = type(system).__name__
+            reg = system_registration_for(type(system))
+            if reg is None:
+                self.unsaved.append(f"system {name} ({class_key(type(system))}; register it with "
+                                    "gandalf_core.usd.register_system)")
+                continue
+            path = f"{SYSTEMS}/{unique.take(name, 'system')}"
+            prim = UsdGeom.Scope.Define(self.stage, path).GetPrim()
+            write(prim, "gandalf:system", T.String, reg.key)
+            write(prim, "gandalf:enabled", T.Bool, bool(system.enabled))
+            for setting in reg.settings:
+                value = getattr(system, setting, _MISSING)
+                label = f"system {name}: setting '{setting}'"
+                if value is _MISSING:
+                    raise USDSceneError(self.path, f"{label}: the system has no attribute of that name", prim=path)
+                if callable(value) and not isinstance(value, type):
+                    key = function_key(value)
+                    if key is None:
+                        raise USDSceneError(self.path, f"{label}: the function {value!r} is not registered "
+                                                       "(gandalf_core.usd.register_function)", prim=path)
+                    write(prim, f"gandalf:functions:{setting}", T.String, key)
+                    continue
+                try:
+                    type_name, usd_value = simple_value(value)
+                except (TypeError, ValueError) as exc:
+                    raise USDSceneError(self.path, f"{label}: {exc}", prim=path) from None
+                write(prim, f"gandalf:settings:{setting}", type_name, usd_value)
+
+
+_MISSING = object()
+
+
+def _tool_owned(system: object) -> bool:
+    """The render system (the app adds it) and the editor's panels are parts of the tool, not of the scene."""
+    module = type(system).__module__
+    return module.startswith(("gandalf_core.render", "gandalf_core.editor"))
 
 
 def _editor_owned(scene: Scene, entity: uuid.UUID) -> bool:

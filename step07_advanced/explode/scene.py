@@ -38,6 +38,7 @@ from gandalf_core.ecs import Component, System
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, MeshData, ResourceError
 from gandalf_core.resources.mesh_loader import load_mesh
+from gandalf_core.usd import register_component, register_system
 
 #: Frames the course tour renders before it takes the picture (at 60 frames per simulated second): 1.5 s,
 #: 85 % of the way out.
@@ -279,3 +280,9 @@ def exploded_triangles_np(mesh: MeshData, model: np.ndarray, t: float, amount: f
     corners = p[mesh.triangles().astype(np.int64)]
     offset = explode_offset_np(corners[:, 0], corners[:, 1], corners[:, 2], t, amount, period)
     return corners + offset[:, None, :]
+
+
+# In saved scenes (gandalf_core.usd): the clock is saved; the system is not.
+register_component(ExplodeComponent, fields=["time", "speed"])
+register_system(ExplodeSystem, unsaveable="it drives the variant's explode route (an OpenGL geometry shader or a "
+                "WebGPU compute pre-pass with its GPU buffers), which the variant file builds for its API")

@@ -20,6 +20,7 @@ import numpy as np
 
 from gandalf_core import TransformComponent
 from gandalf_core.ecs import Component, System
+from gandalf_core.usd import register_component, register_system
 
 #: Particles per work group (``local_size_x`` / ``@workgroup_size``): dispatch ceil(N / 64) groups.
 WORKGROUP_SIZE = 64
@@ -189,3 +190,9 @@ class ParticleSystem(System):
     def on_update_entity(self, ts: float, entity: uuid.UUID, components: tuple[Any, ...]) -> None:
         particle, transform = components
         transform.translation = self._positions[particle.index]
+
+
+# In saved scenes (gandalf_core.usd): the markers are saved; the system is refused, naming why.
+register_component(ParticleComponent, fields=["index"])
+register_system(ParticleSystem, unsaveable="the particles live in a GPU buffer that a compute kernel steps (chosen "
+                "by the variant file for its API); a file cannot hold it")

@@ -1,52 +1,43 @@
-"""USD that other tools show, and save -> load -> save of every step's scene.
+"""USD that other tools show.
 
-Each step's scene (steps 01-06 ``build_scene`` with the solutions, and step 07's showcase, parallax and PBR
-model scenes) is saved and opened with plain ``pxr`` (no gandalf code): every entity with a mesh has a visible
+Each step's scene (the savable ones of ``test_usd_behaviour``, and step 07's showcase without its compute-driven
+particle system) is saved and opened with plain ``pxr`` (no gandalf code): every entity with a mesh has a visible
 ``UsdGeom.Mesh`` child with a non-empty world bound (``UsdGeom.BBoxCache``) and a valid topology
 (``UsdGeom.Mesh.ValidateTopology``), every material has a ``UsdPreviewSurface`` surface shader, and usd-core's
 validators (all of ``UsdValidation.ValidationRegistry().GetOrLoadAllValidators()``) report no error or warning.
 
-save -> load -> save gives the same .usda text, byte for byte, apart from the one stated field: the texture
-folder's name (``<stem>_usda_textures``) in asset paths, which follows the file name; the PNG files are
-byte-identical too.
+save -> load -> save of every step's scene (with its systems, and the animation afterwards) is tested in
+``test_usd_behaviour``.
 """
 
 from __future__ import annotations
 
-import importlib
 import warnings
-from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 import pytest
+from test_usd_behaviour import SAVABLE, UNSAVEABLE, build  # the same folder: pytest puts it on sys.path
 
 from gandalf_core import Scene
-from gandalf_core.app.cli import load_impl
-from gandalf_core.components import InfoComponent, MaterialComponent, MeshComponent
+from gandalf_core.components import MeshComponent
 from gandalf_core.usd import load_scene, save_scene
 
 pxr = pytest.importorskip("pxr")
 from pxr import Sdf, Usd, UsdGeom, UsdShade, UsdValidation  # noqa: E402
 
-STEPS = ("step01_window", "step02_triangle", "step03_textures", "step04_camera", "step05_scenegraph",
-         "step06_lighting")
+
+def _showcase_without_particles() -> Scene:
+    """The showcase with its compute-driven particle system taken out (that system cannot be saved; see
+    test_usd_behaviour): the rest of the scene is what other tools must show."""
+    from step07_advanced.showcase.particles import ParticleSystem
+
+    scene = UNSAVEABLE["step07_showcase"][0]()
+    scene.remove_system(scene.get_system(ParticleSystem))
+    return scene
 
 
-def _step(step: str) -> Callable[[], Scene]:
-    return lambda: importlib.import_module(f"{step}.scene").build_scene(load_impl(step))
-
-
-def _step07(technique: str, with_impl: bool) -> Callable[[], Scene]:
-    def build() -> Scene:
-        module = importlib.import_module(f"step07_advanced.{technique}.scene")
-        return module.build_scene(load_impl("step07_advanced")) if with_impl else module.build_scene()
-
-    return build
-
-
-SCENES = {**{s: _step(s) for s in STEPS}, "step07_showcase": _step07("showcase", True),
-          "step07_parallax": _step07("parallax", False), "step07_pbr_model": _step07("pbr_model", False)}
+SCENES = {**SAVABLE, "step07_showcase": _showcase_without_particles}
 
 
 def quiet_save(scene: Scene, path: Path) -> Path:
@@ -75,15 +66,31 @@ def validation_problems(stage: Usd.Stage) -> list[str]:
 def saved_steps(tmp_path_factory) -> dict[str, tuple[Scene, Path]]:
     folder = tmp_path_factory.mktemp("steps")
     out = {}
-    for name, build in SCENES.items():
-        scene = build()
+    for name, make in SCENES.items():
+        try:
+            scene = build(name) if name in SAVABLE else make()
+        except pytest.skip.Exception:
+            continue  # step 05 while it is being split: test_usd_behaviour names why
         out[name] = (scene, quiet_save(scene, folder / f"{name}.usda"))
     return out
 
 
+def saved_step(saved_steps: dict, name: str) -> tuple[Scene, Path]:
+    if name not in saved_steps:
+        pytest.skip(f"{name} is not savable yet (see test_usd_behaviour's skip reason)")
+    return saved_steps[name]
+
+
 @pytest.mark.parametrize("name", list(SCENES))
 def test_other_tools_see_meshes_materials_and_no_validation_problem(saved_steps, name):
-    scene, path = saved_steps[name]
+    scene, path = saved_step(saved_steps, name)
+    assert_other_tools_see(name, scene, path)
+
+
+def assert_other_tools_see(name: str, scene: Scene, path: Path) -> None:
+    """``path`` (saved from ``scene``) opened with plain pxr: no validation problem, a visible Mesh with a non-empty
+    bound and a valid topology per drawn entity, a bound material where the entity has one, and a
+    UsdPreviewSurface per material."""
     stage = open_plain(path)
     problems = validation_problems(stage)
     assert not problems, f"{name}: usd-core's validators report:\n" + "\n".join(problems)
@@ -111,7 +118,7 @@ def test_other_tools_see_meshes_materials_and_no_validation_problem(saved_steps,
 
 
 def test_preview_surface_network_of_a_textured_material(saved_steps):
-    scene, path = saved_steps["step03_textures"]
+    scene, path = saved_step(saved_steps, "step03_textures")
     stage = open_plain(path)
     textured = [(n, m) for n, m in scene.assets.materials.items()
                 if m.textures and m.textures[0] in scene.assets.textures
@@ -128,36 +135,6 @@ def test_preview_surface_network_of_a_textured_material(saved_steps):
     assert Path(file.resolvedPath).is_file(), f"{file} resolves to a file"
     reader = UsdShade.Shader(texture.GetInput("st").GetConnectedSources()[0][0].source.GetPrim())
     assert reader.GetIdAttr().Get() == "UsdPrimvarReader_float2" and reader.GetInput("varname").Get() == "st"
-
-
-@pytest.mark.parametrize("name", list(SCENES))
-def test_save_load_save_gives_the_same_file(saved_steps, tmp_path, name):
-    scene, first = saved_steps[name]
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        loaded = load_scene(first, strict=False)
-    second = quiet_save(loaded, tmp_path / f"{name}.usda")
-    a = first.read_text("utf-8").replace(f"{first.stem}_usda_textures", "TEXTURES")
-    b = second.read_text("utf-8").replace(f"{second.stem}_usda_textures", "TEXTURES")
-    if a != b:
-        diff = [f"{x!r} != {y!r}" for x, y in zip(a.splitlines(), b.splitlines()) if x != y][:5]
-        pytest.fail(f"{name}: the second save differs: {diff}")
-    tex_a, tex_b = first.parent / f"{first.stem}_usda_textures", tmp_path / f"{name}_usda_textures"
-    if tex_a.exists():
-        files = sorted(p.name for p in tex_a.iterdir())
-        assert files == sorted(p.name for p in tex_b.iterdir())
-        for f in files:
-            assert (tex_a / f).read_bytes() == (tex_b / f).read_bytes(), f"{name}: texture {f}"
-    # The loaded scene holds the same entities with the same meshes and materials.
-    def summary(s: Scene) -> list[tuple]:
-        rows = []
-        for e in s.entities:
-            info, mesh = s.try_component(e, InfoComponent), s.try_component(e, MeshComponent)
-            mat = s.try_component(e, MaterialComponent)
-            rows.append((info.name if info else "", mesh.mesh if mesh else "", mat.material if mat else ""))
-        return sorted(rows)
-
-    assert summary(loaded) == summary(scene)
 
 
 def test_old_files_without_mesh_prims_still_load(tmp_path):
