@@ -3,19 +3,21 @@
 #include "frame.glsl"
 in vec3 v_position;
 in vec3 v_normal;
-uniform vec4 u_color;
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;
+} material;
 out vec4 f_color;
 void main() {
     vec3 n = normalize(v_normal);
     vec3 v = normalize(-v_position);
-    vec3 c = u_ambient.rgb * u_color.rgb;
+    vec3 c = u_ambient.rgb * material.color.rgb;
     for (int i = 0; i < u_light_count.x; ++i) {
         vec4 p = u_light_position[i];
         vec3 l = p.w == 0.0 ? normalize(p.xyz) : normalize(p.xyz - v_position);
         vec3 h = normalize(l + v);
         float d = max(dot(n, l), 0.0);
         float s = d > 0.0 ? pow(max(dot(n, h), 0.0), 32.0) : 0.0;
-        c += u_light_color[i].rgb * (u_color.rgb * d + vec3(0.3) * s);
+        c += u_light_color[i].rgb * (material.color.rgb * d + vec3(0.3) * s);
     }
-    f_color = vec4(c, u_color.a);
+    f_color = vec4(c, material.color.a);
 }

@@ -14,16 +14,20 @@ from ..resources import ResourceError
 
 
 def check_parameters(material: str, shader: str, source: str, params: Iterable[str], fields: dict[str, bool],
-                     prefix: str = "") -> None:
+                     prefix: str = "", legacy_prefix: str = "") -> None:
     """``params``: the material's parameter names (its colour is always given, and a shader need not read it);
     ``fields``: the shader's value names (without ``prefix``) -> whether the shader states a default for it (then
-    the material may leave it out)."""
+    the material may leave it out). A parameter given with ``prefix`` or ``legacy_prefix`` (GLSL's old ``u_``) in
+    front of a field's name gets an error saying to leave the prefix out."""
     params = list(params)
     given = [*params, "color"]
     label = f"material '{material}'"
     for key in params:
         if key in fields:
             continue
+        if legacy_prefix and key.startswith(legacy_prefix) and key[len(legacy_prefix):] in fields:
+            raise ResourceError(label, f"params['{key}']", f"give it without the '{legacy_prefix}' prefix: "
+                                f"'{key[len(legacy_prefix):]}' (the field of shader '{shader}''s Material block)")
         if prefix and key.startswith(prefix) and key[len(prefix):] in fields:
             raise ResourceError(label, f"params['{key}']", f"give it without the '{prefix}' prefix: "
                                 f"'{key[len(prefix):]}' (the shader's {prefix}{key[len(prefix):]})")

@@ -141,6 +141,7 @@ class _Function:
     params: list[_Decl]
     body_idents: set[str]
     line: int
+    returns: _TypeRef | None = None
 
 
 @dataclass
@@ -312,9 +313,10 @@ class _Parser:
             if not self.accept(","):
                 self.expect(")")
                 break
+        returns = None
         if self.accept("->"):
             self.attributes()
-            self.type()
+            returns = self.type()
         open_tok = self.expect("{")
         idents: set[str] = set()
         depth = 1
@@ -325,7 +327,7 @@ class _Parser:
             depth += (tok.text == "{") - (tok.text == "}")
             if tok.kind == "ident":
                 idents.add(tok.text)
-        return _Function(name, attrs, params, idents, fn_tok.line)
+        return _Function(name, attrs, params, idents, fn_tok.line, returns)
 
     def skip_statement(self) -> list[_Token]:
         """Consume tokens up to and including the next ``;`` outside brackets; return them."""
@@ -647,6 +649,10 @@ class EntryPoint:
     vertex_inputs: tuple[VertexInput, ...] = ()
     bindings: tuple[tuple[int, int], ...] = ()  # (group, binding) pairs it uses, sorted
     line: int = field(default=0, compare=False)
+    #: The user-defined (``@location``) values it takes in (fragment: the varyings it reads) and, for a vertex
+    #: entry point, the ones it returns (the varyings it writes).
+    location_inputs: tuple[VertexInput, ...] = ()
+    location_outputs: tuple[VertexInput, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -910,19 +916,30 @@ class _Resolver:
         return names
 
     def vertex_inputs(self, fn: _Function) -> tuple[VertexInput, ...]:
-        inputs: list[VertexInput] = []
-        for p in fn.params:
-            t = self.canonical(p.type)
-            if "location" in p.attrs:
-                inputs.append(VertexInput(self._attr_int(p, "location"), p.name, self.text(t)))
-            elif t.name in self.mod.structs and not t.args:
-                for m in self.mod.structs[t.name]:
-                    if "location" in m.attrs:
-                        inputs.append(VertexInput(self._attr_int(m, "location"), m.name, self.text(m.type)))
+        inputs = self.located(fn.params)
         locations = [i.location for i in inputs]
         if len(set(locations)) != len(locations):
             raise self.error(fn.line, f"vertex entry point '{fn.name}' uses a @location twice")
-        return tuple(sorted(inputs))
+        return inputs
+
+    def located(self, decls: list[_Decl]) -> tuple[VertexInput, ...]:
+        """The ``@location`` values among ``decls`` (parameters), looking into struct-typed ones, by location."""
+        found: list[VertexInput] = []
+        for p in decls:
+            t = self.canonical(p.type)
+            if "location" in p.attrs:
+                found.append(VertexInput(self._attr_int(p, "location"), p.name, self.text(t)))
+            elif t.name in self.mod.structs and not t.args:
+                for m in self.mod.structs[t.name]:
+                    if "location" in m.attrs:
+                        found.append(VertexInput(self._attr_int(m, "location"), m.name, self.text(m.type)))
+        return tuple(sorted(found))
+
+    def outputs(self, fn: _Function) -> tuple[VertexInput, ...]:
+        """A vertex entry point's ``@location`` outputs (members of its returned struct)."""
+        if fn.returns is None:
+            return ()
+        return self.located([_Decl("return", fn.returns, {}, fn.line)])
 
 
 class _NotHostShareable(WGSLReflectError):
@@ -962,7 +979,9 @@ def reflect(source: str, filename: str = "<wgsl>") -> ShaderReflection:
             if b.name in names:
                 stages_of[b.name].add(stages[0])
         inputs = res.vertex_inputs(fn) if stages[0] == "vertex" else ()
-        entry_points[fn.name] = EntryPoint(fn.name, stages[0], inputs, used, fn.line)
+        located = res.located(fn.params) if stages[0] == "fragment" else inputs
+        outputs = res.outputs(fn) if stages[0] == "vertex" else ()
+        entry_points[fn.name] = EntryPoint(fn.name, stages[0], inputs, used, fn.line, located, outputs)
     bindings = [replace(b, stages=frozenset(stages_of[b.name])) for b in bindings]
     return ShaderReflection(filename, structs, bindings, entry_points)
 

@@ -2,12 +2,14 @@
 // Step 03: the material colour times one texture, sampled at the interpolated UV.
 in vec2 v_uv;
 
-uniform vec4 u_color;        // MaterialData.color, already in linear light
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;  // MaterialData.color, already in linear light
+} material;
 uniform sampler2D u_albedo;  // the material's first texture; its sampler state comes with it in OpenGL
 
 out vec4 f_color;
 
 void main() {
     // An sRGB texture is decoded to linear light by the sampler, before filtering.
-    f_color = u_color * texture(u_albedo, v_uv);
+    f_color = material.color * texture(u_albedo, v_uv);
 }

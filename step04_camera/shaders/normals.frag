@@ -1,8 +1,10 @@
 #version 330 core
 in vec3 v_normal;
-uniform vec4 u_color;
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;
+} material;
 out vec4 f_color;
 void main() {
     // Map each component from [-1, 1] to [0, 1].
-    f_color = u_color * vec4(normalize(v_normal) * 0.5 + 0.5, 1.0);
+    f_color = material.color * vec4(normalize(v_normal) * 0.5 + 0.5, 1.0);
 }

@@ -2,12 +2,14 @@
 // Texture times colour, lit like shaded.frag.
 in vec3 v_normal;
 in vec2 v_uv;
-uniform vec4 u_color;
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;
+} material;
 uniform sampler2D u_albedo;
 out vec4 f_color;
 void main() {
     vec3 light = normalize(vec3(0.4, 0.8, 0.6));
     float lambert = max(dot(normalize(v_normal), light), 0.0);
-    vec4 albedo = u_color * texture(u_albedo, v_uv);
+    vec4 albedo = material.color * texture(u_albedo, v_uv);
     f_color = vec4(albedo.rgb * (0.3 + 0.7 * lambert), albedo.a);
 }

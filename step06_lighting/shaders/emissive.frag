@@ -2,8 +2,10 @@
 // A light's marker: its flat colour, unlit.
 in vec3 v_world;
 in vec3 v_normal;
-uniform vec4 u_color;
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;
+} material;
 out vec4 f_color;
 void main() {
-    f_color = vec4(u_color.rgb, 1.0);
+    f_color = vec4(material.color.rgb, 1.0);
 }

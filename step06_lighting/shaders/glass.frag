@@ -3,14 +3,16 @@
 #include "lighting.glsl"
 in vec3 v_world;
 in vec3 v_normal;
-uniform vec4 u_color;
-uniform float u_ior;
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;
+    float ior;
+} material;
 uniform samplerCube u_env;
 out vec4 f_color;
 void main() {
     vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
     vec3 i = safe_normalize(v_world - u_camera_position.xyz, -n);
-    float ior = max(u_ior, 1e-3);
+    float ior = max(material.ior, 1e-3);
     vec3 r = reflect_direction(i, n);
     vec3 t = refract_direction(i, n, 1.0 / ior);
     // Total internal reflection gives t = 0: a zero lookup direction is undefined, so reflect instead.
@@ -18,6 +20,6 @@ void main() {
     float f0 = (ior - 1.0) * (ior - 1.0) / ((ior + 1.0) * (ior + 1.0));
     float cos_i = clamp(-dot(i, n), 0.0, 1.0);
     float fresnel = f0 + (1.0 - f0) * pow(1.0 - cos_i, 5.0);
-    vec3 color = mix(u_color.rgb * texture(u_env, t).rgb, texture(u_env, r).rgb, fresnel);
+    vec3 color = mix(material.color.rgb * texture(u_env, t).rgb, texture(u_env, r).rgb, fresnel);
     f_color = vec4(color, 1.0);
 }

@@ -3,12 +3,14 @@
 #include "lighting.glsl"
 in vec3 v_world;
 in vec3 v_normal;
-uniform vec4 u_color;
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;
+} material;
 uniform samplerCube u_env;
 out vec4 f_color;
 void main() {
     vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
     vec3 i = safe_normalize(v_world - u_camera_position.xyz, -n);
     vec3 r = reflect_direction(i, n);
-    f_color = vec4(u_color.rgb * texture(u_env, r).rgb, 1.0);
+    f_color = vec4(material.color.rgb * texture(u_env, r).rgb, 1.0);
 }

@@ -4,14 +4,16 @@
 in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
-uniform vec4 u_color;
-uniform float u_specular;
-uniform float u_shininess;
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;
+    float specular;
+    float shininess;
+} material;
 uniform sampler2D u_albedo;
 out vec4 f_color;
 void main() {
     vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
     vec3 v = safe_normalize(u_camera_position.xyz - v_world, n);
-    vec3 albedo = u_color.rgb * texture(u_albedo, v_uv).rgb;
-    f_color = vec4(shade(v_world, n, v, albedo, u_specular, u_shininess), 1.0);
+    vec3 albedo = material.color.rgb * texture(u_albedo, v_uv).rgb;
+    f_color = vec4(shade(v_world, n, v, albedo, material.specular, material.shininess), 1.0);
 }

@@ -19,9 +19,12 @@ import moderngl
 import numpy as np
 
 from ...resources import CubeTextureData, MaterialData, MeshData, ResourceError, ShaderSource, TextureData
+from ...resources.blocks import BLOCK_BINDINGS
+from ...resources.layout import BlockLayout, LayoutError
 from ..builtin_materials import prepare as prepare_builtin
 from ..errors import ShaderCompileError
 from ..library import ResourceLib
+from ..material_block import MATERIAL_BLOCK, block_values, check_glsl_varyings, glsl_material_layout
 from ..material_checks import check_parameters
 from ..material_values import MaterialValues
 from ..patches import declared_patch_size
@@ -32,8 +35,8 @@ from ..texture_checks import check_texture_kinds, check_texture_size
 GL_SRGB8_ALPHA8 = 0x8C43
 # GL_FLOAT_MAT2, _MAT3, _MAT4 -> size
 _GL_MATRIX_SIZES = {0x8B5A: 2, 0x8B5B: 3, 0x8B5C: 4}
-# The engine's uniform blocks and their binding points (the same numbers as WGSL's @group(0) bindings).
-UNIFORM_BLOCKS = {"Frame": 0, "Lights": 1}
+# The engine's uniform blocks and their binding points (resources/blocks.py states the convention for both APIs).
+UNIFORM_BLOCKS = BLOCK_BINDINGS
 # The engine's samplers and their reserved texture units (materials use the units from 0 up).
 ENGINE_SAMPLERS = {"u_shadow_map": 15}
 GL_RGBA8 = 0x8058
@@ -151,9 +154,12 @@ class GLShader:
     storage_blocks: list[str] = field(default_factory=list)  # shader storage blocks in declaration order
     active_storage: dict[str, int] = field(default_factory=dict)  # block -> binding, of the blocks still in use
     cube_samplers: dict[str, bool] = field(default_factory=dict)  # sampler -> samples a cube map
-    #: Material values the program declares (``u_<name>`` uniforms, not samplers) -> stated a default (``= ...``).
+    #: Loose material values the program declares (``u_<name>`` uniforms, not samplers) -> stated a default
+    #: (``= ...``): the older way, for shaders without a Material block.
     material_uniforms: dict[str, bool] = field(default_factory=dict)
     source: str = ""  # the stage files, for messages
+    #: The std140 layout of the program's ``uniform Material { ... } material;`` block, or None.
+    material_block: BlockLayout | None = None
 
 
 class ShaderLib(ResourceLib[GLShader]):
@@ -196,6 +202,12 @@ class ShaderLib(ResourceLib[GLShader]):
         ):
             if src is not None:
                 stages[key] = load_shader(src, stage, "glsl", include_dirs)
+        try:
+            material_block = glsl_material_layout(stages, name)
+        except LayoutError as exc:
+            raise ShaderCompileError(str(exc)) from None
+        if (varying := check_glsl_varyings(name, stages)) is not None:
+            raise ShaderCompileError(varying)
         patch_vertices = None
         if "tess_evaluation_shader" in stages:
             if "tess_control_shader" not in stages:
@@ -237,9 +249,12 @@ class ShaderLib(ResourceLib[GLShader]):
         storage_blocks = list(dict.fromkeys(b for src in stages.values() for b in _declared_storage_blocks(src.text)))
         kinds = dict(kind for src in stages.values() for kind in _declared_sampler_kinds(src.text))
         values = {k: v for src in stages.values() for k, v in _declared_material_uniforms(src.text).items()}
+        files = ", ".join(src.filename for src in stages.values())
+        if material_block is not None and values:
+            raise ShaderCompileError(f"shader '{name}' ({files}): declares both a Material block and loose material "
+                                     f"uniforms ({', '.join('u_' + v for v in values)}); move them into the block")
         shader = GLShader(name, program, attributes, samplers, uniforms, patch_vertices, storage_blocks, active_storage,
-                          {s: "Cube" in kinds.get(s, "") for s in samplers}, values,
-                          ", ".join(src.filename for src in stages.values()))
+                          {s: "Cube" in kinds.get(s, "") for s in samplers}, values, files, material_block)
         self._items[name] = shader
         self._data[name] = stages
         return shader
@@ -374,8 +389,10 @@ class BufferLib(_InContext, ResourceLib[moderngl.Buffer]):
 class GLMaterial(MaterialValues):
     """A material instance: its shader, textures and uniform values (changeable without rebuilding).
 
-    A value reaches the uniform ``u_<name>`` when the program has one (unused uniforms are optimised away);
-    a matrix given as 9 or 16 row-major floats is transposed into GL's column-major order.
+    The values fill the program's std140 ``Material`` block by field name (its own uniform buffer, bound to
+    binding point ``BLOCK_BINDINGS["Material"]`` when drawn): the same bytes as WebGPU's ``Material`` struct. A
+    matrix given as 9 or 16 row-major floats is written column by column. (A program without the block still takes
+    loose ``u_<name>`` uniforms, the older way.)
     """
 
     def __init__(self, name: str, data: MaterialData, shader: GLShader, textures: list[Any],
@@ -400,10 +417,25 @@ class GLMaterial(MaterialValues):
                                     f"the material binds buffers 0..{len(buffers) - 1} (declare binding = its index)")
         self.name, self.data, self.shader, self.textures = name, data, shader, textures
         self.buffers = buffers
+        self.block_buffer: moderngl.Buffer | None = None
+        self.block_bytes = b""
         self.set_values(data.uniform_values())
 
     def _upload(self) -> None:
         self._uniforms = []
+        block = self.shader.material_block
+        if block is not None:
+            try:
+                self.block_bytes = block.pack(block_values(block, self.values))
+            except LayoutError as exc:
+                raise ResourceError(f"material '{self.name}'", "params",
+                                    f"shader '{self.shader.name}' ({self.shader.source}): {exc}") from None
+            if self.block_buffer is None:
+                make_current(self.shader.program.ctx)
+                self.block_buffer = self.shader.program.ctx.buffer(self.block_bytes)
+            else:
+                self.block_buffer.write(self.block_bytes)
+            return
         program = self.shader.program
         for key, value in self.values.items():
             uniform_name = f"u_{key}"
@@ -416,6 +448,8 @@ class GLMaterial(MaterialValues):
             self._uniforms.append((uniform, tuple(value.ravel()) if value.size > 1 else float(value)))
 
     def apply(self) -> None:
+        if self.block_buffer is not None:
+            self.block_buffer.bind_to_uniform_block(BLOCK_BINDINGS[MATERIAL_BLOCK])
         for uniform, value in self._uniforms:
             uniform.value = value
         for unit, texture in enumerate(self.textures):
@@ -442,5 +476,13 @@ class MaterialLib(ResourceLib[GLMaterial]):
         buffers = [self.buffers.get(buf, referrer) for buf in data.buffers]
         check_texture_kinds(name, shader.name, [(s, shader.cube_samplers.get(s, False)) for s in shader.samplers],
                             [(t, self.textures.data_of(t)) for t in data.textures])
-        check_parameters(name, shader.name, shader.source, data.params, shader.material_uniforms, prefix="u_")
+        if shader.material_block is not None:
+            fields = {f.name: f.has_default for f in shader.material_block.fields}
+            check_parameters(name, shader.name, shader.source, data.params, fields, legacy_prefix="u_")
+        else:
+            check_parameters(name, shader.name, shader.source, data.params, shader.material_uniforms, prefix="u_")
         return GLMaterial(name, data, shader, textures, buffers)
+
+    def _release(self, item: GLMaterial) -> None:
+        if item.block_buffer is not None:
+            item.block_buffer.release()

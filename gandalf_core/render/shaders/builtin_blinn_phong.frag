@@ -3,10 +3,13 @@
 #include "builtin_lighting.glsl"
 in vec3 v_world;
 in vec3 v_normal;
-uniform vec4 u_color;
-uniform float u_specular;
-uniform float u_shininess;
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;
+    float specular;
+    float shininess;
+} material;
 out vec4 f_color;
 void main() {
-    f_color = vec4(gandalf_builtin_lighting(v_world, v_normal, u_color.rgb, u_specular, u_shininess), u_color.a);
+    vec3 lit = gandalf_builtin_lighting(v_world, v_normal, material.color.rgb, material.specular, material.shininess);
+    f_color = vec4(lit, material.color.a);
 }

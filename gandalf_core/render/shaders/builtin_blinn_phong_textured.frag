@@ -4,12 +4,15 @@
 in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
-uniform vec4 u_color;
-uniform float u_specular;
-uniform float u_shininess;
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;
+    float specular;
+    float shininess;
+} material;
 uniform sampler2D u_texture;
 out vec4 f_color;
 void main() {
-    vec4 albedo = u_color * texture(u_texture, v_uv);
-    f_color = vec4(gandalf_builtin_lighting(v_world, v_normal, albedo.rgb, u_specular, u_shininess), albedo.a);
+    vec4 albedo = material.color * texture(u_texture, v_uv);
+    vec3 lit = gandalf_builtin_lighting(v_world, v_normal, albedo.rgb, material.specular, material.shininess);
+    f_color = vec4(lit, albedo.a);
 }

@@ -1,7 +1,9 @@
 #version 330 core
 // Built-in material gandalf.unlit with a texture: the material colour times the texture, no light.
 in vec2 v_uv;
-uniform vec4 u_color;
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;
+} material;
 uniform sampler2D u_texture;
 out vec4 f_color;
-void main() { f_color = u_color * texture(u_texture, v_uv); }
+void main() { f_color = material.color * texture(u_texture, v_uv); }

@@ -22,9 +22,11 @@ import numpy as np
 import wgpu
 
 from ...resources import CubeTextureData, MaterialData, MeshData, ResourceError, ShaderSource, TextureData
+from ...resources.layout import BlockLayout, LayoutError
 from ..builtin_materials import prepare as prepare_builtin
 from ..errors import ShaderCompileError
 from ..library import ResourceLib
+from ..material_block import block_values, check_wgsl_varyings, wgsl_material_layout
 from ..material_checks import check_parameters
 from ..material_values import MaterialValues
 from ..shader_files import load_shader
@@ -175,6 +177,8 @@ class WGPUShader:
     attributes: dict[int, str]  # location -> vertex input name
     material_layout: Any  # the bind group layout of group 1, or None
     material_bindings: list[Binding] = field(default_factory=list)
+    #: The WGSL uniform layout of its ``@group(1) @binding(0)`` Material struct, or None.
+    material_block: BlockLayout | None = None
 
 
 class ShaderLib(ResourceLib[WGPUShader]):
@@ -206,13 +210,22 @@ class ShaderLib(ResourceLib[WGPUShader]):
         vs = _entry(reflection, "vertex", vertex_entry, src.filename)
         fs = _entry(reflection, "fragment", fragment_entry, src.filename)
         attributes = {vi.location: vi.name for vi in reflection.entry_points[vs].vertex_inputs}
+        if (varying := check_wgsl_varyings(name, src.filename, reflection, vs, fs)) is not None:
+            raise ShaderCompileError(varying)
         material_bindings = reflection.group(MATERIAL_GROUP)
+        uniform = next((b for b in material_bindings if b.kind == "uniform"), None)
+        block = None
+        if uniform is not None and uniform.struct in reflection.structs:
+            try:
+                block = wgsl_material_layout(reflection.structs[uniform.struct], name, src.filename)
+            except LayoutError as exc:
+                raise ShaderCompileError(str(exc)) from None
         layout = None
         if material_bindings:
             layout = self.device.create_bind_group_layout(
                 entries=[_layout_entry(b) for b in material_bindings], label=f"{name} material"
             )
-        shader = WGPUShader(name, module, src, reflection, vs, fs, attributes, layout, material_bindings)
+        shader = WGPUShader(name, module, src, reflection, vs, fs, attributes, layout, material_bindings, block)
         self._items[name] = shader
         self._data[name] = src
         return shader
@@ -345,8 +358,9 @@ class BufferLib(ResourceLib[Any]):
 class WGPUMaterial(MaterialValues):
     """A material instance: uniform buffer + bind group; values change without touching any pipeline.
 
-    The uniform struct's members are filled by name from the material's colour and params (a member
-    without a value is zero; a matrix may be given as 9 or 16 row-major floats).
+    The uniform struct's members are filled by name from the material's colour and params with the one layout rule
+    (:mod:`gandalf_core.resources.layout`: the same bytes as OpenGL's std140 Material block); a matrix may be given
+    as 9 or 16 row-major floats.
     """
 
     def __init__(self, name: str, data: MaterialData, shader: WGPUShader, textures: list[WGPUTexture],
@@ -376,7 +390,11 @@ class WGPUMaterial(MaterialValues):
         current: WGPUTexture | None = None
         for b in shader.material_bindings:
             if b.kind == "uniform":
-                self._struct = shader.reflection.structs[b.struct]
+                self._struct = shader.material_block
+                if self._struct is None:
+                    raise ResourceError(f"material '{name}'", "shader", f"shader '{shader.name}' "
+                                        f"({shader.source.filename}): @group(1) uniform '{b.name}' has no struct "
+                                        "type the material can fill")
                 self.uniform_buffer = device.create_buffer(
                     size=max(16, self._struct.size),
                     usage=wgpu.BufferUsage.UNIFORM | wgpu.BufferUsage.COPY_DST,
@@ -403,23 +421,12 @@ class WGPUMaterial(MaterialValues):
         struct = self._struct
         if struct is None:
             return
-        members = {}
-        for f in struct.fields:
-            shape = struct.shape_of(f.name)
-            value = self.values.get(f.name)
-            if shape is None:
-                raise ResourceError(f"material '{self.name}'", f.name,
-                                    f"member of type {f.type} in struct {struct.name}: materials fill numbers only")
-            if value is None:
-                value = np.zeros(shape)
-            elif value.shape != shape and value.size == int(np.prod(shape)):
-                value = value.reshape(shape)  # e.g. a matrix given as flat row-major floats
-            members[f.name] = value
         try:
-            packed = struct.pack(members)
-        except (KeyError, ValueError) as exc:
-            raise ResourceError(f"material '{self.name}'", "params", str(exc)) from None
-        self.device.queue.write_buffer(self.uniform_buffer, 0, packed)
+            self.block_bytes = struct.pack(block_values(struct, self.values))
+        except LayoutError as exc:
+            raise ResourceError(f"material '{self.name}'", "params",
+                                f"shader '{self.shader.name}' ({self.shader.source.filename}): {exc}") from None
+        self.device.queue.write_buffer(self.uniform_buffer, 0, self.block_bytes)
 
 
 class MaterialLib(ResourceLib[WGPUMaterial]):
@@ -440,9 +447,8 @@ class MaterialLib(ResourceLib[WGPUMaterial]):
         buffers = [self.buffers.get(buf, referrer) for buf in data.buffers]
         slots = [(b.name, b.view_dimension == "cube") for b in shader.material_bindings if b.kind == "texture"]
         check_texture_kinds(name, shader.name, slots, [(t, self.textures.data_of(t)) for t in data.textures])
-        uniform = next((b for b in shader.material_bindings if b.kind == "uniform"), None)
-        fields = ({f.name: f.name.startswith("_") for f in shader.reflection.structs[uniform.struct].fields}
-                  if uniform is not None else {})
+        block = shader.material_block
+        fields = {f.name: f.has_default for f in block.fields} if block is not None else {}
         check_parameters(name, shader.name, shader.source.filename, data.params, fields)
         return WGPUMaterial(name, data, shader, textures, self.device, buffers)
 

@@ -1,5 +1,7 @@
 #version 330 core
 // Test shader: the material colour.
-uniform vec4 u_color;
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;
+} material;
 out vec4 f_color;
-void main() { f_color = u_color; }
+void main() { f_color = material.color; }

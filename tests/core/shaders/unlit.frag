@@ -1,7 +1,9 @@
 #version 330 core
 // Test shader: textured, tinted by the material colour.
 in vec2 v_uv;
-uniform vec4 u_color;
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;
+} material;
 uniform sampler2D u_albedo;
 out vec4 f_color;
-void main() { f_color = u_color * texture(u_albedo, v_uv); }
+void main() { f_color = material.color * texture(u_albedo, v_uv); }

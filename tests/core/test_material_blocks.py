@@ -1,0 +1,278 @@
+"""A material's values are one ``Material`` block with the same bytes in both APIs (GLSL std140 = WGSL uniform),
+and a material is checked against its shader when it is built.
+
+Checked here: the bytes of the same material in OpenGL and WebGPU are identical; the layout the engine reads
+from a GLSL block matches the driver's own offsets, and the one it reads from a WGSL struct matches the reflector's;
+every GLSL material shader in the project declares a block whose fields sit where its WGSL twin's do; and each build
+check (unknown parameter, missing field, wrong size, ``u_`` prefix, wrong texture kind, a varying the vertex stage
+never writes) is an error naming the material or shader, the shader file and the field. No pictures here.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from gandalf_core import Application
+from gandalf_core.render.errors import ShaderCompileError
+from gandalf_core.render.material_block import glsl_material_fields, wgsl_material_layout
+from gandalf_core.render.shader_files import SNIPPETS_DIR
+from gandalf_core.render.wgsl_reflect import reflect
+from gandalf_core.resources import MaterialData, ResourceError, ShaderSource, checkerboard, sky_cube
+from gandalf_core.resources.layout import BlockLayout
+from gandalf_core.tour import REPO_ROOT
+
+SHADERS = Path(__file__).parent / "shaders"
+
+GL_VERT = """#version 330 core
+#include "frame.glsl"
+#include "instance.glsl"
+layout(location = 0) in vec3 a_position;
+out vec3 v_world;
+void main() {
+    vec4 world = instance_model() * vec4(a_position, 1.0);
+    v_world = world.xyz;
+    gl_Position = u_projection * u_view * world;
+}
+"""
+GL_FRAG = """#version 330 core
+in vec3 v_world;
+layout(std140) uniform Material {
+    vec4 color;
+    vec3 tint;
+    float gain;
+    mat3 m;
+    vec2 offset;
+    float _pad;
+} material;
+out vec4 f_color;
+void main() { f_color = material.color * vec4(material.tint * material.gain + material.m[1], 1.0)
+                        + vec4(material.offset, 0.0, 0.0) + vec4(v_world, 0.0) * 0.0; }
+"""
+WGSL = """#include "frame.wgsl"
+#include "instance.wgsl"
+struct Material { color: vec4<f32>, tint: vec3<f32>, gain: f32, m: mat3x3<f32>, offset: vec2<f32>, _pad: f32 };
+@group(1) @binding(0) var<uniform> material: Material;
+struct VOut { @builtin(position) position: vec4<f32>, @location(0) world: vec3<f32> };
+@vertex fn vs_main(@location(0) position: vec3<f32>, inst: Instance) -> VOut {
+    let world = instance_model(inst) * vec4<f32>(position, 1.0);
+    return VOut(frame.projection * frame.view * world, world.xyz);
+}
+@fragment fn fs_main(in: VOut) -> @location(0) vec4<f32> {
+    return material.color * vec4<f32>(material.tint * material.gain + material.m[1], 1.0)
+        + vec4<f32>(material.offset, 0.0, 0.0);
+}
+"""
+PARAMS = {"tint": (0.25, 0.5, 0.75), "gain": 2.0, "m": np.arange(9.0), "offset": (0.125, -0.5)}
+
+
+def build_shader(app: Application, name: str = "probe", frag: str = GL_FRAG, vert: str = GL_VERT,
+                 wgsl: str = WGSL):
+    r, inc = app.renderer, [SNIPPETS_DIR]
+    if app.backend == "opengl":
+        return r.shaders.build(name, ShaderSource.from_text(vert, "glsl", "vertex", filename="probe.vert",
+                                                            include_dirs=inc),
+                               ShaderSource.from_text(frag, "glsl", "fragment", filename="probe.frag",
+                                                      include_dirs=inc))
+    return r.shaders.build(name, ShaderSource.from_text(wgsl, "wgsl", filename="probe.wgsl", include_dirs=inc))
+
+
+def test_the_same_material_is_the_same_bytes_in_both_apis():
+    data = MaterialData("probe", color=(1.0, 0.5, 0.25, 0.75), params=PARAMS)
+    got = {}
+    for backend in ("opengl", "webgpu"):
+        with Application(backend, 16, 12, headless=True) as app:
+            build_shader(app)
+            got[backend] = app.renderer.materials.build("M", data).block_bytes
+    assert got["opengl"] == got["webgpu"], "the Material block's bytes differ between the APIs"
+    floats = np.frombuffer(got["opengl"], np.float32)
+    np.testing.assert_allclose(floats[4:8], (0.25, 0.5, 0.75, 2.0))  # vec3 then a float in its last 4 bytes
+    np.testing.assert_allclose(floats[8:20].reshape(3, 4)[:, :3], np.arange(9.0).reshape(3, 3).T)  # columns
+    np.testing.assert_allclose(floats[20:23], (0.125, -0.5, 0.0))
+
+
+def test_the_glsl_block_layout_is_the_drivers_and_the_wgsl_one_the_reflectors():
+    from gandalf_core.render.opengl.libs import make_current
+    from gandalf_core.render.opengl.raw_gl import block_members
+
+    with Application("opengl", 16, 12, headless=True) as app:
+        shader = build_shader(app)
+        make_current(app.renderer.ctx)
+        driver = block_members(shader.program.glo)["Material"]
+        layout = shader.material_block
+        declared = {path: offset for path, offset, _t in layout.leaves()}
+        assert {name.split(".", 1)[1]: off for name, (off, _s) in driver.items()} == declared
+        assert shader.program["Material"].size == layout.size
+    reflection = reflect(WGSL.split("\n", 2)[2], "probe.wgsl")
+    struct = reflection.structs["Material"]
+    wgsl = wgsl_material_layout(struct, "probe", "probe.wgsl")
+    assert [(f.name, f.offset) for f in struct.fields] == [(f.name, f.offset) for f in wgsl.fields]
+    assert [(f.name, f.offset) for f in wgsl.fields] == [(f.name, f.offset) for f in layout.fields]
+
+
+def _glsl_material_files() -> list[Path]:
+    roots = [REPO_ROOT / "gandalf_core", *sorted(REPO_ROOT.glob("step*")), REPO_ROOT / "tests" / "core" / "shaders"]
+    files = []
+    for root in roots:
+        for path in sorted(root.rglob("*")):
+            if path.suffix in (".frag", ".vert", ".geom", ".tesc", ".tese", ".glsl") and ".snap" not in path.parts:
+                if re.search(r"\buniform\s+Material\b", path.read_text()):
+                    files.append(path)
+    return files
+
+
+GLSL_MATERIALS = _glsl_material_files()
+# GLSL programs whose WGSL twin has another name (the rest: the same stem, .wgsl).
+TWINS = {"explode.frag": "explode_pulled.wgsl", "explode_material.glsl": "explode_pulled.wgsl",
+         "terrain_material.glsl": "terrain_render.wgsl"}
+
+
+@pytest.mark.parametrize("path", GLSL_MATERIALS, ids=lambda p: str(p.relative_to(REPO_ROOT)))
+def test_every_glsl_material_block_lays_out_like_its_wgsl_twin(path):
+    """The same fields at the same offsets (a GL-only field may follow them: the terrain's tessellation ``lod``)."""
+    fields = glsl_material_fields(path.read_text(), path.name)
+    assert fields, f"{path}: no Material block found"
+    glsl = BlockLayout("Material", fields, rules="std140")
+    BlockLayout("Material", fields)  # valid under both rules
+    twin = path.with_name(TWINS.get(path.name, path.stem + ".wgsl"))
+    if not twin.exists():
+        pytest.skip(f"{path.name} has no WGSL twin")
+    reflection = reflect(re.sub(r"(?m)^#include.*$", "", twin.read_text()), twin.name)
+    wgsl = wgsl_material_layout(reflection.structs["Material"], twin.stem, twin.name)
+    pairs = [(f.name, f.offset) for f in wgsl.fields]
+    assert [(f.name, f.offset) for f in glsl.fields][:len(pairs)] == pairs, f"{path.name} vs {twin.name}"
+
+
+def test_no_loose_material_uniforms_are_left_in_the_project_shaders():
+    loose = re.compile(r"^\s*uniform\s+(?!sampler|isampler|usampler)\w+\s+u_\w+", re.M)
+    roots = [REPO_ROOT / "gandalf_core", *sorted(REPO_ROOT.glob("step*"))]
+    # compute programs the step's own code drives (not materials) keep plain uniforms
+    allowed = {"weights.comp", "io.glsl"}
+    found = [str(p.relative_to(REPO_ROOT)) for root in roots for p in sorted(root.rglob("*"))
+             if p.suffix in (".frag", ".vert", ".geom", ".tesc", ".tese", ".glsl") and p.name not in allowed
+             and ".snap" not in p.parts and loose.search(p.read_text())]
+    assert not found, f"loose u_ material uniforms (use the Material block): {found}"
+
+
+# --- the checks when a material is built --------------------------------------------------------------------
+@pytest.mark.parametrize(("params", "needle"), [
+    ({**PARAMS, "gian": 1.0}, r"material 'M': params\['gian'\]: shader 'probe' \(probe\.\w+.*\) has no value 'gian'"
+                              r".*did you mean 'gain'"),
+    ({k: v for k, v in PARAMS.items() if k != "gain"},
+     r"material 'M': params: shader 'probe' \(probe\.\w+.*\) reads 'gain', which the material never sets"),
+    ({**PARAMS, "tint": (1.0, 2.0)},
+     r"material 'M': params: shader 'probe' \(probe\.\w+.*\): block 'Material' field 'tint': expected 3 value"),
+    ({**PARAMS, "m": np.zeros(16)}, r"material 'M': params: .*block 'Material' field 'm': expected 9 value"),
+])
+def test_a_material_that_does_not_fit_its_block_names_material_shader_file_and_field(backend, params, needle):
+    with Application(backend, 16, 12, headless=True) as app:
+        build_shader(app)
+        with pytest.raises(ResourceError, match=needle):
+            app.renderer.materials.build("M", MaterialData("probe", params=params))
+        assert "M" not in app.renderer.materials
+
+
+def test_a_u_prefixed_parameter_says_to_leave_the_prefix_out():
+    with Application("opengl", 16, 12, headless=True) as app:
+        build_shader(app)
+        params = {**{k: v for k, v in PARAMS.items() if k != "gain"}, "u_gain": 1.0}
+        with pytest.raises(ResourceError, match=r"material 'M': params\['u_gain'\]: give it without the 'u_' "
+                                                r"prefix: 'gain'"):
+            app.renderer.materials.build("M", MaterialData("probe", params=params))
+
+
+def test_padding_fields_have_a_default_and_the_colour_is_optional(backend):
+    frag = GL_FRAG.replace("vec4 color;", "").replace("material.color * ", "")
+    wgsl = WGSL.replace("color: vec4<f32>, ", "").replace("material.color * ", "")
+    with Application(backend, 16, 12, headless=True) as app:
+        build_shader(app, frag=frag, wgsl=wgsl)
+        material = app.renderer.materials.build("M", MaterialData("probe", color=(1, 0, 0), params=PARAMS))
+        assert len(material.block_bytes) == 80  # tint, gain, m (48), offset, _pad
+
+
+def test_a_cube_map_in_a_2d_slot_of_a_block_material_names_the_slot(backend):
+    with Application(backend, 16, 12, headless=True) as app:
+        r = app.renderer
+        if backend == "opengl":
+            r.shaders.build("unlit", SHADERS / "unlit.vert", SHADERS / "unlit.frag")
+        else:
+            r.shaders.build("unlit", SHADERS / "unlit.wgsl")
+        r.textures.build("sky", sky_cube(8))
+        r.textures.build("flat", checkerboard(8, 2))
+        r.materials.build("ok", MaterialData("unlit", ["flat"]))
+        with pytest.raises(ResourceError, match=r"material 'M': textures: texture 'sky' is a cube map, but shader "
+                                                r"'unlit' samples a 2-D texture in slot"):
+            r.materials.build("M", MaterialData("unlit", ["sky"]))
+
+
+def test_glsl_a_varying_the_vertex_stage_never_declares_names_shader_file_and_varying():
+    frag = GL_FRAG.replace("in vec3 v_world;", "in vec3 v_world;\nin vec2 v_uv;").replace(
+        "vec4(v_world, 0.0) * 0.0", "vec4(v_world + vec3(v_uv, 0.0), 0.0) * 0.0")
+    with Application("opengl", 16, 12, headless=True) as app:
+        with pytest.raises(ShaderCompileError, match=r"shader 'probe' \(probe\.frag\): the fragment stage reads "
+                                                     r"varying 'v_uv' \(vec2\), which the vertex stage \(probe\.vert\) "
+                                                     r"never declares as 'out' \(its outputs: v_world\)"):
+            build_shader(app, frag=frag)
+
+
+def test_glsl_a_varying_declared_but_never_written_is_an_error():
+    vert = GL_VERT.replace("    v_world = world.xyz;\n", "")
+    with Application("opengl", 16, 12, headless=True) as app:
+        with pytest.raises(ShaderCompileError, match=r"shader 'probe' \(probe\.frag\): the fragment stage reads "
+                                                     r"varying 'v_world', which the vertex stage \(probe\.vert\) "
+                                                     r"declares but never writes"):
+            build_shader(app, vert=vert)
+
+
+def test_glsl_a_varying_of_another_type_is_an_error():
+    frag = GL_FRAG.replace("in vec3 v_world;", "in vec4 v_world;").replace("vec4(v_world, 0.0)", "v_world")
+    with Application("opengl", 16, 12, headless=True) as app:
+        with pytest.raises(ShaderCompileError, match=r"varying 'v_world' is vec4 here but vec3 in the vertex stage"):
+            build_shader(app, frag=frag)
+
+
+def test_wgsl_a_fragment_input_the_vertex_stage_never_returns_names_shader_file_and_location():
+    wgsl = WGSL.replace("@fragment fn fs_main(in: VOut)", "@fragment fn fs_main(in: VOut, @location(3) uv: vec2<f32>)")
+    with Application("webgpu", 16, 12, headless=True) as app:
+        with pytest.raises(ShaderCompileError, match=r"shader 'probe' \(probe\.wgsl\): fragment entry point 'fs_main' "
+                                                     r"reads @location\(3\) 'uv' \(vec2<f32>\), which vertex entry "
+                                                     r"point 'vs_main' never returns \(it returns: @location\(0\) "
+                                                     r"world\)"):
+            build_shader(app, wgsl=wgsl)
+
+
+def test_wgsl_a_fragment_input_of_another_type_is_an_error():
+    wgsl = WGSL.replace("@fragment fn fs_main(in: VOut)", "@fragment fn fs_main(@location(0) world: vec4<f32>)")
+    with Application("webgpu", 16, 12, headless=True) as app:
+        with pytest.raises(ShaderCompileError, match=r"@location\(0\) is vec4<f32> 'world' in 'fs_main' but "
+                                                     r"vec3<f32> 'world' in 'vs_main'"):
+            build_shader(app, wgsl=wgsl)
+
+
+def test_a_block_that_differs_between_glsl_stages_names_both_files():
+    vert = GL_VERT.replace("out vec3 v_world;", "out vec3 v_world;\nlayout(std140) uniform Material { vec4 color; "
+                           "} material;")
+    with Application("opengl", 16, 12, headless=True) as app:
+        with pytest.raises(ShaderCompileError, match=r"shader 'probe': probe\.frag declares the Material block "
+                                                     r"differently from probe\.vert"):
+            build_shader(app, vert=vert)
+
+
+def test_a_glsl_block_that_wgsl_could_not_share_is_refused_by_the_both_rule():
+    fields = glsl_material_fields("layout(std140) uniform Material { float a; mat2 m; } material;", "x.frag")
+    assert BlockLayout("Material", fields, rules="std140").offset("m") == 16
+    with pytest.raises(ValueError, match=r"block 'Material' field 'm': std140 puts it at offset 16"):
+        BlockLayout("Material", fields)
+
+
+def test_changing_values_rewrites_the_block_without_a_new_buffer(backend):
+    with Application(backend, 16, 12, headless=True) as app:
+        build_shader(app)
+        material = app.renderer.materials.build("M", MaterialData("probe", params=PARAMS))
+        buffer = material.block_buffer if backend == "opengl" else material.uniform_buffer
+        material.set_values({"color": (1, 1, 1, 1), **PARAMS, "gain": 3.0})
+        assert np.frombuffer(material.block_bytes, np.float32)[7] == 3.0
+        assert (material.block_buffer if backend == "opengl" else material.uniform_buffer) is buffer
