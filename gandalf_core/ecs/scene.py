@@ -11,6 +11,7 @@ import gc
 import os
 import uuid
 from collections.abc import Iterator, Sequence
+from time import perf_counter as _perf_counter
 from typing import Any, TypeVar
 
 import numpy as np
@@ -44,9 +45,15 @@ class Scene:
         self.membership_version = 0  # bumped whenever any component is added or removed
 
     # --- entities ---------------------------------------------------------------------------------
-    def enroll_entity(self) -> uuid.UUID:
-        """Create a new, empty entity and return its id."""
-        entity = _new_id()
+    def enroll_entity(self, entity: uuid.UUID | None = None) -> uuid.UUID:
+        """Create a new, empty entity and return its id (``entity``: reuse a given id, e.g. to bring a destroyed
+        entity back on undo; an id in use is an error)."""
+        if entity is None:
+            entity = _new_id()
+        elif not isinstance(entity, uuid.UUID):
+            raise TypeError(f"scene '{self.name}': an entity id must be a uuid.UUID, got {entity!r}")
+        elif entity in self._entities:
+            raise ValueError(f"scene '{self.name}': {self.describe(entity)} exists already")
         self._entities[entity] = {}
         return entity
 
@@ -430,6 +437,13 @@ class Scene:
         system._members.clear()
         system._lists = None
 
+    def move_system(self, system: System, index: int) -> None:
+        """Move ``system`` to position ``index`` of the update order (clamped to the list)."""
+        if system not in self._systems:
+            raise ValueError(f"scene '{self.name}' has no system {system!r} to move")
+        self._systems.remove(system)
+        self._systems.insert(max(0, min(int(index), len(self._systems))), system)
+
     def get_system(self, system_type: type[System]) -> System:
         for system in self._systems:
             if isinstance(system, system_type):
@@ -438,15 +452,22 @@ class Scene:
 
     def update(self, ts: float) -> None:
         """Run one frame: every enabled system's ``on_update_system`` in order; entities a system destroys go
-        when it has finished."""
+        when it has finished. Each system's wall-clock time lands in its ``update_seconds``."""
         for system in list(self._systems):
             if system.enabled:
-                self._updating = True
-                try:
-                    system.on_update_system(ts)
-                finally:
-                    self._updating = False
-                    self._flush_destroyed()
+                self.run_system(system, ts)
+
+    def run_system(self, system: System, ts: float) -> None:
+        """One ``on_update_system`` of ``system`` (enabled or not: a paused system's single step), timed."""
+        outer, self._updating = self._updating, True  # a step asked for inside another system's update nests
+        start = _perf_counter()
+        try:
+            system.on_update_system(ts)
+        finally:
+            system.update_seconds = _perf_counter() - start
+            self._updating = outer
+            if not outer:
+                self._flush_destroyed()
 
     def _flush_destroyed(self) -> None:
         pending, self.pending_destroy = self.pending_destroy, []

@@ -40,7 +40,10 @@ class System:
         self.component_types: tuple[type[Component], ...] = types
         self.name = name or type(self).__name__
         self.scene: Scene | None = None
+        #: False pauses the system: the scene skips its update (``Scene.run_system`` still runs it once).
         self.enabled = True
+        #: Wall-clock seconds of its last ``on_update_system`` (written by the scene).
+        self.update_seconds = 0.0
         self._members: dict[uuid.UUID, tuple[Any, ...]] = {}
         self._lists: tuple[list[uuid.UUID], list[tuple[Any, ...]]] | None = None
         #: Bumped whenever an entity starts or stops matching: caches built from the members compare it.

@@ -16,7 +16,10 @@ from typing import Any
 from ..ecs import Component
 
 #: The panel kinds the editor's systems draw.
-PANEL_KINDS = ("hierarchy", "inspector", "stats", "file")
+PANEL_KINDS = ("menu", "viewport", "hierarchy", "inspector", "systems", "content", "console", "stats", "file")
+
+
+_TITLES = {"menu": "Menu bar", "content": "Content browser", "file": "Scene file"}
 
 
 def _pair(name: str, value: Sequence[float]) -> tuple[float, float]:
@@ -47,7 +50,7 @@ class EditorPanelComponent(Component):
         if kind not in PANEL_KINDS:
             raise ValueError(f"EditorPanelComponent.kind must be one of {PANEL_KINDS}, got {kind!r}")
         self.kind = kind
-        self.title = title or kind.capitalize()
+        self.title = title or _TITLES.get(kind, kind.capitalize())
         self.visible = bool(visible)
         self.position = _pair("position", position)
         self.size = _pair("size", size)

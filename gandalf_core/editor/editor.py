@@ -2,14 +2,17 @@
 
 ``enable_editor(app)`` creates an ImGui context, registers a GUI overlay on ``app.renderer`` (drawn over
 each finished frame on both backends) and adds the editor to the active scene and to every scene the app
-switches to: four panel entities (:class:`EditorPanelComponent`) and the systems that draw them in
-``on_gui_update``. Each frame the overlay feeds ImGui from ``app.input``, runs ``scene.gui_update()``
-(every system's GUI hook, the editor's and the scene's own) and draws the result.
+switches to: one panel entity (:class:`EditorPanelComponent`) per panel kind and the systems that draw them
+in ``on_gui_update``. Every edit goes through the undoable actions of
+:class:`~gandalf_core.editor.actions.EditorActions`; the console shows the log
+(:class:`~gandalf_core.editor.console_log.EditorLog`). Each frame the overlay feeds ImGui from ``app.input``,
+runs ``scene.gui_update()`` (every system's GUI hook, the editor's and the scene's own) and draws the result.
 ``disable_editor(app)`` (or ``editor.disable()``) removes all of it again.
 """
 
 from __future__ import annotations
 
+import math
 import time
 import uuid
 import warnings
@@ -18,24 +21,39 @@ from pathlib import Path
 from typing import Any
 
 from ..ecs import Scene, System
+from .actions import EditorActions
+from .commands import Command, CommandStack
 from .components import EditorPanelComponent
+from .console_log import EditorLog
 
 #: The editor of each application that has one enabled.
 _EDITORS: weakref.WeakKeyDictionary[Any, Editor] = weakref.WeakKeyDictionary()
 
 
-def _default_layout(width: int, height: int) -> list[tuple[str, str, tuple[float, float], tuple[float, float]]]:
-    """(kind, title, position, size) of each panel: two columns at the sides, the middle left free."""
-    left, right = 0.28 * width, 0.36 * width
+MENU_HEIGHT = 20.0
+
+
+def _default_layout(width: int, height: int) -> list[tuple[str, str | None, tuple[float, float], tuple[float, float]]]:
+    """(kind, title, position, size) of each panel: the menu bar on top, the viewport in the middle with the console
+    under it, the hierarchy and content browser on the left, inspector, systems, stats and file on the right."""
+    top = MENU_HEIGHT
+    h = height - top
+    left, mid = 0.22 * width, 0.50 * width
+    right = width - left - mid
     return [
-        ("hierarchy", "Hierarchy", (0.0, 0.0), (left, 0.55 * height)),
-        ("file", "Scene file", (0.0, 0.55 * height), (left, 0.45 * height)),
-        ("inspector", "Inspector", (width - right, 0.0), (right, 0.62 * height)),
-        ("stats", "Stats", (width - right, 0.62 * height), (right, 0.38 * height)),
+        ("menu", None, (0.0, 0.0), (float(width), top)),
+        ("viewport", None, (left, top), (mid, 0.68 * h)),
+        ("console", None, (left, top + 0.68 * h), (mid, 0.32 * h)),
+        ("hierarchy", None, (0.0, top), (left, 0.5 * h)),
+        ("content", None, (0.0, top + 0.5 * h), (left, 0.5 * h)),
+        ("inspector", None, (left + mid, top), (right, 0.46 * h)),
+        ("systems", None, (left + mid, top + 0.46 * h), (right, 0.24 * h)),
+        ("stats", None, (left + mid, top + 0.70 * h), (right, 0.15 * h)),
+        ("file", None, (left + mid, top + 0.85 * h), (right, 0.15 * h)),
     ]
 
 
-class Editor:
+class Editor(EditorActions):
     """The editor of one Application. Create it with :func:`enable_editor`."""
 
     def __init__(self, app: Any) -> None:
@@ -51,6 +69,21 @@ class Editor:
         #: Pixel rectangles (x0, y0, x1, y1) of this frame's named widgets, e.g. "hierarchy/<uuid>".
         self.item_rects: dict[str, tuple[float, float, float, float]] = {}
         self._material_colors: dict[str, tuple[float, ...]] = {}
+        #: The undo/redo history of every edit.
+        self.commands = CommandStack()
+        #: The console's entries: log records, warnings and the editor's errors.
+        self.log = EditorLog()
+        self.log.install()
+        #: Files saved or opened, newest first (File > Open Recent).
+        self.recent: list[str] = []
+        #: Whether the pointer is over the gizmo / the gizmo is being dragged (this frame).
+        self.gizmo_over = self.gizmo_using = False
+        #: Seconds the last GUI frame took (ImGui's frame, the panels, drawing it).
+        self.gui_seconds = 0.0
+        self._payloads: dict[int, tuple[str, Any]] = {}
+        self._payload_ids: dict[tuple[str, Any], int] = {}
+        self._entity_count, self._entity_count_key = 0, -1
+        self._shader_sources: dict[str, tuple[Any, ...]] = {}
         self._installed: dict[int, tuple[Scene, list[uuid.UUID], list[System]]] = {}
         self._imgui = imgui
         self._context = imgui.create_context()
@@ -85,9 +118,18 @@ class Editor:
         """Add the panel systems and panel entities to ``scene`` (once per scene)."""
         if id(scene) in self._installed:
             return
+        from ..render import RenderSystem
         from .panels import PANEL_SYSTEMS
+        from .viewport_panel import ViewportPanelSystem
 
         systems = [scene.add_system(cls(self)) for cls in PANEL_SYSTEMS]
+        # The viewport renders the scene into its texture during the update, before the frame's render system
+        # (whose overlay draws the GUI that shows the texture).
+        render = [i for i, s in enumerate(scene.systems) if isinstance(s, RenderSystem)]
+        if render:
+            for system in systems:
+                if isinstance(system, ViewportPanelSystem):
+                    scene.move_system(system, render[0])
         renderer = self.app.renderer
         panels = [EditorPanelComponent(kind, title, position=pos, size=size)
                   for kind, title, pos, size in _default_layout(renderer.width, renderer.height)]
@@ -129,19 +171,25 @@ class Editor:
         now = self.app.clock.time
         dt, self._last_time = now - self._last_time, now
         io.delta_time = dt if dt > 0.0 else 1.0 / 60.0  # ImGui rejects a zero time step
+        from imgui_bundle import imguizmo
+
         from .input_bridge import feed
 
         feed(io, self.app.input)
         self.item_rects = {}
         imgui.new_frame()
+        imguizmo.im_guizmo.begin_frame()
         try:
             self.app.scene.gui_update()
+            if not imgui.is_any_item_active() and not self.gizmo_using:
+                self.commands.seal()  # the drag (if any) is over: the next edit is a new undo step
         finally:
             imgui.render()
         if encoder is None:
             self._gui.render(imgui.get_draw_data(), renderer.framebuffer)
         else:
             self._gui.render(imgui.get_draw_data(), encoder, renderer.color_view)
+        self.gui_seconds = time.perf_counter() - wall
 
     @property
     def wants_mouse(self) -> bool:
@@ -169,14 +217,35 @@ class Editor:
             self._material_colors[name] = tuple(data.color) if data is not None else (1.0, 1.0, 1.0, 1.0)
         return self._material_colors[name][:3]
 
-    def set_material_color(self, name: str, rgb: Any) -> None:
-        """Change material ``name``'s colour at run time (no pipeline is rebuilt)."""
+    def set_material_color(self, name: str, rgb: Any, merge: bool = False) -> None:
+        """Change material ``name``'s colour at run time (no pipeline is rebuilt); undoable."""
         current = self.material_color(name)
         if current is None:
             raise ValueError(f"material '{name}' has not been built by the renderer yet")
-        color = (*(float(c) for c in rgb), self._material_colors[name][3])
+        before = self._material_colors[name]
+        after = (*(float(c) for c in rgb), before[3])
+        if len(after) != 4 or not all(math.isfinite(c) and c >= 0.0 for c in after):
+            raise ValueError(f"material '{name}': a colour needs 3 finite values >= 0 (sRGB), got {rgb!r}")
+        if after == before:
+            return
+        self.commands.push(Command(f"colour of {name}", lambda: self._put_material_color(name, after),
+                                   lambda: self._put_material_color(name, before), merge_key=("color", name)),
+                           merge=merge)
+
+    def _put_material_color(self, name: str, color: tuple[float, ...]) -> None:
+        if self.material_color(name) is None:  # rebuilt since (e.g. a texture changed): built again on next use
+            data = self.app.scene.assets.materials.get(name)
+            if data is not None:
+                self.app.scene.assets.material(name, data.with_color(color))
+            self._material_colors.pop(name, None)
+            return
         materials = self.app.renderer.materials
         material = materials.get(name)
+        if material.data is not self.app.scene.assets.materials.get(name, material.data):
+            # The scene's data changed since the build (a texture swapped): the renderer builds it again anyway.
+            self.app.scene.assets.material(name, self.app.scene.assets.materials[name].with_color(color))
+            self._material_colors[name] = color
+            return
         material.set_color(color)
         self._material_colors[name] = color
         # Write it back to the scene's assets too, so that Save keeps it.
@@ -186,10 +255,131 @@ class Editor:
             assets.materials[name] = material.data = data
             materials.adopt(name, data)
 
-    # --- Save / Load ----------------------------------------------------------------------------------
+    # --- errors, drag payloads, panels, systems ------------------------------------------------------
+    def attempt(self, action: Any, *args: Any, **kwargs: Any) -> Any:
+        """Run ``action``; an error is logged to the console whole and shown as the status, never raised."""
+        try:
+            return action(*args, **kwargs)
+        except Exception as exc:  # noqa: BLE001 - the editor shows every failure and keeps running
+            self._report(f"{type(exc).__name__}: {exc}", error=True)
+            return None
+
+    def payload_id(self, kind: str, value: Any) -> int:
+        """A small integer standing for a dragged thing (ImGui payloads carry numbers)."""
+        key = (kind, value)
+        pid = self._payload_ids.get(key)
+        if pid is None:
+            pid = self._payload_ids[key] = len(self._payloads) + 1
+            self._payloads[pid] = key
+        return pid
+
+    def payload(self, pid: int) -> tuple[str, Any]:
+        return self._payloads.get(pid, ("", None))
+
+    def panel(self, kind: str, scene: Scene | None = None) -> EditorPanelComponent | None:
+        """The (first) panel component of ``kind`` in ``scene`` (the active one by default)."""
+        scene = scene or self.app.scene
+        for entity in self.panels(scene):
+            component = scene.get_component(entity, EditorPanelComponent)
+            if component.kind == kind:
+                return component
+        return None
+
+    def panel_system(self, kind: str, scene: Scene | None = None) -> Any:
+        """The editor's system drawing panels of ``kind`` in ``scene`` (the active one by default)."""
+        scene = scene or self.app.scene
+        entry = self._installed.get(id(scene))
+        return next((s for s in entry[2] if s.kind == kind), None) if entry is not None else None
+
+    @property
+    def viewport(self) -> Any:
+        """The viewport panel's system (its ``target`` holds the scene rendered at the panel's size)."""
+        return self.panel_system("viewport")
+
+    def panel_visible(self, kind: str) -> bool:
+        panel = self.panel(kind)
+        return panel is not None and panel.visible
+
+    def show_panel(self, kind: str, visible: bool = True) -> None:
+        """Show or hide the panel of ``kind`` (View menu)."""
+        panel = self.panel(kind)
+        if panel is None:
+            raise ValueError(f"editor: no panel of kind {kind!r}")
+        panel.visible = bool(visible)
+
+    def set_system_enabled(self, system: System, enabled: bool) -> None:
+        """Pause (False) or resume (True) ``system``; the render system cannot be paused (it draws the editor)."""
+        from ..render import RenderSystem
+
+        if isinstance(system, RenderSystem) and not enabled:
+            raise ValueError("editor: the RenderSystem cannot be paused (it draws the frame and the editor)")
+        system.enabled = bool(enabled)
+
+    def step_system(self, system: System) -> None:
+        """Run a (paused) system once with the app's time step."""
+        clock = self.app.clock
+        ts = clock.fixed_dt if getattr(clock, "fixed_dt", None) else (self.frame_seconds or 1.0 / 60.0)
+        self.app.scene.run_system(system, ts)
+
+    def move_system(self, system: System, delta: int) -> None:
+        """Move ``system`` ``delta`` places in the update order (among all the scene's systems)."""
+        scene = self.app.scene
+        order = scene.systems
+        scene.move_system(system, order.index(system) + int(delta))
+
+    # --- shaders ----------------------------------------------------------------------------------------
+    def shader_files(self, name: str) -> tuple[Any, ...]:
+        """The files shader ``name`` was built from (empty when it was built from text)."""
+        built = self._shader_sources.get(name)
+        return built if built is not None else ()
+
+    def build_shader(self, name: str, *files: str | Path) -> bool:
+        """(Re)build shader ``name`` from ``files``; a compile error goes to the console with its file:line."""
+        shaders = self.app.renderer.shaders
+        try:
+            if name in shaders:
+                shaders.forget(name)
+            shaders.build(name, *files)
+        except Exception as exc:  # noqa: BLE001 - shown in the console, whole
+            return self._report(f"shader '{name}': {exc}", error=True)
+        self._shader_sources[name] = tuple(files)
+        return self._report(f"built shader '{name}'", error=False)
+
+    def reload_shader(self, name: str) -> bool:
+        """Compile shader ``name`` again from the files :meth:`build_shader` built it from."""
+        files = self.shader_files(name)
+        if not files:
+            return self._report(f"shader '{name}': no files to reload it from", error=True)
+        return self.build_shader(name, *files)
+
+    # --- New / Save / Load ------------------------------------------------------------------------------
     def _report(self, message: str, error: bool) -> bool:
         self.status, self.status_is_error = message, error
+        if error:
+            self.log.error(message)
+        else:
+            self.log.add("info", "editor", message)
         return not error
+
+    def _remember_file(self, path: str | Path) -> None:
+        text = str(path)
+        self.recent = [text] + [p for p in self.recent if p != text][:7]
+        self.path = text
+
+    def new_scene(self) -> Scene:
+        """Switch to a new, empty scene (named "untitled", numbered when taken) that shares the running assets."""
+        names = {s.name for s in self.app.scenes.scenes}
+        name, n = "untitled", 1
+        while name in names:
+            n += 1
+            name = f"untitled ({n})"
+        scene = Scene(name)
+        scene.assets = self.app.scene.assets  # the renderer's named resources stay valid
+        self.app.switch_scene(scene)
+        self.selected = None
+        self.commands.clear()
+        self._report(f"new scene '{name}'", error=False)
+        return scene
 
     def save(self, path: str | Path) -> bool:
         """Save the active scene, without the editor's entities, as USD; the outcome goes to ``status``."""
@@ -205,6 +395,7 @@ class Editor:
         except Exception as exc:  # noqa: BLE001 - any failure is shown in the panel; the editor never crashes
             return self._report(f"save failed: {type(exc).__name__}: {exc}", error=True)
         notes = "; ".join(str(w.message) for w in caught)
+        self._remember_file(path)
         return self._report(f"saved {path}" + (f" ({notes})" if notes else ""), error=False)
 
     def load(self, path: str | Path) -> bool:
@@ -221,8 +412,8 @@ class Editor:
 
         clashes = adopt_built_assets(scene.assets, self.app.scene.assets, self.app.renderer)
         if clashes:
-            return self._report(f"load failed: {', '.join(clashes)} already in use with other data "
-                                "(rename them in the file)", error=True)
+            return self._report(f"load failed: {', '.join(clashes)} already built by the program's own code "
+                                "with other data (rename them in the file)", error=True)
         names = {s.name for s in self.app.scenes.scenes}
         base, n = scene.name, 1
         while scene.name in names:  # a loaded copy must not clash with a registered scene
@@ -230,6 +421,9 @@ class Editor:
             scene.name = f"{base} ({n})"
         self.app.switch_scene(scene)
         self.selected = None
+        self.commands.clear()
+        self._material_colors.clear()
+        self._remember_file(path)
         return self._report(f"loaded {path} as scene '{scene.name}'", error=False)
 
     # --- teardown -------------------------------------------------------------------------------------
@@ -248,6 +442,7 @@ class Editor:
         app.gui_wants_mouse = lambda: False
         for scene, _entities, _systems in list(self._installed.values()):
             self.uninstall(scene)
+        self.log.uninstall()
         self._imgui.set_current_context(self._context)
         self._gui.release()
         self._imgui.destroy_context(self._context)

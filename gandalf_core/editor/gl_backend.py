@@ -57,6 +57,8 @@ class GLGuiRenderer:
         self._ibo: moderngl.Buffer | None = None
         self._vao: moderngl.VertexArray | None = None
         self.textures: dict[int, moderngl.Texture] = {}
+        #: Textures a panel shows (the viewport's), by id: owned by whoever registered them.
+        self.user_textures: dict[int, moderngl.Texture] = {}
         io = imgui.get_io()
         io.backend_flags |= imgui.BackendFlags_.renderer_has_textures
         limit = ctx.info["GL_MAX_TEXTURE_SIZE"]
@@ -87,6 +89,14 @@ class GLGuiRenderer:
                 texture.release()
             tex.set_tex_id(0)
             tex.set_status(imgui.ImTextureStatus.destroyed)
+
+    def texture_ref(self, texture: moderngl.Texture) -> tuple[int, Any]:
+        """Register a texture a panel shows with ``imgui.image``: (key for :meth:`forget_texture`, ImTextureRef)."""
+        self.user_textures[texture.glo] = texture
+        return texture.glo, imgui.ImTextureRef(texture.glo)
+
+    def forget_texture(self, key: int) -> None:
+        self.user_textures.pop(key, None)
 
     def _buffers(self, vertex_bytes: int, index_bytes: int) -> moderngl.VertexArray:
         # Grown by powers of two; the vertex array is rebuilt only when a buffer is replaced.
@@ -133,7 +143,8 @@ class GLGuiRenderer:
                     if x1 <= x0 or y1 <= y0:
                         continue
                     fbo.scissor = (x0, height - y1, x1 - x0, y1 - y0)  # GL's origin is bottom-left
-                    self.textures[command.tex_ref.get_tex_id()].use(location=0)
+                    tex_id = command.tex_ref.get_tex_id()
+                    (self.textures.get(tex_id) or self.user_textures[tex_id]).use(location=0)
                     vao.render(moderngl.TRIANGLES, vertices=command.elem_count, first=command.idx_offset)
         finally:
             fbo.scissor = None

@@ -33,7 +33,9 @@ def _equal(a: Any, b: Any) -> bool:
 def adopt_built_assets(loaded: Assets, current: Assets, renderer: Any) -> list[str]:
     """Share ``current``'s data objects with ``loaded`` where the renderer built that name from equal data.
 
-    Returns the clashing resources ("material 'M'") whose name was built from different data.
+    Returns the clashing resources ("material 'M'"): names the program built itself (``renderer.materials.build``)
+    from other data. A name built from a scene's assets with other data (a colour edited since, say) is no clash:
+    the loaded scene keeps its own data and the renderer builds it anew when that scene is drawn.
     """
     clashes = []
     for kind in _KINDS:
@@ -45,6 +47,6 @@ def adopt_built_assets(loaded: Assets, current: Assets, renderer: Any) -> list[s
             existing = running.get(name)
             if existing is not None and _equal(existing, data):
                 table[name] = existing
-            else:
+            elif name not in getattr(library, "_from_assets", ()):
                 clashes.append(f"{kind[:-1] if kind != 'meshes' else 'mesh'} '{name}'")
     return clashes

@@ -78,6 +78,14 @@ class WGPUGuiRenderer:
         self._texture: Any = None
         self._bind_group: Any = None
 
+    def texture_ref(self, view: Any) -> tuple[Any, Any]:
+        """Register a texture view a panel shows with ``imgui.image``: (key for :meth:`forget_texture`, its ref)."""
+        ref = self.backend.register_texture(view)
+        return ref, ref
+
+    def forget_texture(self, key: Any) -> None:
+        self.backend._texture_views.pop(key.get_tex_id(), None)
+
     def _target(self, width: int, height: int) -> None:
         if self._size == (width, height):
             return

@@ -1,0 +1,72 @@
+"""The content browser: the scene's meshes, textures and materials, and the renderer's shaders.
+
+Drag a mesh onto the viewport or the hierarchy to place it in the scene ("+" places it at the origin); drag a
+texture onto a material (here, or on a texture slot in the inspector) to put it into the material's first slot.
+Shaders show where they come from; "reload" compiles one again from its files, and a compile error goes to the
+console with its file:line.
+"""
+
+from __future__ import annotations
+
+from imgui_bundle import imgui
+
+from .components import EditorPanelComponent
+from .inspector_panel import TEXTURE_PAYLOAD
+from .panel_base import PanelSystem
+
+MESH_PAYLOAD = "GANDALF_MESH"
+
+
+class ContentPanelSystem(PanelSystem):
+    """Lists the scene's assets; the drag sources for meshes and textures."""
+
+    kind = "content"
+
+    def draw(self, panel: EditorPanelComponent) -> None:
+        editor = self.editor
+        assets = self.scene.assets
+        if imgui.tree_node_ex(f"Meshes ({len(assets.meshes)})", imgui.TreeNodeFlags_.default_open):
+            for name in sorted(assets.meshes):
+                if imgui.small_button(f"+##{name}"):
+                    self.act(editor.spawn_mesh, name)
+                imgui.same_line()
+                imgui.selectable(name, False)
+                self.remember(f"content/mesh/{name}")
+                self._source(MESH_PAYLOAD, "mesh", name)
+            imgui.tree_pop()
+        if imgui.tree_node_ex(f"Textures ({len(assets.textures)})", imgui.TreeNodeFlags_.default_open):
+            for name in sorted(assets.textures):
+                data = assets.textures[name]
+                size = getattr(data, "width", None), getattr(data, "height", None)
+                imgui.selectable(f"{name}  {size[0]}x{size[1]}" if size[0] else name, False)
+                self.remember(f"content/texture/{name}")
+                self._source(TEXTURE_PAYLOAD, "texture", name)
+            imgui.tree_pop()
+        if imgui.tree_node_ex(f"Materials ({len(assets.materials)})", imgui.TreeNodeFlags_.default_open):
+            for name in sorted(assets.materials):
+                data = assets.materials[name]
+                imgui.selectable(f"{name}  ({data.shader})", False)
+                self.remember(f"content/material/{name}")
+                if imgui.begin_drag_drop_target():
+                    payload = imgui.accept_drag_drop_payload_py_id(TEXTURE_PAYLOAD)
+                    if payload is not None:
+                        _kind, texture = editor.payload(payload.data_id)
+                        self.act(editor.set_material_texture, name, texture, 0)
+                    imgui.end_drag_drop_target()
+            imgui.tree_pop()
+        shaders = editor.app.renderer.shaders
+        if imgui.tree_node_ex(f"Shaders ({len(shaders)})", imgui.TreeNodeFlags_.default_open):
+            for name in shaders.names():
+                imgui.text(name)
+                files = editor.shader_files(name)
+                if files:
+                    imgui.same_line()
+                    if imgui.small_button(f"reload##{name}"):
+                        self.act(editor.reload_shader, name)
+            imgui.tree_pop()
+
+    def _source(self, payload_type: str, kind: str, name: str) -> None:
+        if imgui.begin_drag_drop_source():
+            imgui.set_drag_drop_payload_py_id(payload_type, self.editor.payload_id(kind, name))
+            imgui.text(f"{kind} {name}")
+            imgui.end_drag_drop_source()
