@@ -49,3 +49,31 @@ def test_escape_closes_the_window(backend):
         app.input.key("ESCAPE")
         app.run()  # returns because the window now wants to close
         assert app.window.should_close
+
+
+def test_direct_present_gives_the_offscreen_picture(backend):
+    """In a window, frames are drawn straight onto the window (no offscreen target and copy) when the window
+    encodes sRGB; the picture read back is the same bytes as through the offscreen target and blit."""
+    from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent, TransformComponent
+    from gandalf_core.resources import MaterialData, primitives
+
+    scene = Scene("direct")
+    scene.assets.mesh("cube", primitives.cube())
+    scene.assets.material("lit", MaterialData("gandalf.blinn_phong", color=(0.9, 0.5, 0.2)))
+    scene.create_entity(ClearColorComponent((0.1, 0.2, 0.3)))
+    scene.create_entity(TransformComponent((0.0, 0.0, 3.0)), CameraComponent(60.0, 0.1, 100.0))
+    scene.create_entity(TransformComponent((0.0, 0.0, 0.0), quaternion=(0.9, 0.3, 0.3, 0.0)),
+                        MeshComponent("cube"), MaterialComponent("lit"))
+    with Application(backend, 160, 120, headless=False, fixed_dt=1 / 60) as app:
+        app.add_scene(scene)
+        renderer = app.renderer
+        assert renderer.present_direct, "under Xvfb both APIs' windows encode sRGB, so frames go straight to them"
+        app.run(frames=2)
+        if backend == "webgpu":
+            assert renderer._pending_surface is not None  # drawn onto the surface texture, not yet presented
+        direct = app.capture()
+        renderer.present_direct = False
+        app.run(frames=2)
+        blit = app.capture()
+    assert not np.array_equal(direct[60, 80], direct[0, 0]), "the cube is drawn in the middle of the frame"
+    assert np.array_equal(direct, blit), f"max difference {np.abs(direct.astype(int) - blit).max()}"

@@ -8,6 +8,7 @@ changing a material's colour never builds one.
 
 from __future__ import annotations
 
+import os
 from importlib import resources
 from typing import Any
 
@@ -55,6 +56,9 @@ class WebGPURenderer(Renderer):
         super().__init__(width, height)
         self.window = window
         self._surface = None
+        #: In a window, frames are drawn straight onto the surface texture (no offscreen target and blit) unless
+        #: an overlay needs the offscreen frame; GANDALF_PRESENT=blit turns this off.
+        self.present_direct = window is not None and os.environ.get("GANDALF_PRESENT", "").lower() != "blit"
         if window is not None:
             from wgpu.utils.glfw_present_info import get_glfw_present_info
 
@@ -64,11 +68,14 @@ class WebGPURenderer(Renderer):
             # The blit samples the sRGB frame as linear light; an -srgb surface encodes it back unchanged.
             preferred = self._surface.get_preferred_format(self.adapter)
             self._surface_format = preferred if preferred.endswith("-srgb") else f"{preferred}-srgb"
+            # COPY_SRC so that a frame drawn straight onto the surface can still be read back.
+            surface_usage = wgpu.TextureUsage.RENDER_ATTACHMENT | wgpu.TextureUsage.COPY_SRC
             try:
-                self._surface.configure(device=self.device, format=self._surface_format)
-            except ValueError:  # this surface offers no sRGB variant
+                self._surface.configure(device=self.device, format=self._surface_format, usage=surface_usage)
+            except ValueError:  # this surface offers no sRGB variant: frames go through the blit, which encodes
                 self._surface_format = preferred
                 self._surface.configure(device=self.device, format=self._surface_format)
+                self.present_direct = False
             self._surface.set_physical_size(*window.framebuffer_size)
             self._present = _PresentBlit(self.device, self._surface_format)
         # Group 0 is the engine's, shared by every pipeline: frame uniforms (0), lights (1), and the shadow
@@ -106,6 +113,10 @@ class WebGPURenderer(Renderer):
         self.textures.on_forget.append(self._forget_materials_using)
         self.textures.on_forget.append(lambda name: self._sky_materials.pop(name, None))
         self._instance_buffer: Any = None
+        #: The colour format the frame being recorded is drawn in (pipelines are built per format).
+        self._target_format = COLOR_FORMAT
+        #: A surface texture drawn and submitted but not yet presented (see :meth:`_present_pending`).
+        self._pending_surface: Any = None
         self._create_targets()
 
     def _create_frame_group(self, shadow_view: Any) -> Any:
@@ -133,6 +144,11 @@ class WebGPURenderer(Renderer):
     # --- a frame ------------------------------------------------------------------------------------
     def render(self, data: FrameData, assets: Assets) -> None:
         self.stats["draw_calls"] = 0
+        self._present_pending()
+        surface_texture = self._surface.get_current_texture() if self._surface is not None else None
+        direct = surface_texture is not None and self._can_draw_direct(surface_texture)
+        target_view = surface_texture.create_view() if direct else self.color_view
+        self._target_format = self._surface_format if direct else COLOR_FORMAT
         queue = self.device.queue
         queue.write_buffer(self._frame_buffer, 0, data.frame)
         queue.write_buffer(self._lights_buffer, 0, data.lights)
@@ -153,7 +169,7 @@ class WebGPURenderer(Renderer):
         # --8<-- [start:clear]
         rpass = encoder.begin_render_pass(
             color_attachments=[{
-                "view": self.color_view, "clear_value": tuple(float(x) for x in data.clear_color),
+                "view": target_view, "clear_value": tuple(float(x) for x in data.clear_color),
                 "load_op": "clear", "store_op": "store",
             }],
             depth_stencil_attachment={
@@ -184,13 +200,32 @@ class WebGPURenderer(Renderer):
         rpass.end()
         for overlay in self.overlays:
             overlay(self, encoder)
-        surface_texture = None
-        if self._surface is not None:
-            surface_texture = self._surface.get_current_texture()
+        if surface_texture is not None and not direct:
             self._present.draw(encoder, self.color_view, surface_texture.create_view())
         queue.submit([encoder.finish()])
-        if surface_texture is not None:
+        if direct:
+            self._pending_surface = surface_texture  # presented when the next frame starts
+        elif surface_texture is not None:
             self._surface.present()
+
+    # --8<-- [start:direct]
+    def _can_draw_direct(self, surface_texture: Any) -> bool:
+        """Whether this frame is drawn straight onto the window's surface texture instead of the offscreen target.
+
+        Direct: the frame's passes draw into the surface texture (an ``-srgb`` format, so the shaders' linear
+        colours are encoded once, as on the offscreen target) and no blit follows; the present is deferred to
+        the next frame so that read-back still sees this one. Not with overlays (the editor draws over the
+        offscreen frame), nor when the surface's size differs from the depth target's.
+        """
+        return (self.present_direct and not self.overlays
+                and tuple(surface_texture.size[:2]) == (self.width, self.height))
+
+    def _present_pending(self) -> None:
+        """Show the surface texture of the last direct frame. Deferred so that read-back still sees it."""
+        if self._pending_surface is not None and self._surface is not None:
+            self._pending_surface = None
+            self._surface.present()
+    # --8<-- [end:direct]
 
     def _draw_batch(self, rpass: Any, shader: WGPUShader, mesh: WGPUMesh, attributes: tuple[str, ...],
                     batch: DrawBatch) -> None:
@@ -269,7 +304,7 @@ class WebGPURenderer(Renderer):
                 {"binding": 0, "resource": texture.view}, {"binding": 1, "resource": texture.sampler},
             ])
             self._sky_materials[texture_name] = material
-        key = (SKY_SHADER, reverse_z)
+        key = (SKY_SHADER, reverse_z, self._target_format)
         pipeline = self._pipelines.get(key)
         if pipeline is None:
             pipeline = self._pipelines[key] = self._create_pipeline(shader, [], SKY_STATE, reverse_z)
@@ -292,7 +327,7 @@ class WebGPURenderer(Renderer):
         shader = material.shader
         attributes = mesh_attributes(shader.name, shader.attributes)
         data = material.data
-        key = (*data.pipeline_key(), attributes, reverse_z, mirrored)
+        key = (*data.pipeline_key(), attributes, reverse_z, mirrored, self._target_format)
         pipeline = self._pipelines.get(key)
         if pipeline is None:
             buffers = []
@@ -323,7 +358,7 @@ class WebGPURenderer(Renderer):
     def _create_pipeline(self, shader: WGPUShader, buffers: list[dict[str, Any]], data: MaterialData,
                          reverse_z: bool, mirrored: bool = False) -> Any:
         layouts = [self.frame_layout] + ([shader.material_layout] if shader.material_layout else [])
-        target: dict[str, Any] = {"format": COLOR_FORMAT}
+        target: dict[str, Any] = {"format": self._target_format}
         if data.blend != "opaque":
             target["blend"] = _BLEND[data.blend]
         compare = ("greater-equal" if reverse_z else "less-equal") if data.depth_test else "always"
@@ -341,21 +376,31 @@ class WebGPURenderer(Renderer):
         return pipeline
 
     # --- read-back, resize, release -------------------------------------------------------------------
+    def _frame_texture(self) -> tuple[Any, bool]:
+        """The texture holding the last frame, and whether its bytes are in BGRA order."""
+        if self._pending_surface is not None:
+            return self._pending_surface, self._surface_format.startswith("bgra")
+        return self._color, False
+
     def read_pixels(self) -> np.ndarray:
+        texture, bgra = self._frame_texture()
         data = self.device.queue.read_texture(
-            {"texture": self._color, "origin": (0, 0, 0), "mip_level": 0},
+            {"texture": texture, "origin": (0, 0, 0), "mip_level": 0},
             {"offset": 0, "bytes_per_row": self.width * 4, "rows_per_image": self.height},
             (self.width, self.height, 1),
         )
-        return np.frombuffer(data, dtype=np.uint8).reshape(self.height, self.width, 4).copy()
+        pixels = np.frombuffer(data, dtype=np.uint8).reshape(self.height, self.width, 4)
+        return pixels[..., [2, 1, 0, 3]] if bgra else pixels.copy()
 
     def read_pixel(self, x: int, y: int) -> np.ndarray:
+        texture, bgra = self._frame_texture()
         data = self.device.queue.read_texture(
-            {"texture": self._color, "origin": (int(x), int(y), 0), "mip_level": 0},
+            {"texture": texture, "origin": (int(x), int(y), 0), "mip_level": 0},
             {"offset": 0, "bytes_per_row": 4, "rows_per_image": 1},
             (1, 1, 1),
         )
-        return np.frombuffer(data, dtype=np.uint8).copy()
+        pixel = np.frombuffer(data, dtype=np.uint8)
+        return pixel[[2, 1, 0, 3]] if bgra else pixel.copy()
 
     def resize(self, width: int, height: int) -> None:
         if (width, height) == (self.width, self.height) or width <= 0 or height <= 0:
@@ -374,6 +419,7 @@ class WebGPURenderer(Renderer):
                 + sum(len(lib) for lib in libraries))
 
     def release(self) -> None:
+        self._present_pending()  # a surface texture must not outlive its device unpresented
         for lib in (self.materials, self.buffers, self.meshes, self.shaders, self.textures):
             lib.release()
         self._pipelines.clear()
