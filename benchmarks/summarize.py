@@ -1,6 +1,9 @@
 """Turn the JSON lines of bench_scenes.py (and optionally raw_ceiling.py) into markdown tables.
 
-usage: python benchmarks/summarize.py scenes.jsonl [ceiling.jsonl]
+usage: python benchmarks/summarize.py scenes.jsonl [ceiling.jsonl] [--plot OUT.png]
+
+``--plot`` also draws fps against the number of rotating cubes, engine against the raw ceiling in both APIs,
+and each scene's peak memory (matplotlib, Agg).
 """
 
 from __future__ import annotations
@@ -56,15 +59,57 @@ def ceiling_table(scenes: list[dict[str, Any]], ceiling: list[dict[str, Any]]) -
     return "\n".join(rows)
 
 
+def plot(scenes: list[dict[str, Any]], ceiling: list[dict[str, Any]], out: str) -> None:
+    """fps against N (engine and raw ceiling, both APIs, log-log) and peak RSS per scene, as one PNG."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    runs = [r for r in scenes if r.get("bench") == "gandalf-scenes" and "error" not in r]
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2))
+    colours = {"opengl": "tab:blue", "webgpu": "tab:orange"}
+    for backend, colour in colours.items():
+        engine = sorted((CEILING_MATCH[r["scene"]], r["fps"]) for r in runs
+                        if r["backend"] == backend and r["scene"] in CEILING_MATCH)
+        raw = sorted((r["n"], r["fps"]) for r in ceiling if r.get("backend") == backend and "n" in r)
+        if engine:
+            left.plot(*zip(*engine), "o-", color=colour, label=f"engine, {backend}")
+        if raw:
+            left.plot(*zip(*raw), "s--", color=colour, alpha=0.6, label=f"raw ceiling, {backend}")
+    left.set(xscale="log", yscale="log", xlabel="rotating cubes (N)", ylabel="frames per second",
+             title="engine against the raw API")
+    left.grid(True, which="both", alpha=0.3)
+    left.legend(fontsize=8)
+    names = [r["scene"] for r in runs if r["backend"] == "opengl"]
+    for i, (backend, colour) in enumerate(colours.items()):
+        rss = {r["scene"]: r["peak_rss_mb"] for r in runs if r["backend"] == backend}
+        right.bar([j + 0.4 * i for j in range(len(names))], [rss.get(n, 0) for n in names], 0.4,
+                  color=colour, label=backend)
+    right.set_xticks([j + 0.2 for j in range(len(names))], names, rotation=30, fontsize=8)
+    right.set(ylabel="peak RSS (MiB)", title="memory per scene")
+    right.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+
+
 def main(argv: list[str]) -> int:
-    if not argv:
-        print(__doc__, file=sys.stderr)
-        return 2
+    if not argv or argv[0] in ("-h", "--help"):
+        print(__doc__, file=sys.stderr if not argv else sys.stdout)
+        return 2 if not argv else 0
+    out = None
+    if "--plot" in argv:
+        i = argv.index("--plot")
+        out = argv[i + 1]
+        argv = argv[:i] + argv[i + 2:]
     scenes = load(argv[0])
     print(scenes_table(scenes))
     if len(argv) > 1:
         print()
         print(ceiling_table(scenes, load(argv[1])))
+    if out:
+        plot(scenes, load(argv[1]) if len(argv) > 1 else [], out)
+        print(f"wrote {out}", file=sys.stderr)
     return 0
 
 
