@@ -34,7 +34,8 @@ class Case:
     warns: type[Warning] | None = None
     words: tuple[str, ...] = ()
     check: Callable[[Any], Any] | None = None
-    xfail: str | None = None
+    #: A known bug elsewhere: a reason (every backend), or {backend: reason} for the backends it affects.
+    xfail: str | dict[str, str] | None = None
 
     def describe(self) -> str:
         if self.raises is not None:
@@ -46,19 +47,26 @@ class Case:
 
 
 def error(id: str, action: Callable[..., Any], raises: type[BaseException] | tuple[type[BaseException], ...],
-          *words: str, xfail: str | None = None) -> Case:
+          *words: str, xfail: str | dict[str, str] | None = None) -> Case:
     """The action must raise ``raises`` with every one of ``words`` in its message."""
     return Case(id, action, raises=raises, words=words, xfail=xfail)
 
 
-def warning(id: str, action: Callable[..., Any], warns: type[Warning], *words: str, xfail: str | None = None) -> Case:
+def warning(id: str, action: Callable[..., Any], warns: type[Warning], *words: str,
+            xfail: str | dict[str, str] | None = None) -> Case:
     """The action must warn with ``warns`` (one of its warnings holding every one of ``words``) and not raise."""
     return Case(id, action, warns=warns, words=words, xfail=xfail)
 
 
-def result(id: str, action: Callable[..., Any], check: Callable[[Any], Any], *, xfail: str | None = None) -> Case:
+def result(id: str, action: Callable[..., Any], check: Callable[[Any], Any], *,
+           xfail: str | dict[str, str] | None = None) -> Case:
     """The action must succeed and ``check(its result)`` hold (True or None; it may assert itself)."""
     return Case(id, action, check=check, xfail=xfail)
+
+
+def _marks(case: Case, backend: str | None) -> list[Any]:
+    reason = case.xfail.get(backend) if isinstance(case.xfail, dict) else case.xfail
+    return [pytest.mark.xfail(strict=True, reason=reason)] if reason else []
 
 
 def params(cases: Iterable[Case]) -> list[Any]:
@@ -67,9 +75,17 @@ def params(cases: Iterable[Case]) -> list[Any]:
     for case in cases:
         assert case.id not in seen, f"case id {case.id!r} is used twice"
         seen.add(case.id)
-        marks = [pytest.mark.xfail(strict=True, reason=case.xfail)] if case.xfail else []
-        out.append(pytest.param(case, id=case.id, marks=marks))
+        out.append(pytest.param(case, id=case.id, marks=_marks(case, None)))
     return out
+
+
+def params_per_backend(cases: Iterable[Case], backends: tuple[str, ...] = ("opengl", "webgpu")) -> list[Any]:
+    """``pytest.param(case, backend)`` for every backend and case (all of one backend first, so a module's app
+    per backend is made once), each with the xfail mark the case states for that backend."""
+    cases = list(cases)
+    params(cases)  # the id check
+    return [pytest.param(case, backend, id=f"{backend}-{case.id}", marks=_marks(case, backend))
+            for backend in backends for case in cases]
 
 
 def _missing(message: str, words: tuple[str, ...]) -> list[str]:

@@ -20,3 +20,21 @@ def shared_app(request: pytest.FixtureRequest) -> Iterator[Application]:
         yield app
     finally:
         app.close()
+
+
+@pytest.fixture(scope="module")
+def apps() -> Iterator[dict[str, Application]]:
+    """Headless apps by backend, made on first use and shared by one module's cases (for tables parametrised with
+    :func:`bad_input.catalogue.params_per_backend`): ``apps.get(backend)``."""
+    made: dict[str, Application] = {}
+
+    class Apps(dict):
+        def __missing__(self, backend: str) -> Application:
+            made[backend] = self[backend] = Application(backend, W, H, headless=True, fixed_dt=1 / 60)
+            return made[backend]
+
+    try:
+        yield Apps()
+    finally:
+        for app in made.values():
+            app.close()
