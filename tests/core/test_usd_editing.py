@@ -108,5 +108,12 @@ def test_editor_load_after_a_colour_edit(backend, tmp_path: Path) -> None:
             app.run(frames=1)
             assert app.scene.name == "edited (2)"
             assert app.scene.assets.materials["M"].color[:3] == pytest.approx(RED)  # (the panels cover the frame)
+            # The scene's systems came back once each; the app's render system and the editor's panels were not
+            # saved, so they are not doubled either.
+            names = [type(s).__name__ for s in app.scene.systems]
+            assert names.count("TransformSystem") == names.count("LightSystem") == names.count("RenderSystem") == 1
+            editor_owned = [type(s).__module__.startswith("gandalf_core.editor") for s in app.scene.systems]
+            panels = [n for n, owned in zip(names, editor_owned) if owned]
+            assert len(panels) == len(set(panels)), names
         finally:
             disable_editor(app)
