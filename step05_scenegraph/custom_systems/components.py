@@ -23,10 +23,11 @@ def vector3(owner: str, field: str, value: Sequence[float]) -> np.ndarray:
 
 # --8<-- [start:component]
 class GravityComponent(Component):
-    """A falling body: ``gravity`` (m/s², pointing down when positive), its velocity, and a floor to bounce on.
+    """A falling body: ``gravity`` (m/s², pointing down when positive), its velocity, and a floor
+    to bounce on.
 
-    ``position``/``previous`` are the simulated states the GravitySystem interpolates between; they are
-    taken from the entity's Transform when the system first sees the entity.
+    ``position``/``previous`` are the simulated states the GravitySystem interpolates between;
+    they are taken from the entity's Transform when the system first sees the entity.
     """
 
     def __init__(
@@ -37,7 +38,8 @@ class GravityComponent(Component):
         restitution: float = 0.8,
     ) -> None:
         if not 0.0 <= restitution <= 1.0:
-            raise ValueError(f"GravityComponent.restitution must lie in [0, 1], got {restitution!r}")
+            raise ValueError(f"GravityComponent.restitution must lie in [0, 1], "
+                             f"got {restitution!r}")
         self.gravity = float(gravity)
         self.velocity = vector3("GravityComponent", "velocity", velocity)
         self.floor = None if floor is None else float(floor)

@@ -39,10 +39,12 @@ class FixedStep:
         self.steps = 0  # fixed steps run so far
         self.dropped = 0.0  # seconds of frame time thrown away by the clamps
 
+    # --8<-- [start:advance]
     def advance(self, frame_ts: float) -> int:
         """Add one frame's time (seconds) and return the number of fixed steps to run for it."""
         if not (math.isfinite(frame_ts) and frame_ts >= 0.0):
-            raise ValueError(f"FixedStep.advance: frame time must be a finite number >= 0, got {frame_ts!r}")
+            raise ValueError(f"FixedStep.advance: frame time must be a finite number >= 0, "
+                             f"got {frame_ts!r}")
         dropped_before = self.dropped
         if frame_ts > self.max_frame_time:
             self.dropped += frame_ts - self.max_frame_time
@@ -54,11 +56,12 @@ class FixedStep:
             self.dropped += (n - self.max_steps) * self.dt
             n = self.max_steps
         if self.dropped > dropped_before and dropped_before == 0.0:
-            warnings.warn(f"FixedStep: {self.dropped:.3f} s of simulated time dropped (frames longer than "
-                          f"{self.max_frame_time} s or more than {self.max_steps} steps of {self.dt} s); "
-                          "FixedStep.dropped adds it up", stacklevel=2)
+            warnings.warn(f"FixedStep: {self.dropped:.3f} s of simulated time dropped (frames "
+                          f"longer than {self.max_frame_time} s or more than {self.max_steps} "
+                          f"steps of {self.dt} s); FixedStep.dropped adds it up", stacklevel=2)
         self.steps += n
         return n
+    # --8<-- [end:advance]
 
     @property
     def alpha(self) -> float:

@@ -23,8 +23,8 @@ __all__ = ["FixedStepSystem", "GravitySystem"]
 class FixedStepSystem(System):
     """A system that simulates at a fixed ``dt`` and shows the state interpolated to the frame time.
 
-    Its entities have a body component (with ``position``, ``previous``) and a Transform; a subclass says what
-    one step does to a body (:meth:`step`).
+    Its entities have a body component (with ``position``, ``previous``) and a Transform; a
+    subclass says what one step does to a body (:meth:`step`).
     """
 
     def __init__(self, component_types, dt: float) -> None:
@@ -61,7 +61,7 @@ class GravitySystem(FixedStepSystem):
         body.velocity[1] -= body.gravity * dt
         body.position = body.position + body.velocity * dt
         if body.floor is not None and body.position[1] < body.floor:
-            # Reflect the penetration and the velocity; restitution < 1 loses energy at every bounce.
+            # Reflect the penetration and the velocity; restitution < 1 loses energy at each bounce.
             body.position[1] = body.floor + (body.floor - body.position[1]) * body.restitution
             body.velocity[1] = -body.velocity[1] * body.restitution
 # --8<-- [end:gravity]

@@ -68,13 +68,16 @@ def house_camera(aspect: float | None = None) -> tuple[CameraComponent, Transfor
     raise NotImplementedError("exercise: house_camera")
 
 
+# --8<-- [start:rotation]
 class HouseRotationSystem(System):
     """Milestone 5 (uniforms / interactivity): turn the house about its y-axis.
 
     Every frame, for each entity with a HouseRotationComponent and a TransformComponent:
 
-    * if ``self.scene.app`` exists and ``app.input.pressed(rotation.pause_key)``, toggle ``rotation.paused``;
-    * unless paused, advance ``rotation.angle`` by ``rotation.speed * ts`` degrees (keep it in [0, 360));
+    * if ``self.scene.app`` exists and ``app.input.pressed(rotation.pause_key)``, toggle
+      ``rotation.paused``;
+    * unless paused, advance ``rotation.angle`` by ``rotation.speed * ts`` degrees (keep it in
+      [0, 360));
     * set ``transform.quaternion`` to the rotation by ``rotation.angle`` degrees about (0, 1, 0)
       (``gandalf_core.math.quat_from_axis_angle`` takes radians).
     """
@@ -85,3 +88,4 @@ class HouseRotationSystem(System):
     def on_update_entity(self, ts, entity, components) -> None:
         rotation, transform = components
         raise NotImplementedError("exercise: HouseRotationSystem.on_update_entity")
+# --8<-- [end:rotation]

@@ -40,8 +40,10 @@ def add_camera(scene: Scene, eye: tuple[float, float, float], target: tuple[floa
 # --8<-- [start:child]
 def add_child(scene: Scene, name: str, parent: uuid.UUID | None, *components: Component,
               **transform) -> uuid.UUID:
-    """An entity with a name, a Transform (``transform``: its local pose) and a Link to ``parent`` (None: a root)."""
-    return scene.create_entity(InfoComponent(name), TransformComponent(**transform), LinkComponent(parent), *components)
+    """An entity with a name, a Transform (``transform``: its local pose) and a Link to ``parent``
+    (None: a root)."""
+    return scene.create_entity(InfoComponent(name), TransformComponent(**transform),
+                               LinkComponent(parent), *components)
 # --8<-- [end:child]
 
 
@@ -68,15 +70,16 @@ def build_solar_scene() -> Scene:
     sphere = MeshComponent("solar.sphere")
     root = add_child(scene, "solar system", None)
     # Each body spins about its own (local=True) axis: the earth's is tilted by 23°.
-    add_child(scene, "sun", root, sphere, MaterialComponent("solar.sun"), SpinComponent((0, 1, 0), 10.0, local=True),
-              scale=1.2)
+    add_child(scene, "sun", root, sphere, MaterialComponent("solar.sun"),
+              SpinComponent((0, 1, 0), 10.0, local=True), scale=1.2)
     earth_orbit = add_child(scene, "earth orbit", root, SpinComponent((0, 1, 0), 36.0, local=True))
     earth_carrier = add_child(scene, "earth carrier", earth_orbit, translation=(3.4, 0.0, 0.0))
     add_child(
         scene, "earth", earth_carrier, MeshComponent("solar.sphere"), MaterialComponent("solar.earth"),
         SpinComponent((0, 1, 0), 90.0, local=True), rotation=(0.0, 0.0, 23.0), scale=0.45,
     )
-    moon_orbit = add_child(scene, "moon orbit", earth_carrier, SpinComponent((0, 1, 0), 120.0, local=True))
+    moon_orbit = add_child(scene, "moon orbit", earth_carrier,
+                           SpinComponent((0, 1, 0), 120.0, local=True))
     add_child(
         scene, "moon", moon_orbit, MeshComponent("solar.sphere"), MaterialComponent("solar.moon"),
         ReparentOnKeyComponent(root, key="M"), translation=(0.85, 0.0, 0.0), scale=0.14,

@@ -20,6 +20,7 @@ class ReparentSystem(System):
         if app is not None and app.input.pressed(swap.key):
             current = self.scene.parent_of(entity)
             # --8<-- [start:reparent]
-            set_parent_keep_world(self.scene, entity, swap.other_parent)  # local = inverse(parent world) @ world
+            # local = inverse(new parent's world) @ world: the world pose stays
+            set_parent_keep_world(self.scene, entity, swap.other_parent)
             # --8<-- [end:reparent]
             swap.other_parent = current

@@ -20,7 +20,8 @@ TOUR_FRAMES = 90
 
 # --8<-- [start:house]
 def build_house_scene(impl: ModuleType) -> Scene:
-    """The capstone: ``impl`` provides the five milestones (meshes, texture, materials, camera, rotation)."""
+    """The capstone: ``impl`` gives the five milestones (meshes, texture, materials, camera,
+    rotation)."""
     scene = Scene("house")
     walls, roof = impl.house_meshes()
     scene.assets.mesh("house.walls", walls)

@@ -69,27 +69,34 @@ def spring_energy(x: np.ndarray, v: np.ndarray, k: float, m: float, rest: float 
 
 
 
+# --8<-- [start:explicit_euler]
 def explicit_euler_step(x: np.ndarray, v: np.ndarray, accel: Acceleration, dt: float) -> State:
     """Forward Euler: both updates use the old state (``x += v dt``, ``v += a(x, v) dt``)."""
     a = accel(x, v)
     return x + v * dt, v + a * dt
+# --8<-- [end:explicit_euler]
 
 
+# --8<-- [start:implicit_euler]
 def implicit_euler_spring_step(
-    x: np.ndarray, v: np.ndarray, k: float, m: float, c: float, dt: float, rest: float | np.ndarray = 0.0
+    x: np.ndarray, v: np.ndarray, k: float, m: float, c: float, dt: float,
+    rest: float | np.ndarray = 0.0,
 ) -> State:
     """Backward Euler for the linear damped spring, solved exactly.
 
-    The update uses the forces at the END of the step: ``v1 = v0 + dt (-k (x1 - rest) - c v1) / m`` and
-    ``x1 = x0 + dt v1``. Substituting ``x1`` gives one linear equation for ``v1``:
-    ``v1 (1 + dt c / m + dt^2 k / m) = v0 - dt k / m (x0 - rest)``. The divisor is >= 1, so the step never
-    amplifies: the method is stable for every stiffness, mass, damping and time step (it damps too much).
+    The update uses the forces at the END of the step:
+    ``v1 = v0 + dt (-k (x1 - rest) - c v1) / m`` and ``x1 = x0 + dt v1``. Substituting ``x1``
+    gives one linear equation for ``v1``:
+    ``v1 (1 + dt c / m + dt^2 k / m) = v0 - dt k / m (x0 - rest)``.
+    The divisor is >= 1, so the step never amplifies: the method is stable for every stiffness,
+    mass, damping and time step (it damps too much).
     """
     _check_spring(k, m, c)
     if not (math.isfinite(dt) and dt >= 0.0):
         raise ValueError(f"time step dt must be a finite number >= 0, got {dt!r}")
     v_new = (v - dt * (k / m) * (x - rest)) / (1.0 + dt * c / m + dt * dt * k / m)
     return x + dt * v_new, v_new
+# --8<-- [end:implicit_euler]
 
 
 def damped_spring_exact(

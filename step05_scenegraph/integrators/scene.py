@@ -50,13 +50,15 @@ def build_springs_scene() -> Scene:
         material = f"springs.{integrator}"
         assets.material(material, MaterialData("shaded", color=color, name=material))
         scene.create_entity(
-            InfoComponent(f"anchor {integrator}"), TransformComponent((x, 3.6, 0.0), scale=(0.6, 0.1, 0.6)),
+            InfoComponent(f"anchor {integrator}"),
+            TransformComponent((x, 3.6, 0.0), scale=(0.6, 0.1, 0.6)),
             MeshComponent("springs.cube"), MaterialComponent("springs.anchor"),
         )
         scene.create_entity(
             InfoComponent(f"mass {integrator}"), TransformComponent((x, 3.0, 0.0), scale=0.5),
             MeshComponent("springs.cube"), MaterialComponent(material),
-            SpringComponent(rest=(x, 2.0, 0.0), stiffness=40.0, mass=1.0, damping=0.2, integrator=integrator),
+            SpringComponent(rest=(x, 2.0, 0.0), stiffness=40.0, mass=1.0, damping=0.2,
+                            integrator=integrator),
         )
     scene.add_system(SpringSystem())
     # --8<-- [end:springs]

@@ -27,8 +27,9 @@ SCENE_KEYS = {"1": "solar", "2": "gravity", "3": "springs", "4": "house"}
 
 # --8<-- [start:scenes]
 def build_scenes(impl: ModuleType) -> list[Scene]:
-    """All four scenes, each with a system that switches scenes on the keys of :data:`SCENE_KEYS`."""
-    scenes = [build_solar_scene(), build_gravity_scene(), build_springs_scene(), build_house_scene(impl)]
+    """All four scenes, each with a system that switches on the keys of :data:`SCENE_KEYS`."""
+    scenes = [build_solar_scene(), build_gravity_scene(), build_springs_scene(),
+              build_house_scene(impl)]
     for scene in scenes:
         scene.add_system(SceneSwitchSystem(SCENE_KEYS), index=0)
     return scenes
