@@ -20,7 +20,16 @@ from ..components import MaterialComponent, MeshComponent, TransformComponent
 from ..ecs import Component, InfoComponent, LinkComponent, Scene
 from ..math import decompose_trs, invert_affine
 from .commands import Command
-from .entities import EntityRecord, display_name, renamed_copy, restore, snapshot, subtree
+from .entities import (
+    EntityRecord,
+    child_index,
+    display_name,
+    place_child,
+    renamed_copy,
+    restore,
+    snapshot,
+    subtree,
+)
 
 
 def _copy(value: Any) -> Any:
@@ -118,6 +127,9 @@ class EditorActions:
         if old_parent == parent:
             return
         had_link = scene.has_component(entity, LinkComponent)
+        old_index = child_index(scene, entity)
+        # Parenting gives a parent without a Link one: undo takes it away again (when it is left empty).
+        bare_parent = parent if parent is not None and not scene.has_component(parent, LinkComponent) else None
         transform = scene.try_component(entity, TransformComponent)
         old_local = None if transform is None else (transform.translation.copy(), transform.quaternion.copy(),
                                                     transform.scale.copy())
@@ -127,7 +139,7 @@ class EditorActions:
             t, q, s = decompose_trs(local)
             new_local = (t, q, s)
 
-        def apply(target: uuid.UUID | None, trs: Any, link: bool) -> None:
+        def apply(target: uuid.UUID | None, trs: Any, link: bool, index: int = -1) -> None:
             if scene.has_component(entity, LinkComponent):
                 if target is None and not link:
                     scene.remove_component(entity, LinkComponent)
@@ -135,13 +147,18 @@ class EditorActions:
                     scene.set_parent(entity, target)
             else:
                 scene.add_component(entity, LinkComponent(target))
+            place_child(scene, entity, index)
+            if bare_parent is not None and target != bare_parent and bare_parent in scene:
+                link = scene.try_component(bare_parent, LinkComponent)
+                if link is not None and link.parent is None and not link.children:
+                    scene.remove_component(bare_parent, LinkComponent)
             if trs is not None:
                 comp = scene.get_component(entity, TransformComponent)
                 comp.translation, comp.quaternion, comp.scale = trs
 
         self.commands.push(Command(
             f"reparent {display_name(scene, entity)}",
-            lambda: apply(parent, new_local, True), lambda: apply(old_parent, old_local, had_link)))
+            lambda: apply(parent, new_local, True), lambda: apply(old_parent, old_local, had_link, old_index)))
 
     # --- components -------------------------------------------------------------------------------------
     def add_component(self, entity: uuid.UUID, component: Component) -> Component:

@@ -42,6 +42,26 @@ class EntityRecord:
     parent: uuid.UUID | None
     has_link: bool
     components: list[Component]
+    index: int = -1  # its place among the parent's children (-1: last)
+
+
+def place_child(scene: Scene, entity: uuid.UUID, index: int) -> None:
+    """Move ``entity`` to position ``index`` among its parent's children (the hierarchy panel's order)."""
+    parent = scene.parent_of(entity)
+    if parent is None or index < 0:
+        return
+    children = scene.get_component(parent, LinkComponent).children
+    if entity in children:
+        children.remove(entity)
+        children.insert(min(index, len(children)), entity)
+
+
+def child_index(scene: Scene, entity: uuid.UUID) -> int:
+    parent = scene.parent_of(entity)
+    if parent is None:
+        return -1
+    children = scene.get_component(parent, LinkComponent).children
+    return children.index(entity) if entity in children else -1
 
 
 def subtree(scene: Scene, entity: uuid.UUID) -> list[uuid.UUID]:
@@ -60,7 +80,8 @@ def snapshot(scene: Scene, entity: uuid.UUID) -> list[EntityRecord]:
     for node in subtree(scene, entity):
         link = scene.try_component(node, LinkComponent)
         comps = [clone_component(c) for c in scene.components_of(node) if not isinstance(c, LinkComponent)]
-        records.append(EntityRecord(node, link.parent if link is not None else None, link is not None, comps))
+        records.append(EntityRecord(node, link.parent if link is not None else None, link is not None, comps,
+                                    child_index(scene, node)))
     return records
 
 
@@ -79,6 +100,7 @@ def restore(scene: Scene, records: list[EntityRecord]) -> None:
         parent = record.parent if record.parent in scene else None
         if record.has_link or parent is not None:
             scene.add_component(record.entity, LinkComponent(parent))
+            place_child(scene, record.entity, record.index)
 
 
 def renamed_copy(records: list[EntityRecord]) -> list[EntityRecord]:
@@ -91,7 +113,8 @@ def renamed_copy(records: list[EntityRecord]) -> list[EntityRecord]:
             for c in comps:
                 if isinstance(c, InfoComponent):
                     c.name = f"{c.name} copy"
-        out.append(EntityRecord(ids[r.entity], ids.get(r.parent, r.parent), r.has_link, comps))
+        index = -1 if i == 0 else r.index
+        out.append(EntityRecord(ids[r.entity], ids.get(r.parent, r.parent), r.has_link, comps, index))
     return out
 
 

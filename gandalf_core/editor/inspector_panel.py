@@ -59,6 +59,7 @@ class InspectorPanelSystem(PanelSystem):
             for name, make in addable_components(scene, entity):
                 if imgui.menu_item_simple(name):
                     self.act(lambda m=make: editor.add_component(entity, m()))
+                self.remember(f"inspector/add/{name}")
             imgui.end_popup()
 
     def _component(self, entity: uuid.UUID, component: Component) -> None:

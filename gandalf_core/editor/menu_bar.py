@@ -42,16 +42,21 @@ class MenuBarSystem(PanelSystem):
         if imgui.begin_menu("File"):
             if imgui.menu_item_simple("New", "Ctrl+N"):
                 self.act(editor.new_scene)
+            self.remember("menu/file/new")
             if imgui.menu_item_simple("Open...", "Ctrl+O"):
                 self._open_dialog("Open")
+            self.remember("menu/file/open")
             if imgui.menu_item_simple("Save", "Ctrl+S"):
                 self.act(editor.save, editor.path)
+            self.remember("menu/file/save")
             if imgui.menu_item_simple("Save As..."):
                 self._open_dialog("Save As")
+            self.remember("menu/file/save_as")
             if imgui.begin_menu("Open Recent", bool(editor.recent)):
-                for path in list(editor.recent):
+                for i, path in enumerate(list(editor.recent)):
                     if imgui.menu_item_simple(path):
                         self.act(editor.load, path)
+                    self.remember(f"menu/file/recent/{i}")
                 imgui.end_menu()
             imgui.end_menu()
         self.remember("menu/file")
@@ -61,8 +66,10 @@ class MenuBarSystem(PanelSystem):
             redo = f"Redo {commands.undone[-1].label}" if commands.can_redo else "Redo"
             if imgui.menu_item_simple(undo, "Ctrl+Z", False, commands.can_undo):
                 editor.undo()
+            self.remember("menu/edit/undo")
             if imgui.menu_item_simple(redo, "Ctrl+Y", False, commands.can_redo):
                 editor.redo()
+            self.remember("menu/edit/redo")
             imgui.end_menu()
         self.remember("menu/edit")
         if imgui.begin_menu("View"):
@@ -72,6 +79,7 @@ class MenuBarSystem(PanelSystem):
                 shown = editor.panel_visible(kind)
                 if imgui.menu_item_simple(kind.capitalize(), "", shown):
                     editor.show_panel(kind, not shown)
+                self.remember(f"menu/view/{kind}")
             imgui.end_menu()
         self.remember("menu/view")
         if editor.status:
@@ -107,7 +115,10 @@ class MenuBarSystem(PanelSystem):
         imgui.set_next_window_size(imgui.ImVec2(420, 0))
         if imgui.begin_popup_modal(f"{which}##dialog", None, imgui.WindowFlags_.always_auto_resize)[0]:
             entered, self._path = imgui.input_text("path", self._path, imgui.InputTextFlags_.enter_returns_true)
-            if imgui.button("OK") or entered:
+            self.remember("menu/dialog/path")
+            ok_clicked = imgui.button("OK")
+            self.remember("menu/dialog/ok")
+            if ok_clicked or entered:
                 ok = self.editor.load(self._path) if which == "Open" else self.editor.save(self._path)
                 if ok:
                     imgui.close_current_popup()
