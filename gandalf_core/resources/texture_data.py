@@ -210,7 +210,8 @@ def _decode_image_rgba8(path: str | Path, label: str) -> np.ndarray:
 
     p = Path(path)
     if not p.is_file():
-        raise ResourceError(label, "path", f"file not found: {str(p)!r}")
+        raise ResourceError(label, "path", f"{'is a folder, not an image file' if p.is_dir() else 'file not found'}: "
+                            f"{str(p)!r}")
     try:
         with Image.open(p) as img:
             img.load()

@@ -21,6 +21,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import Any
 
+import numpy as np
 import pytest
 
 
@@ -120,5 +121,6 @@ def run(case: Case, *args: Any) -> Any:
     value = case.action(*args)
     assert case.check is not None, f"[{case.id}] a result case needs a check"
     verdict = case.check(value)
-    assert verdict is None or verdict is True, f"[{case.id}] expected {expected}, got {value!r:.300}"
+    ok = verdict is None or (isinstance(verdict, (bool, np.bool_)) and bool(verdict))
+    assert ok, f"[{case.id}] expected {expected}, got {value!r:.300}"
     return value
