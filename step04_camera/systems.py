@@ -53,6 +53,9 @@ class CameraSwitchSystem(System):
             camera.primary = i == (current + 1) % len(cameras)
 
 
-# Allowed in saved scenes; LookAtSystem keeps its look_at function (one registered with register_function).
+# --8<-- [start:usd]
+# Allowed in saved scenes (gandalf_core.usd); a LookAtSystem keeps its look_at function, one that
+# step 04's solutions and exercises register with register_function.
 register_system(LookAtSystem, settings=["look_at"])
 register_system(CameraSwitchSystem)
+# --8<-- [end:usd]
