@@ -6,6 +6,7 @@ import math
 
 from gandalf_core import System, TransformComponent
 from gandalf_core.math import quat_from_axis_angle, quat_mul, quat_normalize
+from gandalf_core.usd import register_system
 
 from .components import SpinComponent
 
@@ -25,3 +26,6 @@ class SpinSystem(System):
             transform.quaternion = quat_normalize(quat_mul(transform.quaternion, step))
         else:
             transform.quaternion = quat_normalize(quat_mul(step, transform.quaternion))
+
+
+register_system(SpinSystem)  # allowed in saved scenes (gandalf_core.usd)
