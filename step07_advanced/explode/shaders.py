@@ -10,7 +10,7 @@ SHADER_DIR = Path(__file__).resolve().parent / "shaders"
 #: OpenGL: the exploding program (vertex → geometry → fragment) and the unexploded reference.
 GL_EXPLODE = {"vert": SHADER_DIR / "explode.vert", "geom": SHADER_DIR / "explode.geom",
               "frag": SHADER_DIR / "explode.frag"}
-GL_LIT = {"vert": SHADER_DIR / "lit.vert", "frag": SHADER_DIR / "explode.frag"}
+GL_LIT = {"vert": SHADER_DIR / "lit.vert", "frag": SHADER_DIR / "explode_lit.frag"}
 #: OpenGL vertex pulling (the study's third route): the WebGPU way in GLSL 4.30.
 GL_PULLED = {"vert": SHADER_DIR / "explode_pulled.vert", "frag": SHADER_DIR / "explode.frag"}
 #: WebGPU: the vertex-pulling module and the unexploded reference.

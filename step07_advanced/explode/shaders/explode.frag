@@ -1,12 +1,11 @@
 #version 330 core
-// Stage 3 of 3 (and the fragment stage of the unexploded reference): two-sided Blinn-Phong.
+// Stage 3 of 3: two-sided Blinn-Phong (explode_lit.frag is the unexploded reference's).
 #include "explode_shading.glsl"
 in vec3 v_world;
 in vec3 v_normal;
-uniform vec4 u_color;
-uniform float u_specular;
-uniform float u_shininess;
+#include "explode_material.glsl"
 out vec4 f_color;
 void main() {
-    f_color = vec4(shade(v_world, v_normal, u_color.rgb, u_specular, u_shininess), 1.0);
+    vec3 lit = shade(v_world, v_normal, material.color.rgb, material.specular, material.shininess);
+    f_color = vec4(lit, 1.0);
 }

@@ -9,12 +9,11 @@ in vec3 g_world[];
 in vec3 g_normal[];
 out vec3 v_world;
 out vec3 v_normal;
-uniform float u_explode_time;
-uniform float u_amount;
-uniform float u_period;
+#include "explode_material.glsl"
 void main() {
     // The student's function (exercises/ or solutions/explode.glsl): the same offset for all three corners.
-    vec3 offset = explode_offset(g_world[0], g_world[1], g_world[2], u_explode_time, u_amount, u_period);
+    vec3 offset = explode_offset(g_world[0], g_world[1], g_world[2], material.explode_time, material.amount,
+                                 material.period);
     for (int i = 0; i < 3; ++i) {
         v_world = g_world[i] + offset;
         v_normal = g_normal[i];

@@ -7,9 +7,7 @@
 layout(std430, binding = 0) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = 1) readonly buffer Normals { vec4 normals[]; };
 layout(std430, binding = 2) readonly buffer Indices { uint indices[]; };
-uniform float u_explode_time;
-uniform float u_amount;
-uniform float u_period;
+#include "explode_material.glsl"
 out vec3 v_world;
 out vec3 v_normal;
 void main() {
@@ -22,7 +20,7 @@ void main() {
     vec3 w0 = (model * vec4(positions[i0].xyz, 1.0)).xyz;
     vec3 w1 = (model * vec4(positions[i1].xyz, 1.0)).xyz;
     vec3 w2 = (model * vec4(positions[i2].xyz, 1.0)).xyz;
-    vec3 offset = explode_offset(w0, w1, w2, u_explode_time, u_amount, u_period);
+    vec3 offset = explode_offset(w0, w1, w2, material.explode_time, material.amount, material.period);
     uint index = corner == 0u ? i0 : (corner == 1u ? i1 : i2);
     v_world = (corner == 0u ? w0 : (corner == 1u ? w1 : w2)) + offset;
     v_normal = instance_normal(normals[index].xyz);

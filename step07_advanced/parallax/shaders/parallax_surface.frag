@@ -6,13 +6,15 @@ in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_tangent;
-uniform vec4 u_color;
-uniform float u_method;        // 0 normal mapping, 1 parallax offset, 2 steep, 3 occlusion
-uniform float u_height_scale;  // the depth of height 0 in (repeated) uv units
-uniform float u_layers;        // layers of the steep / occlusion march
-uniform vec2 u_uv_scale;       // texture repeats across the surface (u, v)
-uniform float u_specular;
-uniform float u_shininess;
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;
+    vec2 uv_scale;       // texture repeats across the surface (u, v)
+    float method;        // 0 normal mapping, 1 parallax offset, 2 steep, 3 occlusion
+    float height_scale;  // the depth of height 0 in (repeated) uv units
+    float layers;        // layers of the steep / occlusion march
+    float specular;
+    float shininess;
+} material;
 uniform sampler2D u_albedo;
 uniform sampler2D u_normal_map;
 uniform sampler2D u_height_map;
@@ -38,24 +40,24 @@ void main() {
     vec3 axis = abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 0.0, 1.0);
     t = length(t) > 1e-6 ? normalize(t) : normalize(cross(axis, n));
     vec3 b = cross(n, t) * (v_tangent.w < 0.0 ? -1.0 : 1.0);
-    vec2 uv = v_uv * u_uv_scale;
+    vec2 uv = v_uv * material.uv_scale;
     g_uv_dx = dFdx(uv);
     g_uv_dy = dFdy(uv);
     // --8<-- [start:methods]
     // The view direction in texture space: x along +u, y along +v (against B), z out of the surface.
     vec3 view_ts = vec3(dot(v, t), -dot(v, b), dot(v, n));
-    int method = int(u_method + 0.5);
-    int layers = int(u_layers + 0.5);
+    int method = int(material.method + 0.5);
+    int layers = int(material.layers + 0.5);
     if (method == 1) {
-        uv = parallax_offset(uv, view_ts, u_height_scale);
+        uv = parallax_offset(uv, view_ts, material.height_scale);
     } else if (method == 2) {
-        uv = parallax_steep(uv, view_ts, u_height_scale, layers);
+        uv = parallax_steep(uv, view_ts, material.height_scale, layers);
     } else if (method == 3) {
-        uv = parallax_occlusion(uv, view_ts, u_height_scale, layers);
+        uv = parallax_occlusion(uv, view_ts, material.height_scale, layers);
     }
-    vec3 albedo = u_color.rgb * textureGrad(u_albedo, uv, g_uv_dx, g_uv_dy).rgb;
+    vec3 albedo = material.color.rgb * textureGrad(u_albedo, uv, g_uv_dx, g_uv_dy).rgb;
     vec3 m = textureGrad(u_normal_map, uv, g_uv_dx, g_uv_dy).rgb * 2.0 - 1.0;
     vec3 shading = normalize(t * m.x + b * m.y + n * m.z);
     // --8<-- [end:methods]
-    f_color = vec4(shade(v_world, shading, v, albedo, u_specular, u_shininess), 1.0);
+    f_color = vec4(shade(v_world, shading, v, albedo, material.specular, material.shininess), 1.0);
 }

@@ -9,14 +9,16 @@ in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_tangent;
-uniform vec4 u_color;             // glTF baseColorFactor
-uniform float u_metallic;         // metallicFactor
-uniform float u_roughness;        // roughnessFactor
-uniform float u_normal_scale;
-uniform float u_occlusion_strength;
-uniform vec4 u_emissive;          // emissiveFactor
-uniform float u_env_strength;
-uniform float u_prefiltered_levels;
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;                // glTF baseColorFactor
+    vec4 emissive;             // emissiveFactor
+    float metallic;            // metallicFactor
+    float roughness;           // roughnessFactor
+    float normal_scale;
+    float occlusion_strength;
+    float env_strength;
+    float prefiltered_levels;
+} material;
 uniform sampler2D u_base_color_map;
 uniform sampler2D u_metallic_roughness_map;
 uniform sampler2D u_normal_map;
@@ -30,18 +32,18 @@ void main() {
     vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
     vec3 v = safe_normalize(u_camera_position.xyz - v_world, n);
     // --8<-- [start:maps]
-    vec3 base = u_color.rgb * texture(u_base_color_map, v_uv).rgb;     // sRGB texture: decoded to linear
+    vec3 base = material.color.rgb * texture(u_base_color_map, v_uv).rgb;     // sRGB texture: decoded to linear
     vec4 mr = texture(u_metallic_roughness_map, v_uv);                 // linear: G = roughness, B = metallic
-    float metallic = clamp(u_metallic * mr.b, 0.0, 1.0);
-    float roughness = clamp(u_roughness * mr.g, 0.0, 1.0);
+    float metallic = clamp(material.metallic * mr.b, 0.0, 1.0);
+    float roughness = clamp(material.roughness * mr.g, 0.0, 1.0);
     vec3 m = texture(u_normal_map, v_uv).rgb * 2.0 - 1.0;
-    m.xy *= u_normal_scale;
+    m.xy *= material.normal_scale;
     vec3 shading = perturb_normal(n, v_tangent, m * 0.5 + 0.5);
-    float ao = 1.0 + u_occlusion_strength * (texture(u_occlusion_map, v_uv).r - 1.0);
-    vec3 emitted = u_emissive.rgb * texture(u_emissive_map, v_uv).rgb;
+    float ao = 1.0 + material.occlusion_strength * (texture(u_occlusion_map, v_uv).r - 1.0);
+    vec3 emitted = material.emissive.rgb * texture(u_emissive_map, v_uv).rgb;
     // --8<-- [end:maps]
     vec3 color = pbr_direct(v_world, shading, v, base, metallic, roughness, shadow_factor(v_world, n));
-    color += u_env_strength * ao * ibl_light(u_irradiance, u_prefiltered, u_brdf_lut, u_prefiltered_levels,
+    color += material.env_strength * ao * ibl_light(u_irradiance, u_prefiltered, u_brdf_lut, material.prefiltered_levels,
                                              shading, v, base, metallic, roughness);
     f_color = vec4(color + emitted, 1.0);
 }

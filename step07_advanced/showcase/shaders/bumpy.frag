@@ -7,12 +7,14 @@ in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_tangent;
-uniform vec4 u_color;
-uniform float u_metallic;
-uniform float u_roughness;
-uniform float u_env_strength;
-uniform float u_height_scale;  // parallax depth in UV units (0: normal mapping only)
-uniform float u_uv_scale;      // texture repeats across the surface
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;
+    float metallic;
+    float roughness;
+    float env_strength;
+    float height_scale;  // parallax depth in UV units (0: normal mapping only)
+    float uv_scale;      // texture repeats across the surface
+} material;
 uniform sampler2D u_albedo;
 uniform sampler2D u_normal_map;
 uniform sampler2D u_height_map;
@@ -21,17 +23,19 @@ out vec4 f_color;
 void main() {
     vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
     vec3 v = safe_normalize(u_camera_position.xyz - v_world, n);
-    vec2 uv = v_uv * u_uv_scale;
+    vec2 uv = v_uv * material.uv_scale;
     vec2 dx = dFdx(uv);
     vec2 dy = dFdy(uv);
     vec3 t, b;
     tangent_basis(n, v_tangent, t, b);
-    uv = parallax_uv(u_height_map, uv, vec3(dot(v, t), dot(v, b), dot(v, n)), u_height_scale, dx, dy);
-    vec3 base = u_color.rgb * textureGrad(u_albedo, uv, dx, dy).rgb;
+    vec3 view_tangent = vec3(dot(v, t), dot(v, b), dot(v, n));
+    uv = parallax_uv(u_height_map, uv, view_tangent, material.height_scale, dx, dy);
+    vec3 base = material.color.rgb * textureGrad(u_albedo, uv, dx, dy).rgb;
     vec3 shading = perturb_normal(n, v_tangent, textureGrad(u_normal_map, uv, dx, dy).rgb);
     // The shadow map's bias follows the surface's own slope, not the bumps the normal map adds.
     float shadow = shadow_factor(v_world, n);
-    vec3 color = pbr_direct(v_world, shading, v, base, u_metallic, u_roughness, shadow);
-    color += u_env_strength * pbr_environment(u_env, shading, v, base, u_metallic, u_roughness);
+    vec3 color = pbr_direct(v_world, shading, v, base, material.metallic, material.roughness, shadow);
+    color += material.env_strength
+             * pbr_environment(u_env, shading, v, base, material.metallic, material.roughness);
     f_color = vec4(color, 1.0);
 }

@@ -5,16 +5,20 @@ in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_tangent;
-uniform vec4 u_color;
-uniform float u_metallic;
-uniform float u_roughness;
-uniform float u_env_strength;
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;
+    float metallic;
+    float roughness;
+    float env_strength;
+} material;
 uniform samplerCube u_env;
 out vec4 f_color;
 void main() {
     vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
     vec3 v = safe_normalize(u_camera_position.xyz - v_world, n);
-    vec3 color = pbr_direct(v_world, n, v, u_color.rgb, u_metallic, u_roughness, shadow_factor(v_world, n));
-    color += u_env_strength * pbr_environment(u_env, n, v, u_color.rgb, u_metallic, u_roughness);
+    vec3 color = pbr_direct(v_world, n, v, material.color.rgb, material.metallic, material.roughness,
+                            shadow_factor(v_world, n));
+    color += material.env_strength
+             * pbr_environment(u_env, n, v, material.color.rgb, material.metallic, material.roughness);
     f_color = vec4(color, 1.0);
 }

@@ -1,11 +1,13 @@
 #version 330 core
 // The shadow study: the engine's shadow lookup (shadow.glsl) with the percentage-closer filter's radius as a
-// material parameter (u_pcf = r: (2r + 1)^2 taps). The output is the lit fraction itself (white = lit).
+// material parameter (material.pcf = r: (2r + 1)^2 taps). The output is the lit fraction itself (white = lit).
 #include "shadow.glsl"
 in vec3 v_world;
 in vec3 v_normal;
-uniform vec4 u_color;
-uniform float u_pcf;
+layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+    vec4 color;
+    float pcf;
+} material;
 out vec4 f_color;
 
 float study_shadow(vec3 world_position, vec3 normal, int r) {
@@ -29,6 +31,6 @@ float study_shadow(vec3 world_position, vec3 normal, int r) {
 }
 
 void main() {
-    float lit = u_shadow.x < 0.5 ? 1.0 : study_shadow(v_world, v_normal, int(u_pcf + 0.5));
-    f_color = vec4(u_color.rgb * lit, 1.0);
+    float lit = u_shadow.x < 0.5 ? 1.0 : study_shadow(v_world, v_normal, int(material.pcf + 0.5));
+    f_color = vec4(material.color.rgb * lit, 1.0);
 }

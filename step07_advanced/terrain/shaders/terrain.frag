@@ -5,13 +5,12 @@
 #include "terrain.glsl"
 #include "terrain_shading.glsl"
 in vec2 v_uv;
-uniform vec4 u_color;  // the haze (the sky's colour), linear
-uniform float u_size;
-uniform float u_height_scale;
+#include "terrain_material.glsl"
 out vec4 f_color;
 void main() {
-    vec3 n = terrain_normal(v_uv, vec2(u_size, u_height_scale));
+    vec3 n = terrain_normal(v_uv, vec2(material.size, material.height_scale));
     float h = terrain_height(v_uv);
-    vec3 world = vec3((v_uv.x - 0.5) * u_size, u_height_scale * h, (v_uv.y - 0.5) * u_size);
-    f_color = vec4(shade_terrain(h, n, world_to_relative(world), u_color.rgb), 1.0);
+    vec3 world = vec3((v_uv.x - 0.5) * material.size, material.height_scale * h,
+                      (v_uv.y - 0.5) * material.size);
+    f_color = vec4(shade_terrain(h, n, world_to_relative(world), material.color.rgb), 1.0);
 }

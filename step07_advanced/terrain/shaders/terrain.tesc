@@ -9,13 +9,12 @@
 layout(vertices = 4) out;
 in vec2 vc_uv[];
 out vec2 tc_uv[];
-uniform float u_size;
-uniform float u_height_scale;
-uniform vec4 u_lod;  // scale, min level, max level
+#include "terrain_material.glsl"
 
 vec3 corner(int i) {
     vec2 uv = vc_uv[i];
-    return vec3((uv.x - 0.5) * u_size, u_height_scale * terrain_height(uv), (uv.y - 0.5) * u_size);
+    return vec3((uv.x - 0.5) * material.size, material.height_scale * terrain_height(uv),
+                (uv.y - 0.5) * material.size);
 }
 
 void main() {
@@ -25,10 +24,10 @@ void main() {
         // The terrain is built at the world's origin; the frame's positions are camera-relative.
         vec3 eye = u_camera_position.xyz + u_origin_high.xyz + u_origin_low.xyz;
         // OpenGL's quad edges: 0 is u = u0, 1 is v = v0, 2 is u = u1, 3 is v = v1.
-        float o0 = tess_level(c0, c3, eye, u_lod.xyz);
-        float o1 = tess_level(c0, c1, eye, u_lod.xyz);
-        float o2 = tess_level(c1, c2, eye, u_lod.xyz);
-        float o3 = tess_level(c3, c2, eye, u_lod.xyz);
+        float o0 = tess_level(c0, c3, eye, material.lod.xyz);
+        float o1 = tess_level(c0, c1, eye, material.lod.xyz);
+        float o2 = tess_level(c1, c2, eye, material.lod.xyz);
+        float o3 = tess_level(c3, c2, eye, material.lod.xyz);
         gl_TessLevelOuter[0] = o0;
         gl_TessLevelOuter[1] = o1;
         gl_TessLevelOuter[2] = o2;
