@@ -543,7 +543,7 @@ class _Reader:
         return out
 
     def component(self, prim: Usd.Prim, reg: Registration) -> Component:
-        """A registered component: ``cls()`` with each saved field assigned, or ``cls(**fields)``."""
+        """A registered component: ``cls()`` (else ``cls(**constructor fields)``) with each saved field assigned."""
         name = reg.cls.__name__
         component = reg.cls() if reg.default_constructible else None
         values = {}
@@ -551,8 +551,8 @@ class _Reader:
             attr = f"gandalf:{name}:{field}"
             values[field] = self.field_value(prim, attr, getattr(component, field, None))
         if component is None:
-            return reg.cls(**values)
-        for field, value in values.items():
+            component = reg.cls(**{f: values[f] for f in reg.constructor_fields})
+        for field, value in values.items():  # exactly as saved (a constructor may normalise or derive)
             self.guard(prim, f"gandalf:{name}:{field}", lambda: setattr(component, field, value))  # noqa: B023
         return component
 

@@ -14,7 +14,8 @@ in an allowed package (gandalf_core, the course's ``stepNN_*`` folders, or one a
 Field and setting values must be simple: bool, int, float, str, or a fixed-length sequence of floats (tuple,
 list or 1-D numpy array). A component is rebuilt as ``cls()`` with each saved field assigned (the default
 value's type, and sequence length, is the field's schema); a component class whose constructor needs arguments
-is rebuilt as ``cls(**fields)`` when its fields are its constructor's parameters. Nothing here imports USD.
+is built as ``cls(**{the saved fields that are its parameters})`` (they must cover every required one), and
+then every saved field is assigned. Nothing here imports USD.
 """
 
 from __future__ import annotations
@@ -36,8 +37,9 @@ class Registration:
 
     cls: type[Component]
     fields: tuple[str, ...]
-    #: ``cls()`` works; else the loader calls ``cls(**fields)``.
+    #: ``cls()`` works; else the loader calls ``cls(**{the fields that are constructor parameters})``.
     default_constructible: bool = True
+    constructor_fields: tuple[str, ...] = ()
 
     @property
     def key(self) -> str:
@@ -118,18 +120,22 @@ def register_component(cls: type[Component], fields: Sequence[str] = ()) -> type
         raise ValueError(f"register_component: {name} is a built-in component and is saved already")
     fields = _names(f"register_component({name})", "fields", fields)
     signature = inspect.signature(cls)
+    params = signature.parameters
+    constructor_fields = tuple(f for f in fields if f in params and params[f].kind in (
+        inspect.Parameter.POSITIONAL_OR_KEYWORD, inspect.Parameter.KEYWORD_ONLY))
     try:
         signature.bind()
         default_constructible = True
     except TypeError:
         try:
-            signature.bind(**{f: None for f in fields})
+            signature.bind(**{f: None for f in constructor_fields})
         except TypeError:
             raise TypeError(f"register_component({name}): the loader needs {name}() to work without arguments, "
-                            f"or {name}(**fields) with the saved fields {list(fields)}") from None
+                            f"or {name}(**fields) with the saved fields that are its parameters "
+                            f"{list(constructor_fields)}") from None
         default_constructible = False
     _check_same_class(_COMPONENTS, class_key(cls), cls, "register_component")
-    _COMPONENTS[class_key(cls)] = Registration(cls, fields, default_constructible)
+    _COMPONENTS[class_key(cls)] = Registration(cls, fields, default_constructible, constructor_fields)
     return cls
 
 
