@@ -220,8 +220,10 @@ def function_key(fn: Any) -> str | None:
 
 
 def _allowed_module(module: str) -> bool:
-    top = module.split(".", 1)[0]
-    return top in _PACKAGES or bool(_STEP_PACKAGE.fullmatch(top))
+    parts = module.split(".")
+    if any(p.startswith("_") for p in parts):  # no __main__ (it would run a program), no private modules
+        return False
+    return parts[0] in _PACKAGES or bool(_STEP_PACKAGE.fullmatch(parts[0]))
 
 
 def _lookup(table: dict[str, Any], key: str, kind: str) -> tuple[Any, str]:
@@ -239,6 +241,8 @@ def _lookup(table: dict[str, Any], key: str, kind: str) -> tuple[Any, str]:
         return None, "it is not an import path (module.Name)"
     module = key.rsplit(".", 1)[0]
     if not _allowed_module(module):
+        if _allowed_module(module.split(".")[0]):
+            return None, f"the module {module} is private or a program (__main__): it is never imported"
         return None, (f"its package '{module.split('.')[0]}' is not on the allow-list (gandalf_core, the course's "
                       f"stepNN_* folders, and packages added with gandalf_core.usd.allow_package)")
     try:
