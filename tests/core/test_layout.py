@@ -91,3 +91,19 @@ def test_every_module_has_a_docstring():
             if path.stat().st_size and ast.get_docstring(tree) is None:
                 missing.append(str(path.relative_to(REPO_ROOT)))
     assert not missing, missing
+
+
+def test_one_class_per_component_or_system_name():
+    """One name per meaning: a component or system class is defined once in the course (a later step imports the
+    earlier step's, as step 05 and step 07 import step 03's SpinComponent). Exercises and solutions are parallel
+    implementations of the same names by design, so they are left out."""
+    defined: dict[str, list[str]] = {}
+    for root in ["gandalf_core", *STEPS]:
+        for path in sorted(Path(REPO_ROOT / root).rglob("*.py")):
+            if {"exercises", "solutions"} & set(path.relative_to(REPO_ROOT).parts):
+                continue
+            for node in ast.walk(ast.parse(path.read_text())):
+                if isinstance(node, ast.ClassDef) and node.name.endswith(("Component", "System")):
+                    defined.setdefault(node.name, []).append(str(path.relative_to(REPO_ROOT)))
+    twice = {name: paths for name, paths in defined.items() if len(paths) > 1}
+    assert not twice, f"defined more than once (keep one, import it elsewhere): {twice}"
