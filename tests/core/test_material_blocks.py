@@ -276,3 +276,28 @@ def test_changing_values_rewrites_the_block_without_a_new_buffer(backend):
         material.set_values({"color": (1, 1, 1, 1), **PARAMS, "gain": 3.0})
         assert np.frombuffer(material.block_bytes, np.float32)[7] == 3.0
         assert (material.block_buffer if backend == "opengl" else material.uniform_buffer) is buffer
+
+
+def test_the_builtin_materials_are_the_same_bytes_in_both_apis_and_match_the_driver():
+    from gandalf_core.render.opengl.libs import make_current
+    from gandalf_core.render.opengl.raw_gl import block_members
+    from gandalf_core.resources import checkerboard
+
+    materials = {"plain": MaterialData("gandalf.blinn_phong", color=(0.2, 0.4, 0.6), params={"shininess": 8}),
+                 "textured": MaterialData("gandalf.blinn_phong", ["t"], params={"specular": 0.5}),
+                 "unlit": MaterialData("gandalf.unlit", color=(1, 0, 0, 0.5)),
+                 "unlit_textured": MaterialData("gandalf.unlit", ["t"])}
+    got: dict[str, dict[str, bytes]] = {}
+    for backend in ("opengl", "webgpu"):
+        with Application(backend, 16, 12, headless=True) as app:
+            app.renderer.textures.build("t", checkerboard(8, 2))
+            for name, data in materials.items():
+                material = app.renderer.materials.build(name, data)
+                got.setdefault(name, {})[backend] = material.block_bytes
+                if backend == "opengl":
+                    make_current(app.renderer.ctx)
+                    driver = block_members(material.shader.program.glo)["Material"]
+                    declared = {p: o for p, o, _t in material.shader.material_block.leaves()}
+                    assert {k.split(".", 1)[1]: o for k, (o, _s) in driver.items()} == declared, name
+    for name, pair in got.items():
+        assert pair["opengl"] == pair["webgpu"], f"{name}: the Material bytes differ between the APIs"

@@ -250,6 +250,8 @@ class ShaderLib(ResourceLib[GLShader]):
         kinds = dict(kind for src in stages.values() for kind in _declared_sampler_kinds(src.text))
         values = {k: v for src in stages.values() for k, v in _declared_material_uniforms(src.text).items()}
         files = ", ".join(src.filename for src in stages.values())
+        if material_block is not None:
+            _check_block_against_driver(name, files, program, material_block)
         if material_block is not None and values:
             raise ShaderCompileError(f"shader '{name}' ({files}): declares both a Material block and loose material "
                                      f"uniforms ({', '.join('u_' + v for v in values)}); move them into the block")
@@ -261,6 +263,26 @@ class ShaderLib(ResourceLib[GLShader]):
 
     def _release(self, item: GLShader) -> None:
         item.program.release()
+
+
+def _check_block_against_driver(name: str, files: str, program: moderngl.Program, block: BlockLayout) -> None:
+    """The driver's offsets of the Material block's members must be the ones the engine packs (a member the
+    engine's reading of the GLSL got wrong would otherwise read the wrong bytes silently)."""
+    from .raw_gl import block_members
+
+    try:
+        driver = block_members(program.glo).get(MATERIAL_BLOCK)
+    except (RuntimeError, OSError):  # no GL library to ask: the std140 rule stands on its own
+        return
+    if not driver:
+        return  # the block is never read: nothing to compare
+    declared = {path: offset for path, offset, _type in block.leaves()}
+    for member, (offset, _stride) in driver.items():
+        field = member.split(".", 1)[1] if member.startswith(MATERIAL_BLOCK + ".") else member
+        if declared.get(field, offset) != offset:
+            raise ShaderCompileError(f"shader '{name}' ({files}): the driver puts Material field '{field}' at offset "
+                                     f"{offset}, the engine's std140 layout at {declared[field]}: declare the block "
+                                     "with layout(std140) and plain members")
 
 
 def _declared_samplers(glsl: str) -> list[str]:

@@ -22,6 +22,7 @@ import numpy as np
 import wgpu
 
 from ...resources import CubeTextureData, MaterialData, MeshData, ResourceError, ShaderSource, TextureData
+from ...resources.blocks import WGSL_BINDINGS
 from ...resources.layout import BlockLayout, LayoutError
 from ..builtin_materials import prepare as prepare_builtin
 from ..errors import ShaderCompileError
@@ -36,7 +37,7 @@ from ..wgsl_reflect import Binding, ShaderReflection, WGSLReflectError, reflect
 
 _ADDRESS = {"repeat": "repeat", "clamp": "clamp-to-edge"}
 _NAGA_LINE = re.compile(r"(?:wgsl|<[^>]*>|\S+\.wgsl):(\d+):(\d+)")
-MATERIAL_GROUP = 1
+MATERIAL_GROUP = WGSL_BINDINGS["Material"][0]  # the one convention: resources/blocks.py
 
 
 # --- textures -------------------------------------------------------------------------------------
