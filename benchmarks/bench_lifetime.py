@@ -8,7 +8,8 @@ frame (which must release them). Printed at cycles 0, 250, 500, 750 and 1000, pe
   arrays / pipelines);
 * ``api_objects``: the API's own objects alive in Python (WebGPU: ``wgpu.diagnostics.object_counts``' total;
   OpenGL: moderngl objects found by the garbage collector), and WebGPU's ``resource_mem`` in bytes;
-* ``rss_mib``: the process's resident memory (``VmRSS``), after a full garbage collection.
+* ``rss_mib``: the process's resident memory (``VmRSS``), after a full garbage collection, and
+  ``rss_trimmed_mib`` the same after ``malloc_trim(0)`` (what the C allocator keeps free but mapped drops out).
 
 Flat means: the same counts at 250, 500, 750 and 1000 (cycle 0 is before the first cycle built the pipeline a
 mesh needs), and RSS growing by no more than allocator noise.
@@ -48,6 +49,18 @@ def rss_mib() -> float:
     except OSError:
         pass
     return 0.0
+
+
+def rss_after_trim_mib() -> float:
+    """RSS after glibc's ``malloc_trim(0)`` hands freed heap pages back to the system: memory that is free but kept
+    by the allocator (fragmentation, not a leak) drops out; 0 where there is no glibc."""
+    try:
+        import ctypes
+
+        ctypes.CDLL("libc.so.6").malloc_trim(0)
+    except (OSError, AttributeError):
+        return 0.0
+    return rss_mib()
 
 
 def api_objects(backend: str) -> dict:
@@ -93,7 +106,7 @@ def run(backend: str, cycles: int, every: int) -> None:
             if i % every == 0:
                 print(json.dumps({"bench": "lifetime", "backend": backend, "cycle": i,
                                   "engine_objects": app.renderer.live_objects(), **api_objects(backend),
-                                  "rss_mib": round(rss_mib(), 2),
+                                  "rss_mib": round(rss_mib(), 2), "rss_trimmed_mib": round(rss_after_trim_mib(), 2),
                                   "s": round(time.perf_counter() - start, 2)}), flush=True)
             if i == cycles:
                 break

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import contextlib
 import gc
+import math
 import os
 import uuid
 from collections.abc import Iterator, Sequence
@@ -452,7 +453,14 @@ class Scene:
 
     def update(self, ts: float) -> None:
         """Run one frame: every enabled system's ``on_update_system`` in order; entities a system destroys go
-        when it has finished. Each system's wall-clock time lands in its ``update_seconds``."""
+        when it has finished. Each system's wall-clock time lands in its ``update_seconds``.
+
+        ``ts`` is the frame's time step in seconds: a finite number >= 0 (a NaN would spread into every position a
+        system integrates, silently)."""
+        if type(ts) is not float and (isinstance(ts, bool) or not isinstance(ts, (int, np.integer, np.floating))):
+            raise TypeError(f"scene '{self.name}': update(ts) needs the time step in seconds, got {ts!r}")
+        if not 0.0 <= ts < math.inf:  # False for NaN too
+            raise ValueError(f"scene '{self.name}': update(ts) needs a finite time step >= 0, got {ts!r}")
         for system in list(self._systems):
             if system.enabled:
                 self.run_system(system, ts)

@@ -224,10 +224,12 @@ CASES = [
           "scene named 'level'"),
     error("manager-unknown-name", lambda: manager().get("lobby"), KeyError, "no scene named 'lobby'", "have: level"),
     error("switch-to-unknown-name", lambda: manager().request_switch("lobby"), KeyError, "'lobby'"),
-    error("update-nan-time-step", lambda: Scene("main").update(math.nan), ValueError, "scene 'main'", "ts",
-          xfail="Scene.update accepts NaN, negative and non-number time steps silently (Application.step checks its "
-                "dt, a direct scene.update does not); fix in ecs/scene.py update(): refuse a ts that is not a finite "
-                "number >= 0, naming the scene (left to the engineer now editing scene.py's run_system)"),
+    error("update-nan-time-step", lambda: Scene("main").update(math.nan), ValueError, "scene 'main'", "update(ts)",
+          "nan"),
+    error("update-negative-time-step", lambda: Scene("main").update(-0.1), ValueError, "scene 'main'", "-0.1"),
+    error("update-infinite-time-step", lambda: Scene("main").update(math.inf), ValueError, "scene 'main'", "inf"),
+    error("update-text-time-step", lambda: Scene("main").update("0.1"), TypeError, "scene 'main'", "'0.1'"),
+    result("update-numpy-time-step", lambda: Scene("main").update(np.float32(0.1)), lambda r: r is None),
     # destruction during an update: deferred to the end of the system
     result("destroy-later-entity-during-update", lambda: destroy_during_update("a", ["c"]),
            check_deferred(["a", "b", "c"], 2)),
