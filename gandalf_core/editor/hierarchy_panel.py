@@ -44,17 +44,17 @@ class HierarchyPanelSystem(PanelSystem):
 
     def draw(self, panel: EditorPanelComponent) -> None:
         editor = self.editor
-        if imgui.small_button("+ Entity"):
+        if imgui.small_button("New"):
             self.act(editor.create_entity, "Entity", parent=editor.selected if imgui.get_io().key_shift else None)
         self.remember("hierarchy:create")
         selected = editor.selected if editor.selected in self.scene else None
         imgui.same_line()
         imgui.begin_disabled(selected is None)
-        if imgui.small_button("Duplicate"):
+        if imgui.small_button("Copy"):
             self.act(editor.duplicate_entity, selected)
         self.remember("hierarchy:duplicate")
         imgui.same_line()
-        if imgui.small_button("Delete"):
+        if imgui.small_button("Del"):
             self.act(editor.destroy_entity, selected)
         self.remember("hierarchy:delete")
         imgui.end_disabled()

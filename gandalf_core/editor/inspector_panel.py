@@ -44,15 +44,7 @@ class InspectorPanelSystem(PanelSystem):
         if entity is None or entity not in scene:
             imgui.text_disabled("nothing selected")
             return
-        imgui.text(display_name(scene, entity))
-        imgui.same_line()
-        imgui.text_disabled(str(entity)[:8])
-        for component in scene.components_of(entity):
-            if isinstance(component, LinkComponent):
-                continue
-            self._component(entity, component)
-        imgui.separator()
-        if imgui.button("Add component"):
+        if imgui.small_button("+ Component"):
             imgui.open_popup("add component")
         self.remember("inspector/add")
         if imgui.begin_popup("add component"):
@@ -61,13 +53,22 @@ class InspectorPanelSystem(PanelSystem):
                     self.act(lambda m=make: editor.add_component(entity, m()))
                 self.remember(f"inspector/add/{name}")
             imgui.end_popup()
+        imgui.same_line()
+        imgui.text(display_name(scene, entity))
+        imgui.same_line()
+        imgui.text_disabled(str(entity)[:8])
+        for component in scene.components_of(entity):
+            if isinstance(component, LinkComponent):
+                continue
+            self._component(entity, component)
 
     def _component(self, entity: uuid.UUID, component: Component) -> None:
         ctype = type(component)
         name = ctype.__name__
+        right = imgui.get_cursor_pos_x() + imgui.get_content_region_avail().x
         is_open = imgui.collapsing_header(f"{name.removesuffix('Component')}##{name}",
-                                          imgui.TreeNodeFlags_.default_open)
-        imgui.same_line(imgui.get_window_width() - 28)
+                                          imgui.TreeNodeFlags_.default_open | imgui.TreeNodeFlags_.allow_overlap)
+        imgui.same_line(right - 18)
         if imgui.small_button(f"x##remove{name}"):
             self.act(self.editor.remove_component, entity, ctype)
             return

@@ -52,7 +52,9 @@ class MenuBarSystem(PanelSystem):
             if imgui.menu_item_simple("Save As..."):
                 self._open_dialog("Save As")
             self.remember("menu/file/save_as")
-            if imgui.begin_menu("Open Recent", bool(editor.recent)):
+            recent = imgui.begin_menu("Open Recent", bool(editor.recent))
+            self.remember("menu/file/recent")
+            if recent:
                 for i, path in enumerate(list(editor.recent)):
                     if imgui.menu_item_simple(path):
                         self.act(editor.load, path)

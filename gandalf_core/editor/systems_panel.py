@@ -36,10 +36,10 @@ class SystemsPanelSystem(PanelSystem):
         flags = imgui.TableFlags_.row_bg | imgui.TableFlags_.borders_inner_v | imgui.TableFlags_.sizing_stretch_prop
         if not imgui.begin_table("systems", 4, flags):
             return
-        imgui.table_setup_column("system", imgui.TableColumnFlags_.width_stretch)
+        imgui.table_setup_column("order", imgui.TableColumnFlags_.width_fixed)
         imgui.table_setup_column("run", imgui.TableColumnFlags_.width_fixed)
         imgui.table_setup_column("ms", imgui.TableColumnFlags_.width_fixed)
-        imgui.table_setup_column("order", imgui.TableColumnFlags_.width_fixed)
+        imgui.table_setup_column("system", imgui.TableColumnFlags_.width_stretch)
         imgui.table_headers_row()
         for i, system in enumerate(systems):
             key = id(system)
@@ -48,7 +48,13 @@ class SystemsPanelSystem(PanelSystem):
             imgui.push_id(i)
             imgui.table_next_row()
             imgui.table_next_column()
-            imgui.text(system.name if system.enabled else f"{system.name} (paused)")
+            if imgui.arrow_button("##up", imgui.Dir.up):
+                editor.move_system(system, -1)
+            self.remember(f"systems/up/{system.name}")
+            imgui.same_line()
+            if imgui.arrow_button("##down", imgui.Dir.down):
+                editor.move_system(system, +1)
+            self.remember(f"systems/down/{system.name}")
             imgui.table_next_column()
             imgui.begin_disabled(isinstance(system, RenderSystem))
             changed, on = imgui.checkbox("##run", system.enabled)
@@ -65,11 +71,6 @@ class SystemsPanelSystem(PanelSystem):
             imgui.table_next_column()
             imgui.text(f"{ms:6.3f}")
             imgui.table_next_column()
-            if imgui.arrow_button("##up", imgui.Dir.up):
-                editor.move_system(system, -1)
-            self.remember(f"systems/up/{system.name}")
-            imgui.same_line()
-            if imgui.arrow_button("##down", imgui.Dir.down):
-                editor.move_system(system, +1)
+            imgui.text(system.name if system.enabled else f"{system.name} (paused)")
             imgui.pop_id()
         imgui.end_table()

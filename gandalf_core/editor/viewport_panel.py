@@ -34,7 +34,13 @@ class ViewportPanelSystem(PanelSystem):
     """Renders the scene into the panel's texture and handles the gizmo."""
 
     kind = "viewport"
-    window_flags = imgui.WindowFlags_.no_collapse | imgui.WindowFlags_.no_scrollbar
+
+    @property
+    def window_flags(self) -> int:  # type: ignore[override]
+        flags = imgui.WindowFlags_.no_collapse | imgui.WindowFlags_.no_scrollbar
+        if self.editor.gizmo_over or self.editor.gizmo_using:  # a press on the gizmo must not drag the window
+            flags |= imgui.WindowFlags_.no_move
+        return flags
 
     def __init__(self, editor) -> None:  # noqa: ANN001 - the Editor
         super().__init__(editor)
@@ -79,10 +85,12 @@ class ViewportPanelSystem(PanelSystem):
     # --- the GUI -------------------------------------------------------------------------------------------
     def draw(self, panel: EditorPanelComponent) -> None:
         editor = self.editor
-        for name in OPERATIONS:
-            if imgui.radio_button(name, self.operation == name):
+        for name, short in zip(OPERATIONS, "TRS"):  # W, E, R as keys
+            if imgui.radio_button(short, self.operation == name):
                 self.operation = name
             self.remember(f"viewport/{name}")
+            if imgui.is_item_hovered():
+                imgui.set_tooltip(name)
             imgui.same_line()
         imgui.text("|")
         imgui.same_line()
@@ -136,6 +144,7 @@ class ViewportPanelSystem(PanelSystem):
         projection = camera.projection_matrix("opengl", width / height)
         world = np.array(scene.get_component(entity, TransformComponent).world)
         _GZ.set_orthographic(camera.projection == "orthographic")
+        _GZ.set_gizmo_size_clip_space(0.2)  # a viewport panel is small: a larger gizmo is easier to grab
         _GZ.set_drawlist()
         _GZ.set_rect(x, y, width, height)
         matrix = _matrix16(world)
