@@ -1,8 +1,8 @@
 """Step 05's hierarchy (not graded: it has no exercise): parent links, re-parenting, spinning about an own axis,
 and the solar system in both APIs.
 
-Pictures (160 × 120, 60 frames): the two APIs agree to PSNR ≥ 40 dB (measured: identical or one 8-bit step on a
-few edge pixels) and OpenGL matches ``references/scene_solar.png`` to ≥ 35 dB.
+Pictures (160 × 120, 60 frames): the two APIs agree to PSNR ≥ 40 dB (measured on llvmpipe/lavapipe: 87.3 dB, largest
+channel difference 1) and OpenGL matches ``references/scene_solar.png`` to ≥ 35 dB.
 """
 
 from __future__ import annotations
