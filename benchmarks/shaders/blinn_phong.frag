@@ -3,7 +3,7 @@
 #include "frame.glsl"
 in vec3 v_position;
 in vec3 v_normal;
-layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
     vec4 color;
 } material;
 out vec4 f_color;

@@ -1,6 +1,6 @@
 #version 330 core
 in vec2 v_uv;
-layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
     vec4 color;
 } material;
 uniform sampler2D u_albedo;

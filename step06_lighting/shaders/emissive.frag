@@ -2,7 +2,7 @@
 // A light's marker: its flat colour, unlit.
 in vec3 v_world;
 in vec3 v_normal;
-layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
     vec4 color;
 } material;
 out vec4 f_color;

@@ -3,7 +3,7 @@
 #include "lighting.glsl"
 in vec3 v_world;
 in vec3 v_normal;
-layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
     vec4 color;
 } material;
 uniform samplerCube u_env;

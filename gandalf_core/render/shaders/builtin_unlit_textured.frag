@@ -1,7 +1,7 @@
 #version 330 core
 // Built-in material gandalf.unlit with a texture: the material colour times the texture, no light.
 in vec2 v_uv;
-layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
     vec4 color;
 } material;
 uniform sampler2D u_texture;

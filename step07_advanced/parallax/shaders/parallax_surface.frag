@@ -6,7 +6,7 @@ in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_tangent;
-layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
     vec4 color;
     vec2 uv_scale;       // texture repeats across the surface (u, v)
     float method;        // 0 normal mapping, 1 parallax offset, 2 steep, 3 occlusion

@@ -9,7 +9,7 @@ in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_tangent;
-layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
     vec4 color;                // glTF baseColorFactor
     vec4 emissive;             // emissiveFactor
     float metallic;            // metallicFactor
@@ -43,7 +43,7 @@ void main() {
     vec3 emitted = material.emissive.rgb * texture(u_emissive_map, v_uv).rgb;
     // --8<-- [end:maps]
     vec3 color = pbr_direct(v_world, shading, v, base, metallic, roughness, shadow_factor(v_world, n));
-    color += material.env_strength * ao * ibl_light(u_irradiance, u_prefiltered, u_brdf_lut, material.prefiltered_levels,
-                                             shading, v, base, metallic, roughness);
+    color += material.env_strength * ao * ibl_light(u_irradiance, u_prefiltered, u_brdf_lut,
+                                                    material.prefiltered_levels, shading, v, base, metallic, roughness);
     f_color = vec4(color + emitted, 1.0);
 }

@@ -1,6 +1,6 @@
 #version 330 core
 // Test shader: the material colour.
-layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
     vec4 color;
 } material;
 out vec4 f_color;
