@@ -1,7 +1,7 @@
 #version 330 core
 // One colour, lit by a fixed world-space light: ambient 0.3 plus Lambert 0.7 (in linear light).
 in vec3 v_normal;
-layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
     vec4 color;
 } material;
 out vec4 f_color;

@@ -2,7 +2,7 @@
 // Texture times colour, lit like shaded.frag.
 in vec3 v_normal;
 in vec2 v_uv;
-layout(std140) uniform Material {  // the material's values: the same bytes as WGSL's Material struct
+layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
     vec4 color;
 } material;
 uniform sampler2D u_albedo;
