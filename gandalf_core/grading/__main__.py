@@ -19,7 +19,12 @@ import sys
 
 import pytest
 
+from . import SPEED_OPTIONS, use_bytecode_cache
+
 PLUGIN = "gandalf_core.grading.plugin"
+# A test module that fails to import (a course bug, never the student's: their code is imported by the tests, not
+# at collection) must not zero the other steps: grade the rest; that module's tests are missing from the grade.
+ROBUST_OPTIONS = ("--continue-on-collection-errors",)
 
 
 def _has(module: str) -> bool:
@@ -46,7 +51,7 @@ def pytest_options(
     quiet: bool = True,
 ) -> list[str]:
     """The pytest arguments the front end (and the batch grader) uses."""
-    options = ["-p", PLUGIN, "--student", "-p", "no:cacheprovider", "--tb=line", "-rN"]
+    options = ["-p", PLUGIN, "--student", "-p", "no:cacheprovider", "--tb=line", "-rN", *SPEED_OPTIONS, *ROBUST_OPTIONS]
     if quiet:
         options.append("-q")
     if jobs > 0 and _has_xdist():
@@ -121,6 +126,7 @@ def main(argv: list[str]) -> int:
     )
     if not args.all_tests and not any(a == "-m" or a.startswith("-m") and len(a) > 2 for a in extra):
         options += ["-m", "exercise"]  # only graded tests count: the others (studies, engine checks) cost time
+    use_bytecode_cache()  # compiled once per machine, outside the checkout (GANDALF_PYCACHE=off: not at all)
     code = pytest.main(options + extra + args.tests)
     # 1 = some tests failed: that's a grade, not an error of the grader.
     status = 0 if code in (pytest.ExitCode.OK, pytest.ExitCode.TESTS_FAILED) else int(code)

@@ -31,6 +31,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from . import bytecode_cache_env
+
 ROOT = Path(__file__).resolve().parents[2]
 
 
@@ -91,7 +93,7 @@ def grade_submission(
     cmd += ["--jobs", str(workers), "--timeout", f"{timeout:g}"]
     env = {k: v for k, v in os.environ.items() if k != "GANDALF_IMPL"}
     env["GANDALF_IMPL"] = os.pathsep.join(f"{step}={path}" for step, path in handed_in.items())
-    env["PYTHONDONTWRITEBYTECODE"] = "1"
+    env = bytecode_cache_env(env)  # bytecode in a cache outside the submission and the checkout
     graded = Graded(student, sorted(handed_in))
     for stale in ("grade.json", "results.json"):
         (target / stale).unlink(missing_ok=True)

@@ -41,6 +41,8 @@ from pathlib import Path
 from types import ModuleType
 from typing import Any
 
+from . import SPEED_OPTIONS, bytecode_cache_env, use_bytecode_cache
+
 ROOT = Path(__file__).resolve().parents[2]
 DEFAULT_DIR = ROOT / "tests" / "mutants"
 
@@ -225,6 +227,7 @@ class _Job:
 
     def pytest_args(self, timeout: float) -> list[str]:
         args = ["-q", "-p", "no:cacheprovider", "--student", "--tb=line", "-p", "gandalf_core.grading.plugin"]
+        args += SPEED_OPTIONS
         args += ["--grade-json", str(self.folder / "grade.json"), f"--timeout={timeout:g}"]
         if self.mutant is not None:
             args.append("-x")  # one failed test kills the mutant
@@ -254,7 +257,7 @@ def _start(job: _Job, timeout: float, fork: bool) -> None:
                 os.dup2(fd, 1)
                 os.dup2(fd, 2)
                 os.environ["GANDALF_IMPL"] = impl
-                os.environ["PYTHONDONTWRITEBYTECODE"] = "1"
+                use_bytecode_cache()
                 os.chdir(ROOT)
                 import pytest
 
@@ -269,7 +272,7 @@ def _start(job: _Job, timeout: float, fork: bool) -> None:
                 os._exit(code)
         job.pid = pid
     else:
-        env = {**os.environ, "GANDALF_IMPL": impl, "PYTHONDONTWRITEBYTECODE": "1"}
+        env = bytecode_cache_env({**os.environ, "GANDALF_IMPL": impl})
         with open(log, "w") as out:
             job.popen = subprocess.Popen(
                 [sys.executable, "-m", "pytest", *job.pytest_args(timeout)], cwd=ROOT, env=env, stdout=out, stderr=out

@@ -1,8 +1,9 @@
 """The grader's outputs for course platforms: the batch grader's gradebook, GitHub Classroom's configuration.
 
-* ``scripts/make_sample_submissions.py`` makes 30 seeded submissions of step 01 (each exercise file either the
-  solution or the stub); ``python -m gandalf_core.grading.batch`` grades 3 of them in parallel, a process per
-  submission, and its gradebook must give exactly the points the manifest says (2 for ``hue.py`` done, else 0).
+* ``scripts/make_sample_submissions.py`` makes 5 seeded submissions of steps 01-02 (the stubs, the solutions, a
+  runaway loop, a hard exit, random shares); ``python -m gandalf_core.grading.batch`` grades all five in
+  parallel, a process per submission, and the gradebook must give exactly the points of the exercises done from
+  the solutions (the script's ``--check``); the runaway loop and the hard exit lose only their own exercise.
 * ``.github/classroom/autograding.json`` parses, has one entry per step with points, and each entry's command
   really runs the grader: run with ``--collect-only`` it collects that step's graded tests.
 """
@@ -23,38 +24,47 @@ ROOT = Path(__file__).resolve().parents[2]
 ENV = {k: v for k, v in os.environ.items() if k != "GANDALF_IMPL"}
 
 
-def test_batch_grades_three_sample_submissions(tmp_path):
+def test_batch_grades_sample_submissions_into_the_right_gradebook(tmp_path):
     subs, out = tmp_path / "subs", tmp_path / "out"
     make = [sys.executable, str(ROOT / "scripts" / "make_sample_submissions.py"), "--out", str(subs)]
-    subprocess.run(make + ["--count", "30", "--seed", "1", "--steps", "step01"], check=True, env=ENV, timeout=60)
+    subprocess.run(make + ["--count", "5", "--seed", "1", "--steps", "step01", "step02"], check=True, env=ENV,
+                   timeout=60)
     manifest = json.loads((subs / "manifest.json").read_text())
-    assert len(manifest) == 30 and len(list(subs.glob("student_*/step01_window/exercises/hue.py"))) == 30
-    manifest = {k: manifest[k] for k in ("student_01", "student_02", "student_03")}
+    assert len(manifest) == 5 and len(list(subs.glob("student_*/step02_triangle/exercises/ngon.py"))) == 5
+    students = sorted(manifest)
+    kinds = ["stubs", "solutions", "runaway loop", "hard exit", "random"]  # student_05's syntax error is in step 03
+    assert [manifest[s]["kind"] for s in students] == kinds
     proc = subprocess.run(
         [sys.executable, "-m", "gandalf_core.grading.batch", str(subs), "--out", str(out), "--steps", "step01"]
-        + ["--jobs", "2", "--students", *manifest],
+        + ["step02", "--jobs", "2", "--timeout", "20"],
         cwd=ROOT,
         env=ENV,
         capture_output=True,
         text=True,
-        timeout=400,
+        timeout=600,
     )
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
-    assert "[  3/3]" in proc.stdout, proc.stdout  # the progress line
+    assert "[  5/5]" in proc.stdout, proc.stdout  # the progress line
     rows = {row["student"]: row for row in csv.DictReader((out / "gradebook.csv").open())}
-    assert sorted(rows) == sorted(manifest)
-    for student, done in manifest.items():
-        expected = 2.0 if "hue.py" in done.get("step01_window", []) else 0.0
-        row = rows[student]
-        assert float(row["possible"]) == 2.0, row
-        assert float(row["earned"]) == pytest.approx(expected), f"{student}: done {done}, gradebook {row}"
-        assert float(row["step01_window:hsv_to_rgb"]) == pytest.approx(expected / 2)
-        assert (out / student / "report.md").read_text().startswith(f"# {student}")
+    assert sorted(rows) == students
+    possible = float(rows["student_02"]["possible"])
+    assert possible == 5.0 and float(rows["student_02"]["earned"]) == pytest.approx(possible)
+    assert float(rows["student_01"]["earned"]) == 0.0
+    # The runaway loop and the hard exit cost NGonSystem only; the rest of their work is graded.
+    for student, why in (("student_03", "Timeout"), ("student_04", "crashed")):
+        assert float(rows[student]["step02_triangle:NGonSystem"]) == 0.0, rows[student]
+        report = (out / student / "report.md").read_text()
+        assert report.startswith(f"# {student}") and why in report, report[-2000:]
+    # Every student's points equal the points of the exercises done from the solutions (the manifest).
+    checked = subprocess.run(make + ["--check", str(out)], env=ENV, capture_output=True, text=True, timeout=60)
+    assert checked.returncode == 0 and "5 students checked against the manifest: 0 mismatches" in checked.stdout, (
+        checked.stdout + checked.stderr
+    )
+    for student in students:
         gradescope = json.loads((out / student / "results.json").read_text())
-        assert gradescope["score"] == pytest.approx(expected)
+        assert gradescope["score"] == pytest.approx(float(rows[student]["earned"]))
     book = json.loads((out / "gradebook.json").read_text())
-    assert [b["student"] for b in book] == sorted(manifest) and all(not b["error"] for b in book)
-    assert {round(b["earned"]) for b in book} == {0, 2}, "seed 1 should give a mix of done and not done"
+    assert [b["student"] for b in book] == students and all(not b["error"] for b in book)
 
 
 def _classroom() -> list[dict]:

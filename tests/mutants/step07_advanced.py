@@ -3,9 +3,11 @@
 The lists live beside the checks that kill them, in the technique's test files (each of those files also runs
 its mutants through the shader harness as ungraded tests); here they are read from the files' source (only the
 literal tables, nothing is imported: the mutation runner forks with no GPU library loaded) and registered with
-the exercise each one breaks. The terrain, filter and parallax mutants use other formats and are checked by
-their own test files only. The showcase's two older exercises (``normal_map``, ``particle_step``) have their
-mutants written here.
+the exercise each one breaks. The terrain, filter and parallax test files build their mutants in their own formats
+(function bodies in a frame, weight-table parameters, replacements in the solution's text): the same builders run
+here and each mutant becomes a whole-file replacement of the copied solution, so the mutation runner grades exactly
+the shader text those files' own mutant tests check (terrain_height gets two more here). The showcase's two older
+exercises (``normal_map``, ``particle_step``) have their mutants written here.
 """
 
 from __future__ import annotations
@@ -21,16 +23,33 @@ TESTS = Path(__file__).resolve().parent.parent / STEP
 
 
 def _tables(test_file: str, names: set[str]) -> dict:
-    """The module-level assignments of ``names`` in ``test_file``, evaluated in order in an empty namespace."""
+    """The module-level assignments (and plain functions) of ``names`` in ``test_file``, evaluated in order in an
+    empty namespace: literal tables and string-building helpers only, so nothing is imported."""
     tree = ast.parse((TESTS / test_file).read_text())
     namespace: dict = {}
     for node in tree.body:
         if isinstance(node, (ast.Assign, ast.AnnAssign)):
             targets = node.targets if isinstance(node, ast.Assign) else [node.target]
             flat = [t for target in targets for t in (target.elts if isinstance(target, ast.Tuple) else [target])]
-            if any(isinstance(t, ast.Name) and t.id in names for t in flat):
-                exec(compile(ast.Module([node], []), test_file, "exec"), {}, namespace)  # literal tables only
+            wanted = any(isinstance(t, ast.Name) and t.id in names for t in flat)
+        else:
+            wanted = isinstance(node, ast.FunctionDef) and node.name in names
+        if wanted:
+            exec(compile(ast.Module([node], []), test_file, "exec"), namespace)
     return namespace
+
+
+SOLUTIONS = TESTS.parent.parent / STEP / "solutions"
+
+
+def _slug(text: str) -> str:
+    """A mutant's name for the runner (``step:exercise:name``): the test file's description, lower case, dashes."""
+    return "-".join("".join(c if c.isalnum() else " " for c in text.lower()).split())
+
+
+def _whole_file(file: str, text: str) -> tuple[str, str, str]:
+    """An edit that replaces the copied solution file ``file`` by ``text`` (its whole text occurs exactly once)."""
+    return (file, (SOLUTIONS / file).read_text(), text)
 
 
 _explode = _tables("test_explode.py", {"G", "W", "SHADER_MUTANTS"})
@@ -95,3 +114,66 @@ for name, description, edits in NORMAL_MAP:
     shader_mutant(MUTANTS, STEP, "normal_map", name, description, edits)
 for name, description, edits in PARTICLE_STEP:
     shader_mutant(MUTANTS, STEP, "particle_step", name, description, edits)
+
+# --- terrain: the test file's function bodies in its frame (tess_level, terrain_height, terrain_normal) -------------
+TERRAIN_EXERCISE = {"tess_level": "terrain_lod", "terrain_height": "terrain_height", "terrain_normal": "terrain_normal"}
+_terrain = _tables("test_terrain.py", {"_GLSL", "_WGSL", "_BILINEAR", "_BILINEAR_WGSL", "_REFERENCE", "MUTANTS"})
+
+
+def _terrain_file(language: str, function: str, body: str) -> str:
+    """``terrain.<language>`` as the test file's ``_write_mutant`` writes it: ``function`` with ``body``, the
+    other two functions with the reference bodies."""
+    heads = _terrain["_GLSL"] if language == "glsl" else _terrain["_WGSL"]
+    column = 0 if language == "glsl" else 1
+    return "\n".join(head.format(body=body if name == function else _terrain["_REFERENCE"][name][column])
+                     for name, head in heads.items()) + "\n"
+
+
+for description, (function, glsl, wgsl) in _terrain["MUTANTS"].items():
+    shader_mutant(MUTANTS, STEP, TERRAIN_EXERCISE[function], _slug(description), description,
+                  [_whole_file("terrain.glsl", _terrain_file("glsl", function, glsl)),
+                   _whole_file("terrain.wgsl", _terrain_file("wgsl", function, wgsl))])
+
+TG, TW = "terrain.glsl", "terrain.wgsl"
+shader_mutant(MUTANTS, STEP, "terrain_height", "height-weights-reversed",
+              "mixes towards the texel behind: mix(h10, h00, f.x) (the fraction measured from the wrong side)",
+              [(TG, "return mix(mix(h00, h10, f.x), mix(h01, h11, f.x), f.y);",
+                "return mix(mix(h10, h00, f.x), mix(h11, h01, f.x), f.y);"),
+               (TW, "return mix(mix(h00, h10, f.x), mix(h01, h11, f.x), f.y);",
+                "return mix(mix(h10, h00, f.x), mix(h11, h01, f.x), f.y);")])
+shader_mutant(MUTANTS, STEP, "terrain_height", "height-trunc-for-floor",
+              "trunc(st) instead of floor(st): within half a texel of u = 0 or v = 0 it extrapolates",
+              [(TG, "vec2 base = floor(st);", "vec2 base = trunc(st);"),
+               (TW, "let base = floor(st);", "let base = trunc(st);")])
+
+# --- filter: the Gaussian weights (blur_kernel) and the blur pass (convolve) -----------------------------------------
+_filter = _tables("test_filter.py", {"_W_GLSL", "_W_WGSL", "_weights_body", "WEIGHT_MUTANTS", "CONVOLVE_MUTANTS",
+                                     "_C_GLSL", "_C_WGSL"})
+for description, spec in _filter["WEIGHT_MUTANTS"].items():
+    shader_mutant(MUTANTS, STEP, "blur_kernel", _slug(description), f"the weights: {description}",
+                  [_whole_file(f"blur_kernel.{lang}",
+                               _filter[template].format(body=_filter["_weights_body"](*spec, lang)))
+                   for lang, template in (("glsl", "_W_GLSL"), ("wgsl", "_W_WGSL"))])
+for description, (glsl, wgsl) in _filter["CONVOLVE_MUTANTS"].items():
+    shader_mutant(MUTANTS, STEP, "convolve", _slug(description), f"the blur pass: {description}",
+                  [_whole_file("convolve.glsl", _filter["_C_GLSL"].format(body=glsl)),
+                   _whole_file("convolve.wgsl", _filter["_C_WGSL"].format(body=wgsl))])
+
+# --- parallax: replacements in the solution's text (every occurrence, as the test file applies them) ----------------
+_parallax = _tables("test_parallax.py", {"_SAME", "MUTANTS"})
+
+
+def _parallax_file(language: str, edits: list[tuple[str, str]]) -> str:
+    text = (SOLUTIONS / f"parallax.{language}").read_text()
+    for old, new in edits:
+        if old not in text:
+            raise ValueError(f"parallax mutant edit {old!r} is not in the {language} solution (update the mutant)")
+        text = text.replace(old, new)
+    return text
+
+
+for description, (function, glsl, wgsl) in _parallax["MUTANTS"].items():
+    wgsl_edits = glsl if wgsl == _parallax["_SAME"] else wgsl
+    shader_mutant(MUTANTS, STEP, "parallax", _slug(description), f"{function}: {description}",
+                  [_whole_file("parallax.glsl", _parallax_file("glsl", glsl)),
+                   _whole_file("parallax.wgsl", _parallax_file("wgsl", wgsl_edits))])

@@ -31,6 +31,18 @@ EYE = np.array([0.0, 0.0, 3.2])
 FOV = 45.0
 
 
+@functools.cache
+def brdf_lut_texture(prefix: str = "ibl") -> TextureData:
+    """The split sum's BRDF table as ``build_ibl`` makes it (the same texture as ``default_ibl().brdf_lut``),
+    without the prefiltered environment that ``default_ibl`` also computes (about 4 s of a grading run)."""
+    from step07_advanced.pbr_model import ibl
+
+    lut = ibl.brdf_lut()
+    rgba = np.concatenate([lut, np.zeros(lut.shape[:2] + (1,)), np.ones(lut.shape[:2] + (1,))], axis=-1)
+    return TextureData.from_array(np.clip(rgba, 0.0, 1.0), srgb=False, wrap="clamp", mipmaps=False,
+                                  name=f"{prefix}_brdf_lut")
+
+
 def make_app(backend: str, impl: ModuleType, size: tuple[int, int] = SIZE) -> Application:
     """A headless app of ``backend`` with the step's render shaders built from ``impl``'s includes."""
     app = Application(backend, *size, headless=True, fixed_dt=1 / 60)

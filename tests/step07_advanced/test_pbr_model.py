@@ -20,7 +20,7 @@ import importlib
 
 import numpy as np
 import pytest
-from step07_helpers import EYE, FOV, inner, pixel_errors, to_srgb8
+from step07_helpers import EYE, FOV, brdf_lut_texture, inner, pixel_errors, to_srgb8
 
 from gandalf_core import Application, Scene, TransformComponent, testing
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
@@ -82,7 +82,7 @@ def _sphere():
 
 def _lut_texture() -> TextureData:
     if "lut" not in _cache:
-        _cache["lut"] = ibl.default_ibl().brdf_lut
+        _cache["lut"] = brdf_lut_texture()  # = ibl.default_ibl().brdf_lut, without its 4 s environment
     return _cache["lut"]
 
 
@@ -198,6 +198,13 @@ def test_a_constant_environment_stays_constant():
     assert np.allclose(irradiance, [0.2, 0.5, 0.9], rtol=2e-3), "E/π of a constant L must be L"
     for level in ibl.prefilter_levels(constant, size=8, levels=4, samples=32):
         assert np.allclose(level, [0.2, 0.5, 0.9], rtol=1e-9)
+
+
+def test_the_graded_tests_brdf_table_is_the_default_ibls():
+    """The graded test builds only the BRDF table (``brdf_lut_texture``): it must be ``default_ibl``'s."""
+    expected, got = ibl.default_ibl().brdf_lut, brdf_lut_texture()
+    assert got.name == expected.name and got.srgb == expected.srgb and got.wrap == expected.wrap
+    assert np.array_equal(got.pixels, expected.pixels)
 
 
 def test_brdf_table_matches_karis_fit_and_the_rough_limit():
