@@ -222,14 +222,20 @@ class _Reader:
 
     # --- assets ---------------------------------------------------------------------------------------
     def read_assets(self, scene: Scene) -> None:
-        for folder, read_one, register in (
-            (MESHES, asset_prims.read_mesh, scene.assets.mesh),
-            (MATERIALS, asset_prims.read_material, scene.assets.material),
-            (TEXTURES, lambda ctx, p: asset_prims.read_texture(ctx, p, self.path.parent), scene.assets.texture),
+        for kind, folder, read_one, register in (
+            ("mesh", MESHES, asset_prims.read_mesh, scene.assets.mesh),
+            ("material", MATERIALS, asset_prims.read_material, scene.assets.material),
+            ("texture", TEXTURES, lambda ctx, p: asset_prims.read_texture(ctx, p, self.path.parent),
+             scene.assets.texture),
         ):
             parent = self.stage.GetPrimAtPath(folder)
+            first: dict[str, str] = {}
             for prim in parent.GetChildren() if parent else ():
                 name, data = read_one(self.ctx, prim)
+                if name in first:  # one would silently replace the other
+                    raise self.ctx.fail(prim, "gandalf:name", f"two {kind} prims are both named {name!r} (the other "
+                                                              f"is <{first[name]}>)")
+                first[name] = str(prim.GetPath())
                 register(name, data)
 
     # --- components of one prim ---------------------------------------------------------------------

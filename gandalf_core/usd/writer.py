@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import os
 import sys
 import uuid
 import warnings
@@ -60,16 +61,18 @@ def file_format(path: Path) -> str:
 
 
 def save_scene(scene: Scene, path: str | Path, *, assets: bool = True) -> Path:
-    """Write ``scene`` to ``path`` (.usda text or .usdc binary, chosen by the extension); return the path.
+    """Write ``scene`` to ``path`` (.usda text or .usdc binary, chosen by the extension); return the file written.
 
     With ``assets=True`` every texture is written as PNG into ``<stem>_<ext>_textures/`` next to the file and
     referenced by a relative path; ``assets=False`` leaves textures out (meshes and materials are always
     saved). All files are written to temporary files and moved into place only when everything succeeded, so a
-    failed save leaves the previous files as they were. Components without a USD mapping are reported in one
+    failed save leaves the previous files as they were. Saving through a symbolic link writes its target (the
+    link stays a link; the textures go next to the target). Components without a USD mapping are reported in one
     :class:`USDSceneWarning`. Raises :class:`USDSceneError` naming the file (and entity/field) on failure.
     """
-    path = Path(path)
-    file_format(path)
+    given = Path(path)
+    file_format(given)
+    path = Path(os.path.realpath(given)) if given.is_symlink() else given
     if not path.parent.is_dir():
         raise USDSceneError(path, f"the folder {str(path.parent)!r} does not exist")
     stage = Usd.Stage.CreateInMemory()
