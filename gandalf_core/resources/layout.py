@@ -31,6 +31,7 @@ from typing import Any
 import numpy as np
 
 RULES = ("std140", "wgsl", "both")
+_FLOAT32_MAX = float(np.finfo(np.float32).max)
 _MISSING = object()
 
 
@@ -296,9 +297,34 @@ class BlockLayout:
     # --- packing --------------------------------------------------------------------------------
     def pack(self, values: Mapping[str, Any]) -> bytes:
         """The block's bytes, each field from ``values`` by name (a field with a default may be left out)."""
-        buf = bytearray(self.size)
-        self._write_struct(buf, 0, self.fields, values, "")
+        if self._pack_cache is None:  # the defaults, written once (fields without one stay zero until given)
+            template = bytearray(self.size)
+            defaults = {f.name: self._default_value(f) for f in self.fields if f.has_default}
+            for f in self.fields:
+                if f.name in defaults:
+                    self._write(template, f.offset, f, f.type, defaults[f.name], f.name)
+            self._pack_cache = bytes(template)
+        if not isinstance(values, Mapping):
+            raise LayoutError(f"block '{self.name}': expected a dict of fields, got {type(values).__name__}")
+        buf = bytearray(self._pack_cache)
+        by_name = self._by_name
+        for key, value in values.items():
+            f = by_name.get(key)
+            if f is None:
+                raise LayoutError(f"block '{self.name}' has no field '{key}' "
+                                  f"(fields: {', '.join(by_name)})")
+            self._write(buf, f.offset, f, f.type, value, key)
+        if len(values) < len(by_name):
+            for f in self.fields:
+                if f.name not in values and not f.has_default:
+                    raise LayoutError(f"block '{self.name}' field '{f.name}': no value given and no default")
         return bytes(buf)
+
+    @staticmethod
+    def _default_value(f: FieldInfo) -> Any:
+        if np.ndim(f.default) == 0 and not isinstance(f.type, Struct):  # a scalar default fills the field
+            return np.full(_flat_count(f.type), f.default)
+        return f.default
 
     def _write_struct(self, buf: bytearray, base: int, fields: tuple[FieldInfo, ...], values: Any,
                       prefix: str) -> None:
@@ -315,9 +341,7 @@ class BlockLayout:
             if value is _MISSING:
                 if not f.has_default:
                     raise LayoutError(f"block '{self.name}' field '{prefix}{f.name}': no value given and no default")
-                value = f.default
-                if np.ndim(value) == 0 and not isinstance(f.type, Struct):  # a scalar default fills the field
-                    value = np.full(_flat_count(f.type), value)
+                value = self._default_value(f)
             self._write(buf, base + f.offset, f, f.type, value, prefix + f.name)
 
     def _write(self, buf: bytearray, offset: int, f: FieldInfo, t: Any, value: Any, path: str) -> None:
@@ -337,7 +361,16 @@ class BlockLayout:
         if not isinstance(leaf, Leaf):
             raise LayoutError(f"block '{self.name}' field '{path}': arrays of arrays are not supported")
         arr = _numbers(self.name, path, value, leaf, count)
-        shape, strides = leaf.shape, _leaf_strides(leaf, self.rules)
+        strides = _leaf_strides(leaf, self.rules)
+        dense = not leaf.columns or strides[1] == 4 * leaf.rows  # no padding inside an element
+        if dense and (count is None or f.stride == 4 * _flat_count(leaf)):
+            # One copy of the bytes (matrices column by column): the common vec4 / mat4 / vec4[] case.
+            if leaf.columns:
+                arr = arr.swapaxes(-1, -2)
+            data = arr.tobytes()
+            buf[offset:offset + len(data)] = data
+            return
+        shape = leaf.shape
         if count is not None:
             shape, strides = (count, *shape), (f.stride, *strides)
         np.ndarray(shape, leaf.dtype, buffer=buf, offset=offset, strides=strides)[...] = arr
@@ -363,28 +396,27 @@ def _leaf_strides(leaf: Leaf, rules: str) -> tuple[int, ...]:
 def _numbers(block: str, path: str, value: Any, leaf: Leaf, count: int | None) -> np.ndarray:
     want = leaf.shape if count is None else (count, *leaf.shape)
     try:
-        arr = np.asarray(value, dtype=np.float64 if leaf.kind == "f" else None)
-        if leaf.kind != "f":
-            arr = np.asarray(value)
+        arr = np.asarray(value)
     except (TypeError, ValueError):
         raise LayoutError(f"block '{block}' field '{path}': expected numbers for {leaf.name}, got {value!r}") from None
     if arr.dtype.kind not in "biuf":
         raise LayoutError(f"block '{block}' field '{path}': expected numbers for {leaf.name}, got {value!r}")
-    n = int(np.prod(want)) if want else 1
     if arr.shape != want:
+        n = 1
+        for d in want:
+            n *= d
         if arr.size != n:
             what = f"{count} × {leaf.name}" if count is not None else leaf.name
             raise LayoutError(f"block '{block}' field '{path}': expected {n} value(s) ({what}), got {arr.size} "
                               f"(shape {arr.shape})")
         arr = arr.reshape(want)  # flat: a matrix's n·n floats row-major, an array's elements one after another
     if leaf.kind == "f":
-        if not np.all(np.isfinite(arr)):
-            raise LayoutError(f"block '{block}' field '{path}': values must be finite, got {value!r}")
-        with np.errstate(over="ignore"):
-            converted = arr.astype(np.float32)
-        if not np.all(np.isfinite(converted)):
+        # One reduction catches NaN, infinities and values float32 cannot hold (NaN fails every comparison).
+        if arr.size and not float(np.abs(arr).max()) <= _FLOAT32_MAX:
+            if not np.isfinite(arr).all():
+                raise LayoutError(f"block '{block}' field '{path}': values must be finite, got {value!r}")
             raise LayoutError(f"block '{block}' field '{path}': values beyond float32's range, got {value!r}")
-        return converted
+        return arr.astype(np.float32)
     if arr.dtype.kind == "f" and not np.array_equal(arr, np.trunc(arr)):
         raise LayoutError(f"block '{block}' field '{path}': {leaf.name} holds integers, got {value!r}")
     info = np.iinfo(leaf.dtype)
