@@ -10,6 +10,8 @@ Configurations (``--configs``): ``serial`` (``--jobs 0``: one process, no isolat
 worker: isolation, no parallelism), ``n2`` (two workers, the front end's default), ``n4``, and ``n2-lp1``
 (two workers with ``LP_NUM_THREADS=1``: one software-rasteriser thread each).
 
+Wall-clock seconds depend on what else the machine runs; the CPU seconds (user + system of the grading processes,
+the software rasterisers' threads included) much less, so both are printed, with the load average before each run.
 Prints a table and, with ``--json FILE``, writes the figures.
 """
 
@@ -19,6 +21,7 @@ import argparse
 import json
 import os
 import re
+import resource
 import statistics
 import subprocess
 import sys
@@ -54,9 +57,13 @@ def run(config: str, chosen: list[str], durations: int) -> dict:
         env.update(ENVS.get(config, {}))
         cmd = [sys.executable, "-m", "gandalf_core.grading", *[f"tests/{s}" for s in chosen], "--json", str(out)]
         cmd += [*CONFIGS[config], "--durations=0", "--durations-min=0"]
+        load = os.getloadavg()[0]
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
         start = time.perf_counter()
         proc = subprocess.run(cmd, cwd=ROOT, env=env, capture_output=True, text=True)
         seconds = time.perf_counter() - start
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
         result = json.loads(out.read_text()) if out.exists() else {}
     per_test: dict[str, float] = defaultdict(float)
     for line in proc.stdout.splitlines():
@@ -66,6 +73,8 @@ def run(config: str, chosen: list[str], durations: int) -> dict:
     return {
         "config": config,
         "seconds": seconds,
+        "cpu_seconds": cpu,
+        "load_before": load,
         "exit": proc.returncode,
         "graded_tests": result.get("graded_tests", 0),
         "passed": result.get("graded_tests_passed", 0),
@@ -96,16 +105,22 @@ def main(argv: list[str] | None = None) -> int:
             runs.append(run(config, chosen, args.durations))
         best = sorted(runs, key=lambda r: r["seconds"])[len(runs) // 2]
         best["median_seconds"] = statistics.median(r["seconds"] for r in runs)
+        best["median_cpu_seconds"] = statistics.median(r["cpu_seconds"] for r in runs)
+        best["runs"] = [{"seconds": r["seconds"], "cpu_seconds": r["cpu_seconds"], "load_before": r["load_before"]}
+                        for r in runs]
         rows.append(best)
         print(
-            f"  {config:<7} {best['median_seconds']:7.1f} s  {best['passed']}/{best['graded_tests']} graded tests "
-            f"passed (score {best['score']:.0%}, exit {best['exit']})",
+            f"  {config:<7} {best['median_seconds']:7.1f} s  (CPU {best['median_cpu_seconds']:.1f} s)  "
+            f"{best['passed']}/{best['graded_tests']} graded tests passed (score {best['score']:.0%}, "
+            f"exit {best['exit']})",
             flush=True,
         )
-    print("\n| configuration | seconds (median) | graded tests | passed |")
-    print("|---|---|---|---|")
+    print("\n| configuration | seconds (median) | CPU seconds (median) | load before (1 min) | graded tests | passed |")
+    print("|---|---|---|---|---|---|")
     for r in rows:
-        print(f"| {r['config']} | {r['median_seconds']:.1f} | {r['graded_tests']} | {r['passed']} |")
+        loads = ", ".join(f"{x['load_before']:.1f}" for x in r["runs"])
+        print(f"| {r['config']} | {r['median_seconds']:.1f} | {r['median_cpu_seconds']:.1f} | {loads} "
+              f"| {r['graded_tests']} | {r['passed']} |")
     slow = rows[0]["slowest"]
     if slow:
         print(f"\nslowest tests ({rows[0]['config']}; setup + call + teardown):")
