@@ -12,7 +12,10 @@ frame (which must release them). Printed at cycles 0, 250, 500, 750 and 1000, pe
   ``rss_trimmed_mib`` the same after ``malloc_trim(0)`` (what the C allocator keeps free but mapped drops out).
 
 Flat means: the same counts at 250, 500, 750 and 1000 (cycle 0 is before the first cycle built the pipeline a
-mesh needs), and RSS growing by no more than allocator noise.
+mesh needs), and RSS no higher than in the control run: the same frames with one entity that stays, nothing created
+or destroyed (``"mode": "frames-only"``). On llvmpipe the frames alone take RSS from ~100 to 135-155 MiB over the
+first ~500 frames and then wander in that band (the driver threads' heaps; ``malloc_trim`` gives back up to ~17 MiB
+of it at times), with or without the cycles.
 
     python benchmarks/bench_lifetime.py                  # both backends, 1,000 cycles
     python benchmarks/bench_lifetime.py --backends webgpu --cycles 200 --every 50
@@ -23,6 +26,7 @@ from __future__ import annotations
 import argparse
 import gc
 import json
+import subprocess
 import sys
 import time
 from pathlib import Path
@@ -95,21 +99,33 @@ def texture(i: int) -> TextureData:
     return TextureData(np.tile(np.array([i % 255, 40, 200, 255], np.uint8), (4, 4, 1)), mipmaps=False)
 
 
-def run(backend: str, cycles: int, every: int) -> None:
+def run(backend: str, cycles: int, every: int, control: bool) -> None:
+    """``control``: the same frames with one entity that stays (nothing created or destroyed), to tell the memory
+    the frames themselves settle at (driver threads' heaps) from what the cycles would leave behind."""
     with make_app(backend) as app:
         scene = Scene("cycles")
         scene.create_entity(TransformComponent((0, 0, 3)), CameraComponent(60.0, 0.1, 10.0))
+        if control:
+            scene.assets.mesh("mesh", cube(1.0))
+            scene.assets.texture("tex", texture(1))
+            scene.assets.material("mat", MaterialData("unlit", ["tex"]))
+            scene.create_entity(TransformComponent(), MeshComponent("mesh"), MaterialComponent("mat"))
         app.add_scene(scene)
         app.step()
         start = time.perf_counter()
         for i in range(cycles + 1):
             if i % every == 0:
-                print(json.dumps({"bench": "lifetime", "backend": backend, "cycle": i,
+                print(json.dumps({"bench": "lifetime", "backend": backend,
+                                  "mode": "frames-only" if control else "cycles", "cycle": i,
                                   "engine_objects": app.renderer.live_objects(), **api_objects(backend),
                                   "rss_mib": round(rss_mib(), 2), "rss_trimmed_mib": round(rss_after_trim_mib(), 2),
                                   "s": round(time.perf_counter() - start, 2)}), flush=True)
             if i == cycles:
                 break
+            if control:
+                app.step()
+                app.step()
+                continue
             assets = scene.assets
             assets.mesh(f"mesh{i}", cube(1.0 + i * 1e-3))
             assets.texture(f"tex{i}", texture(i))
@@ -128,9 +144,17 @@ def main() -> None:
     parser.add_argument("--backends", default="opengl,webgpu")
     parser.add_argument("--cycles", type=int, default=1000)
     parser.add_argument("--every", type=int, default=250)
+    parser.add_argument("--no-control", action="store_true", help="skip the frames-only control run")
+    parser.add_argument("--one", nargs=2, metavar=("BACKEND", "MODE"), help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.one:  # one run in this (fresh) process
+        run(args.one[0], args.cycles, args.every, control=args.one[1] == "frames-only")
+        return
+    # Each run in a fresh interpreter: RSS starts from the same place, and one run's heaps do not hide another's.
     for backend in args.backends.split(","):
-        run(backend, args.cycles, args.every)
+        for mode in ("cycles",) + (() if args.no_control else ("frames-only",)):
+            subprocess.run([sys.executable, __file__, "--cycles", str(args.cycles), "--every", str(args.every),
+                            "--one", backend, mode], check=True)
 
 
 if __name__ == "__main__":
