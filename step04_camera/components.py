@@ -59,9 +59,9 @@ class LookAtComponent(Component):
 
 
 # --8<-- [start:usd]
-# Saved in USD files (a LookAtComponent is rebuilt as LookAtComponent(eye=..., target=..., up=...)).
-register_component(OrbitCameraComponent, fields=["target", "distance", "yaw", "pitch", "sensitivity",
-                                                 "zoom_factor", "min_pitch", "max_pitch", "min_distance",
-                                                 "max_distance"])
+# Saved in USD files (a LookAtComponent comes back as LookAtComponent(eye=, target=, up=)).
+register_component(OrbitCameraComponent, fields=["target", "distance", "yaw", "pitch",
+                                                 "sensitivity", "zoom_factor", "min_pitch",
+                                                 "max_pitch", "min_distance", "max_distance"])
 register_component(LookAtComponent, fields=["eye", "target", "up"])
 # --8<-- [end:usd]

@@ -193,8 +193,8 @@ class ParticleSystem(System):
 
 
 # --8<-- [start:usd]
-# In saved scenes (gandalf_core.usd): the markers are saved; the system is refused, naming why.
+# In saved scenes (gandalf_core.usd): the markers are saved; the system is refused, saying why.
 register_component(ParticleComponent, fields=["index"])
-register_system(ParticleSystem, unsaveable="the particles live in a GPU buffer that a compute kernel "
-                "steps (chosen by the variant file for its API); a file cannot hold it")
+register_system(ParticleSystem, unsaveable="the particles live in a GPU buffer that a compute "
+                "kernel steps (chosen by the variant file for its API); a file cannot hold it")
 # --8<-- [end:usd]
