@@ -48,8 +48,8 @@ def _default_layout(width: int, height: int) -> list[tuple[str, str | None, tupl
         ("content", None, (0.0, top + 0.5 * h), (left, 0.5 * h)),
         ("inspector", None, (left + mid, top), (right, 0.46 * h)),
         ("systems", None, (left + mid, top + 0.46 * h), (right, 0.24 * h)),
-        ("stats", None, (left + mid, top + 0.70 * h), (right, 0.15 * h)),
-        ("file", None, (left + mid, top + 0.85 * h), (right, 0.15 * h)),
+        ("stats", None, (left + mid, top + 0.70 * h), (right, 0.17 * h)),
+        ("file", None, (left + mid, top + 0.87 * h), (right, 0.13 * h)),
     ]
 
 

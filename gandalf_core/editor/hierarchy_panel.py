@@ -19,6 +19,11 @@ from .entities import display_name
 from .panel_base import PanelSystem
 
 ENTITY_PAYLOAD = "GANDALF_ENTITY"
+# Tree-node flags, combined once (an enum "|" per row per frame adds up).
+_ROW = int(imgui.TreeNodeFlags_.open_on_arrow | imgui.TreeNodeFlags_.default_open
+           | imgui.TreeNodeFlags_.span_avail_width)
+_LEAF = int(imgui.TreeNodeFlags_.leaf)
+_SELECTED = int(imgui.TreeNodeFlags_.selected)
 
 
 class HierarchyPanelSystem(PanelSystem):
@@ -30,6 +35,9 @@ class HierarchyPanelSystem(PanelSystem):
         super().__init__(editor)
         self._roots_key: tuple[int, int] | None = None
         self._roots: list[uuid.UUID] = []
+        self._flat = True  # no root has children: the rows are one list, drawn with a clipper
+        self._ids: dict[uuid.UUID, str] = {}  # "##<uuid>" per entity, made once
+        self._labels: dict[uuid.UUID, str] = {}  # readable names of unnamed entities
         self._rename: tuple[uuid.UUID, str] | None = None
         self._open_rename = False
 
@@ -39,7 +47,12 @@ class HierarchyPanelSystem(PanelSystem):
         if key != self._roots_key:
             self._roots = [e for e in scene.entities
                            if not is_editor_entity(scene, e) and scene.parent_of(e) is None]
+            self._flat = not any(scene.try_component(e, LinkComponent) is not None
+                                 and scene.get_component(e, LinkComponent).children for e in self._roots)
             self._roots_key = key
+            self._labels.clear()
+            if len(self._ids) > 4 * len(self._roots) + 1024:
+                self._ids.clear()
         return self._roots
 
     def draw(self, panel: EditorPanelComponent) -> None:
@@ -59,9 +72,18 @@ class HierarchyPanelSystem(PanelSystem):
         self.remember("hierarchy:delete")
         imgui.end_disabled()
         imgui.separator()
-        for entity in list(self.roots()):
-            if entity in self.scene:
-                self._node(entity)
+        roots = self.roots()
+        if self._flat:  # every row is a leaf of the same height: draw only the visible ones
+            clipper = imgui.ListClipper()
+            clipper.begin(len(roots))
+            while clipper.step():
+                for i in range(clipper.display_start, clipper.display_end):
+                    self._node(roots[i])
+            clipper.end()
+        else:
+            for entity in list(roots):
+                if entity in self.scene:
+                    self._node(entity)
         # The free space below the tree: drop a row here to make it a root, a mesh to place it.
         avail = imgui.get_content_region_avail()
         imgui.invisible_button("##hierarchy_free", imgui.ImVec2(max(avail.x, 1.0), max(avail.y, 8.0)))
@@ -74,15 +96,18 @@ class HierarchyPanelSystem(PanelSystem):
         link = scene.try_component(entity, LinkComponent)
         children = [c for c in link.children if c in scene] if link is not None else []
         info = scene.try_component(entity, InfoComponent)
-        label = info.name if info is not None and info.name else display_name(scene, entity)
-        flags = imgui.TreeNodeFlags_.open_on_arrow | imgui.TreeNodeFlags_.default_open
-        flags |= imgui.TreeNodeFlags_.span_avail_width
+        if info is not None and info.name:
+            label = info.name
+        else:
+            label = self._labels.get(entity) or self._labels.setdefault(entity, display_name(scene, entity))
+        flags = _ROW
         if not children:
-            flags |= imgui.TreeNodeFlags_.leaf
+            flags |= _LEAF
         if entity == self.editor.selected:
-            flags |= imgui.TreeNodeFlags_.selected
-        is_open = imgui.tree_node_ex(f"{label}##{entity}", flags)
-        self.remember(f"hierarchy/{entity}")
+            flags |= _SELECTED
+        ident = self._ids.get(entity) or self._ids.setdefault(entity, f"##{entity}")
+        is_open = imgui.tree_node_ex(label + ident, flags)
+        self.remember("hierarchy/" + ident[2:])
         if imgui.is_item_clicked() and not imgui.is_item_toggled_open():
             self.editor.selected = entity
         if imgui.begin_drag_drop_source():

@@ -16,7 +16,6 @@ import numpy as np
 from imgui_bundle import imgui, imguizmo
 
 from ..components import TransformComponent
-from ..math import invert_affine
 from .components import EditorPanelComponent
 from .panel_base import PanelSystem
 
@@ -140,7 +139,7 @@ class ViewportPanelSystem(PanelSystem):
         if chosen is None or chosen[0] == entity:
             return
         _cam, camera, cam_transform = chosen
-        view = invert_affine(np.array(cam_transform.world))
+        view = np.linalg.inv(cam_transform.world)  # one LAPACK call: this runs every frame
         projection = camera.projection_matrix("opengl", width / height)
         world = np.array(scene.get_component(entity, TransformComponent).world)
         _GZ.set_orthographic(camera.projection == "orthographic")

@@ -5,9 +5,10 @@ frame (at the target's size and aspect) into the target instead of the renderer'
 nothing is presented; the renderer's own targets are untouched and back in place after the ``with``. Build the
 frame data inside the ``with`` too, so that the camera's projection takes the target's aspect.
 
-The colour target is sRGB like the renderer's frame (same bytes). ``display_texture`` is what a GUI shows:
-a plain RGBA8 copy of those bytes (a moderngl texture, or an ``rgba8unorm`` texture view on WebGPU), refreshed
-after each frame drawn, so a GUI that treats bytes as colours shows the frame as it is.
+The colour target is sRGB like the renderer's frame (same bytes). ``display_texture`` is what a GUI shows: the
+target's bytes read as they are, so a GUI that treats bytes as colours shows the frame as it is. On OpenGL that
+is the target itself, sampled without sRGB decoding (EXT_texture_sRGB_decode; a copy where the extension is
+missing); on WebGPU a plain ``rgba8unorm`` copy, refreshed after each frame drawn (wgpu-py has no view formats).
 Nothing in the renderers changes: the target swaps their size and target attributes for the duration.
 """
 
@@ -23,6 +24,28 @@ _GL_FRAMEBUFFER_SRGB = 0x8DB9
 _GL_SWAPPED = ("width", "height", "_fbo", "_color", "_depth", "_target", "window", "overlays", "_pending_swap",
                "present_direct")
 _WGPU_SWAPPED = ("width", "height", "_color", "_depth", "color_view", "depth_view", "_surface", "overlays")
+
+
+_GL_TEXTURE_2D = 0x0DE1
+_GL_TEXTURE_BINDING_2D = 0x8069
+_GL_TEXTURE_SRGB_DECODE_EXT = 0x8A48
+_GL_SKIP_DECODE_EXT = 0x8A4A
+
+
+def _skip_srgb_decode(glo: int) -> None:
+    """Make sampling the sRGB texture ``glo`` return its stored bytes (EXT_texture_sRGB_decode)."""
+    import ctypes
+
+    from .opengl.raw_gl import _gl_function
+
+    get = _gl_function("glGetIntegerv", (ctypes.c_uint, ctypes.POINTER(ctypes.c_int)))
+    bind = _gl_function("glBindTexture", (ctypes.c_uint, ctypes.c_uint))
+    parameter = _gl_function("glTexParameteri", (ctypes.c_uint, ctypes.c_uint, ctypes.c_int))
+    previous = ctypes.c_int()
+    get(_GL_TEXTURE_BINDING_2D, ctypes.byref(previous))
+    bind(_GL_TEXTURE_2D, glo)
+    parameter(_GL_TEXTURE_2D, _GL_TEXTURE_SRGB_DECODE_EXT, _GL_SKIP_DECODE_EXT)
+    bind(_GL_TEXTURE_2D, previous.value)
 
 
 class OffscreenTarget:
@@ -71,8 +94,14 @@ class OffscreenTarget:
         finally:
             for name, value in keep.items():
                 setattr(r, name, value)
-        self.display_texture = r.ctx.texture(self.size, 4)
-        self._display_fbo = r.ctx.framebuffer([self.display_texture])
+        if "GL_EXT_texture_sRGB_decode" in r.ctx.extensions:
+            # Sampled without sRGB decoding, the target itself gives its bytes: no copy at all. Only a GUI samples
+            # this texture (the renderer draws into it), so the switch changes nothing else.
+            _skip_srgb_decode(self._own["_color"].glo)
+            self.display_texture = self._own["_color"]
+        else:
+            self.display_texture = r.ctx.texture(self.size, 4)
+            self._display_fbo = r.ctx.framebuffer([self.display_texture])
 
     # --- WebGPU -----------------------------------------------------------------------------------------------
     def _create_wgpu(self) -> None:
@@ -131,6 +160,8 @@ class OffscreenTarget:
                                             (*self.size, 1))
             r.device.queue.submit([encoder.finish()])
             return
+        if self._display_fbo is None:  # the target is its own display texture
+            return
         ctx = r.ctx
         ctx.disable_direct(_GL_FRAMEBUFFER_SRGB)
         ctx.copy_framebuffer(self._display_fbo, self._own["_fbo"])
@@ -156,8 +187,10 @@ class OffscreenTarget:
             return
         if self.renderer.backend == "opengl":
             self.renderer.make_current()
-            for obj in (self._display_fbo, self.display_texture, self._own["_fbo"], self._own["_color"],
-                        self._own["_depth"]):
+            if self._display_fbo is not None:
+                self._display_fbo.release()
+                self.display_texture.release()
+            for obj in (self._own["_fbo"], self._own["_color"], self._own["_depth"]):
                 obj.release()
         else:
             for texture in (self._own["_color"], self._own["_depth"], self._display):
