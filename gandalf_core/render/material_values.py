@@ -1,8 +1,9 @@
 """A material's uniform values, as both backends keep them: validated, colour decoded to linear light.
 
 Each backend's material class derives from :class:`MaterialValues` and only says how the values reach
-its shader (:meth:`MaterialValues._upload`): OpenGL sets program uniforms per draw, WebGPU writes a
-uniform buffer laid out from the shader's WGSL struct.
+its shader (:meth:`MaterialValues._upload`): both pack them into the shader's ``Material`` block with the one
+layout rule (:mod:`gandalf_core.render.material_block`) and write the same bytes to a uniform buffer, which OpenGL
+binds to binding point 2 and WebGPU to ``@group(1) @binding(0)``.
 """
 
 from __future__ import annotations
