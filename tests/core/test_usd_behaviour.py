@@ -1,7 +1,8 @@
 """Saving keeps behaviour: every step's scene comes back with its components and systems, and animates the same.
 
-For every step's scene (steps 01-06 ``build_scene`` with the solutions, each step 05 concept, and step 07's
-techniques whose scenes a file can hold) the test saves, loads and saves again, then checks:
+For every step's scene (steps 01-06 ``build_scene`` with the solutions, each concept of steps 05 and 06 but
+step 05's several-scenes app, and step 07's techniques whose scenes a file can hold) the test saves, loads and
+saves again, then checks:
 
 * the first save warns about nothing left out (every component and system of the scene is registered);
 * the second file is the first byte for byte apart from ONE stated field: the texture folder's name
@@ -61,15 +62,20 @@ def _step(step: str) -> Callable[[], Scene]:
     return lambda: importlib.import_module(f"{step}.scene").build_scene(load_impl(step))
 
 
-def _step05(concept: str) -> Callable[[], Scene]:
+def _concept(step: str, concept: str) -> Callable[[], Scene]:
     def build() -> Scene:
         try:
-            module = importlib.import_module(f"step05_scenegraph.{concept}.scene")
+            module = importlib.import_module(f"{step}.{concept}.scene")
         except ImportError as exc:
-            pytest.skip(f"step05_scenegraph.{concept} cannot be imported while step 05 is split (issue 10): {exc}")
-        return module.build_scene(load_impl("step05_scenegraph"))
+            pytest.skip(f"{step}.{concept} cannot be imported (is the step being split into concepts?): {exc}")
+        return module.build_scene(load_impl(step))
 
     return build
+
+
+def _concepts(step: str) -> tuple[str, ...]:
+    """A step's concept sub-packages (steps 05 and 06 have them), except the one that holds several scenes."""
+    return tuple(c for c in getattr(importlib.import_module(step), "CONCEPTS", ()) if c != "several_scenes")
 
 
 def _step07(technique: str, build: Callable[[ModuleType], Scene]) -> Callable[[], Scene]:
@@ -124,7 +130,8 @@ def _explode_scene(module) -> Scene:
 
 SAVABLE: dict[str, Callable[[], Scene]] = {
     **{s: _step(s) for s in STEPS},
-    **{f"step05_{c}": _step05(c) for c in ("hierarchy", "custom_systems", "integrators", "house")},
+    **{f"step05_{c}": _concept("step05_scenegraph", c) for c in _concepts("step05_scenegraph")},
+    **{f"step06_{c}": _concept("step06_lighting", c) for c in _concepts("step06_lighting")},
     "step07_pbr_model": _step07("pbr_model", lambda m: m.build_scene(ibl=_small_ibl())),
     "step07_parallax": _step07("parallax", lambda m: m.build_scene()),
     "step07_filter": _step07("filter", _filter_scene),

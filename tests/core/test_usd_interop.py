@@ -69,16 +69,21 @@ def saved_steps(tmp_path_factory) -> dict[str, tuple[Scene, Path]]:
     for name, make in SCENES.items():
         try:
             scene = build(name) if name in SAVABLE else make()
-        except pytest.skip.Exception:
-            continue  # step 05 while it is being split: test_usd_behaviour names why
-        out[name] = (scene, quiet_save(scene, folder / f"{name}.usda"))
+            out[name] = (scene, quiet_save(scene, folder / f"{name}.usda"))
+        except pytest.skip.Exception as skip:  # a step being split: test_usd_behaviour names why
+            out[name] = skip
+        except Exception as exc:  # noqa: BLE001 - one scene's failure fails its own tests only
+            out[name] = exc
     return out
 
 
 def saved_step(saved_steps: dict, name: str) -> tuple[Scene, Path]:
-    if name not in saved_steps:
-        pytest.skip(f"{name} is not savable yet (see test_usd_behaviour's skip reason)")
-    return saved_steps[name]
+    entry = saved_steps[name]
+    if isinstance(entry, pytest.skip.Exception):
+        pytest.skip(f"{name}: {entry}")
+    if isinstance(entry, Exception):
+        pytest.fail(f"{name}: building or saving the scene failed: {type(entry).__name__}: {entry}")
+    return entry
 
 
 @pytest.mark.parametrize("name", list(SCENES))
