@@ -194,9 +194,10 @@ class EditorActions:
                                    lambda: scene.remove_component(entity, component_type),
                                    lambda: scene.add_component(entity, component)))
 
+    # --8<-- [start:set_field]
     def set_field(self, entity: uuid.UUID, component_type: type[Component], field: str, value: Any,
                   merge: bool = False, label: str | None = None) -> None:
-        """Set ``component.field = value`` (the component checks the value; its error names the field)."""
+        """Set ``component.field = value`` (checked by the component, whose error names the field)."""
         scene = self.scene
         self._entity(entity)
         component = scene.get_component(entity, component_type)
@@ -212,8 +213,11 @@ class EditorActions:
         def put(v: Any) -> None:
             setattr(scene.get_component(entity, component_type), field, _copy(v))
 
-        self.commands.push(Command(label or f"{component_type.__name__}.{field}", lambda: put(after),
-                                   lambda: put(before), merge_key=(entity, component_type, field)), merge=merge)
+        label = label or f"{component_type.__name__}.{field}"
+        key = (entity, component_type, field)
+        command = Command(label, lambda: put(after), lambda: put(before), merge_key=key)
+        self.commands.push(command, merge=merge)
+    # --8<-- [end:set_field]
 
     def set_transform(self, entity: uuid.UUID, translation: Sequence[float] | None = None,
                       quaternion: Sequence[float] | None = None, scale: Sequence[float] | None = None,

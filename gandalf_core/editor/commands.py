@@ -9,24 +9,22 @@ drag is one undo step.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 
 @dataclass
 class Command:
-    """One edit: ``apply(value)`` sets the edited thing to a value; ``before`` and ``after`` are the two values.
+    """One edit: ``do`` applies it (again, on redo), ``undo`` takes it back; ``label`` names it in the Edit menu.
 
-    Most edits are of this form (a field, a name, a colour). Edits that are not (create, destroy) pass their own
-    ``do``/``undo`` callables instead.
+    Commands that set one thing (a field, a transform, a colour) carry a ``merge_key`` naming it, so that the
+    frames of one drag fold into one command.
     """
 
     label: str
     do: Callable[[], Any]
     undo: Callable[[], Any]
     merge_key: Any = None
-    #: For merged drags: replaces ``do`` with the newest command's.
-    extra: dict[str, Any] = field(default_factory=dict)
 
 
 class CommandStack:
@@ -40,8 +38,10 @@ class CommandStack:
         #: Bumped on every change: panels that show the stack compare it.
         self.version = 0
 
+    # --8<-- [start:push]
     def push(self, command: Command, merge: bool = False) -> Command:
-        """Run ``command`` and record it; with ``merge``, fold it into the last one if it edits the same thing."""
+        """Run ``command`` and record it; with ``merge``, fold it into the last one if it edits the same
+        thing."""
         command.do()
         top = self.done[-1] if self.done else None
         if merge and not self._sealed and top is not None and command.merge_key is not None \
@@ -54,6 +54,7 @@ class CommandStack:
         self.undone.clear()
         self.version += 1
         return command
+    # --8<-- [end:push]
 
     def seal(self) -> None:
         """End the current drag: the next command starts a new undo step."""

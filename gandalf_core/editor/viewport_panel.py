@@ -52,8 +52,10 @@ class ViewportPanelSystem(PanelSystem):
         self.mode = "local"
 
     # --- the frame: render into the target ---------------------------------------------------------------
+    # --8<-- [start:viewport_render]
     def on_update_system(self, ts: float) -> None:
-        if self.wanted is None or not any(p.kind == "viewport" and p.visible for (p,) in self.components):
+        shown = any(p.kind == "viewport" and p.visible for (p,) in self.components)
+        if self.wanted is None or not shown:
             return
         from ..render import RenderSystem
         from ..render.offscreen import OffscreenTarget
@@ -69,6 +71,7 @@ class ViewportPanelSystem(PanelSystem):
             self._forget_texture()
         with self.target.drawing():
             renderer.render(renderers[0].frame_data(ts), scene.assets)
+    # --8<-- [end:viewport_render]
 
     def _forget_texture(self) -> None:
         if self._texture_key is not None:
@@ -142,8 +145,9 @@ class ViewportPanelSystem(PanelSystem):
         view = np.linalg.inv(cam_transform.world)  # one LAPACK call: this runs every frame
         projection = camera.projection_matrix("opengl", width / height)
         world = np.array(scene.get_component(entity, TransformComponent).world)
+        # --8<-- [start:gizmo]
         _GZ.set_orthographic(camera.projection == "orthographic")
-        _GZ.set_gizmo_size_clip_space(0.2)  # a viewport panel is small: a larger gizmo is easier to grab
+        _GZ.set_gizmo_size_clip_space(0.2)  # a panel is small: a larger gizmo is easier to grab
         _GZ.set_drawlist()
         _GZ.set_rect(x, y, width, height)
         matrix = _matrix16(world)
@@ -153,3 +157,4 @@ class ViewportPanelSystem(PanelSystem):
         if moved:
             new_world = np.array(matrix.values, dtype=np.float64).reshape(4, 4).T
             self.act(editor.set_world_matrix, entity, new_world, merge=True)
+        # --8<-- [end:gizmo]
