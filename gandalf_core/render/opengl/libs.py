@@ -464,6 +464,11 @@ class GLMaterial(MaterialValues):
             if uniform_name not in self.shader.uniforms:
                 continue
             uniform = program[uniform_name]
+            expected = uniform.dimension * uniform.array_length
+            if value.size != expected:
+                raise ResourceError(f"material '{self.name}'", f"params['{key}']",
+                                    f"shader '{self.shader.name}' ({self.shader.source}) declares {uniform_name} with "
+                                    f"{expected} value(s), got {value.size}")
             if uniform.gl_type in _GL_MATRIX_SIZES:
                 n = _GL_MATRIX_SIZES[uniform.gl_type]
                 value = value.reshape(n, n).T
