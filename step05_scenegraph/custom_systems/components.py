@@ -11,6 +11,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from gandalf_core import Component
+from gandalf_core.usd import register_component
 
 
 def vector3(owner: str, field: str, value: Sequence[float]) -> np.ndarray:
@@ -47,3 +48,7 @@ class GravityComponent(Component):
         self.position = np.zeros(3)
         self.previous = np.zeros(3)
 # --8<-- [end:component]
+
+# Saved in USD scenes by name (the loader only builds classes registered like this).
+register_component(GravityComponent,
+                   fields=["gravity", "velocity", "floor", "restitution", "position", "previous"])

@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from gandalf_core import System, TransformComponent
+from gandalf_core.usd import register_system
 
 from .components import GravityComponent
 from .fixed_step import FixedStep
@@ -65,3 +66,6 @@ class GravitySystem(FixedStepSystem):
             body.position[1] = body.floor + (body.floor - body.position[1]) * body.restitution
             body.velocity[1] = -body.velocity[1] * body.restitution
 # --8<-- [end:gravity]
+
+# Saved in USD scenes by name (the loader only builds classes registered like this).
+register_system(GravitySystem)

@@ -3,6 +3,8 @@
 Grade them with ``pytest --student tests/step05_scenegraph``.
 """
 
+from gandalf_core.usd import register_system
+
 from .house import (
     ORANGE,
     HouseRotationSystem,
@@ -23,3 +25,6 @@ __all__ = [
     "rk4_step",
     "semi_implicit_euler_step",
 ]
+
+# Saved in USD scenes by name (the loader only builds classes registered like this).
+register_system(HouseRotationSystem)

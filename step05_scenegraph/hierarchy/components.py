@@ -5,6 +5,7 @@ from __future__ import annotations
 import uuid
 
 from gandalf_core import Component
+from gandalf_core.usd import register_component
 
 
 class ReparentOnKeyComponent(Component):
@@ -13,3 +14,6 @@ class ReparentOnKeyComponent(Component):
     def __init__(self, other_parent: uuid.UUID | None, key: str = "M") -> None:
         self.other_parent = other_parent
         self.key = key.upper()
+
+# Saved in USD scenes by name (the loader only builds classes registered like this).
+register_component(ReparentOnKeyComponent, fields=["other_parent", "key"])  # other_parent: an entity

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from gandalf_core import System
 from gandalf_core.systems.transform_system import set_parent_keep_world
+from gandalf_core.usd import register_system
 
 from .components import ReparentOnKeyComponent
 
@@ -24,3 +25,6 @@ class ReparentSystem(System):
             set_parent_keep_world(self.scene, entity, swap.other_parent)
             # --8<-- [end:reparent]
             swap.other_parent = current
+
+# Saved in USD scenes by name (the loader only builds classes registered like this).
+register_system(ReparentSystem)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from gandalf_core import Component
+from gandalf_core.usd import register_component
 
 
 class HouseRotationComponent(Component):
@@ -13,3 +14,6 @@ class HouseRotationComponent(Component):
         self.angle = float(angle)  # degrees turned so far
         self.paused = bool(paused)
         self.pause_key = pause_key.upper()
+
+# Saved in USD scenes by name (the loader only builds classes registered like this).
+register_component(HouseRotationComponent, fields=["speed", "angle", "paused", "pause_key"])

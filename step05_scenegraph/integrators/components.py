@@ -7,6 +7,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from gandalf_core import Component
+from gandalf_core.usd import register_component
 
 from ..custom_systems.components import vector3
 
@@ -49,3 +50,7 @@ class SpringComponent(Component):
         self.position = np.zeros(3)
         self.previous = np.zeros(3)
         self.start = np.zeros(3)
+
+# Saved in USD scenes by name (the loader only builds classes registered like this).
+register_component(SpringComponent, fields=["rest", "stiffness", "mass", "damping", "integrator", "velocity",
+                                            "reset_distance", "resets", "position", "previous", "start"])

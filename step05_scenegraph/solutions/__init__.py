@@ -1,5 +1,7 @@
 """Step 05 reference solutions (same API as ``exercises``)."""
 
+from gandalf_core.usd import register_system
+
 from .house import (
     ORANGE,
     HouseRotationSystem,
@@ -20,3 +22,6 @@ __all__ = [
     "rk4_step",
     "semi_implicit_euler_step",
 ]
+
+# Saved in USD scenes by name (the loader only builds classes registered like this).
+register_system(HouseRotationSystem)

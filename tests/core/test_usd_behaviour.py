@@ -16,8 +16,8 @@ saves again, then checks:
 
 Step 07's showcase (compute-driven particles), explode (a per-API geometry route), terrain (a per-API
 tessellation backend) and path tracer (a compute accumulation) cannot be saved: saving raises an error naming
-the system and why, and writes nothing. Step 05 is skipped, naming the classes, while its concept modules do not
-register their components and systems yet (issue 10 splits that step).
+the system and why, and writes nothing. A scene with a component or system class that is not registered for
+saving fails, naming the classes.
 """
 
 from __future__ import annotations
@@ -165,8 +165,7 @@ def unregistered(scene: Scene) -> list[str]:
 def build(name: str) -> Scene:
     scene = SAVABLE[name]()
     missing = unregistered(scene)
-    if name.startswith("step05_") and missing:
-        pytest.skip(f"step 05 is being split (issue 10); it does not register yet: {', '.join(missing)}")
+    assert not missing, f"{name}: these classes are not registered for saving: {', '.join(missing)}"
     return scene
 
 
