@@ -452,8 +452,8 @@ class GLMaterial(MaterialValues):
             except LayoutError as exc:
                 raise ResourceError(f"material '{self.name}'", "params",
                                     f"shader '{self.shader.name}' ({self.shader.source}): {exc}") from None
+            make_current(self.shader.program.ctx)  # whichever Application's context was current
             if self.block_buffer is None:
-                make_current(self.shader.program.ctx)
                 self.block_buffer = self.shader.program.ctx.buffer(self.block_bytes)
             else:
                 self.block_buffer.write(self.block_bytes)
