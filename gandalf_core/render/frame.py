@@ -101,9 +101,15 @@ def pack_frame(
     draws at the far one. ``clip_to_direction`` maps a clip-space point on the far plane to a world
     direction (the inverse of projection × the view's rotation).
     """
+    block = FRAME_LAYOUT.new()
+    field = _frame_fields(block)
+    field["view"][...] = view
+    field["projection"][...] = projection
+    field["camera_position"][:3] = np.asarray(camera_position, dtype=np.float64)[:3]
+    field["camera_position"][3] = 1.0
     wraps, wrapped = divmod(float(time), TIME_WRAP)
-    values = {"view": view, "projection": projection, "camera_position": (*np.asarray(camera_position)[:3], 1.0),
-              "time": (wrapped, dt, wraps, 0.0), "depth": (*depth_ends, 0.0, 0.0)}
+    field["time"][:3] = (wrapped, dt, wraps)
+    field["depth"][:2] = depth_ends
     rotation_only = np.eye(4)
     rotation_only[:3, :3] = view[:3, :3]
     if projection[3, 3] != 0.0 and projection[3, 2] == 0.0:
@@ -115,14 +121,18 @@ def pack_frame(
         clip_to_direction = np.linalg.inv(projection @ rotation_only)
     except np.linalg.LinAlgError:
         clip_to_direction = np.eye(4)
-    values["clip_to_direction"] = clip_to_direction
-    high = low = np.zeros(3)
+    field["clip_to_direction"][...] = clip_to_direction
     if origin is not None:
         origin = np.asarray(origin, dtype=np.float64)
-        high = origin.astype(np.float32).astype(np.float64)
-        low = origin - high
-    values["origin_high"], values["origin_low"] = (*high, 0.0), (*low, 0.0)
-    return FRAME_LAYOUT.pack(values)
+        high = origin.astype(np.float32)
+        field["origin_high"][:3] = high
+        field["origin_low"][:3] = origin - high.astype(np.float64)
+    return block.tobytes()
+
+
+def _frame_fields(block: np.ndarray) -> dict[str, np.ndarray]:
+    """Typed views of every field of a frame block (FRAME_LAYOUT's offsets), to fill by name."""
+    return {name: FRAME_LAYOUT.view(block, name) for name in FRAME_LAYOUT.names()}
 
 
 def instance_capacity(nbytes: int) -> int:

@@ -164,6 +164,7 @@ class BlockLayout:
             self.align, self.size, self.fields = self._lay_struct(name, fields, rules, name)
         self._by_name = {f.name: f for f in self.fields}
         self._pack_cache: bytes | None = None
+        self._views: dict[str, tuple[tuple[int, ...], np.dtype, int, tuple[int, ...]]] = {}
 
     # --- laying out -----------------------------------------------------------------------------
     def _resolve(self, t: Any, path: str) -> Any:
@@ -297,28 +298,99 @@ class BlockLayout:
     # --- packing --------------------------------------------------------------------------------
     def pack(self, values: Mapping[str, Any]) -> bytes:
         """The block's bytes, each field from ``values`` by name (a field with a default may be left out)."""
-        if self._pack_cache is None:  # the defaults, written once (fields without one stay zero until given)
-            template = bytearray(self.size)
-            defaults = {f.name: self._default_value(f) for f in self.fields if f.has_default}
-            for f in self.fields:
-                if f.name in defaults:
-                    self._write(template, f.offset, f, f.type, defaults[f.name], f.name)
-            self._pack_cache = bytes(template)
+        if self._pack_cache is None:
+            self._prepare()
         if not isinstance(values, Mapping):
             raise LayoutError(f"block '{self.name}': expected a dict of fields, got {type(values).__name__}")
-        buf = bytearray(self._pack_cache)
-        by_name = self._by_name
-        for key, value in values.items():
-            f = by_name.get(key)
-            if f is None:
-                raise LayoutError(f"block '{self.name}' has no field '{key}' "
-                                  f"(fields: {', '.join(by_name)})")
-            self._write(buf, f.offset, f, f.type, value, key)
+        out = self._template.copy()  # float32 words; integer fields keep their bits
+        buf = memoryview(out).cast("B")
+        by_name, fast = self._by_name, self._fast
+        written: list[str] = []
+        with np.errstate(over="ignore", invalid="ignore"):  # float32 overflow is caught below, naming the field
+            for key, value in values.items():
+                plan = fast.get(key)
+                if plan is not None:
+                    start, stop, shape = plan
+                    try:
+                        arr = np.asarray(value, dtype=np.float64)
+                    except (TypeError, ValueError):
+                        arr = None
+                    if arr is not None and arr.size == stop - start:
+                        if shape is not None:  # matrices: maths (row, column) in, column by column out
+                            arr = arr.reshape(shape).swapaxes(-1, -2)
+                        out[start:stop] = arr.ravel()
+                        written.append(key)
+                        continue
+                f = by_name.get(key)
+                if f is None:
+                    raise LayoutError(f"block '{self.name}' has no field '{key}' (fields: {', '.join(by_name)})")
+                self._write(buf, f.offset, f, f.type, value, key)
+        if written and not np.isfinite(out[self._float_words]).all():
+            for key in written:  # find the field, for the message
+                f = by_name[key]
+                leaf = f.type.elem if isinstance(f.type, Array) else f.type
+                _numbers(self.name, key, values[key], leaf, f.type.count if isinstance(f.type, Array) else None)
         if len(values) < len(by_name):
             for f in self.fields:
                 if f.name not in values and not f.has_default:
                     raise LayoutError(f"block '{self.name}' field '{f.name}': no value given and no default")
-        return bytes(buf)
+        return out.tobytes()
+
+    def new(self) -> np.ndarray:
+        """A fresh block (bytes as a ``uint8`` array) holding the defaults, to fill through :meth:`view`."""
+        if self._pack_cache is None:
+            self._prepare()
+        return np.frombuffer(self._pack_cache, dtype=np.uint8).copy()
+
+    def view(self, block: np.ndarray, path: str) -> np.ndarray:
+        """A typed numpy view of field ``path`` inside ``block`` (from :meth:`new`), in the shape :meth:`pack` takes:
+        writing ``view[...] = values`` fills it with the layout's offsets and strides (matrices in maths
+        convention, written column by column). The engine's per-frame blocks are filled this way, with no checks
+        (their values come from validated components); :meth:`pack` checks each value."""
+        plan = self._views.get(path)
+        if plan is None:
+            f = self.field(path)
+            t = f.type
+            leaf = t.elem if isinstance(t, Array) else t
+            if not isinstance(leaf, Leaf):
+                raise LayoutError(f"block '{self.name}' field '{path}': view() takes a number, vector, matrix or "
+                                  "array of them")
+            shape, strides = leaf.shape, _leaf_strides(leaf, self.rules)
+            if isinstance(t, Array):
+                shape, strides = (t.count, *shape), (f.stride, *strides)
+            plan = self._views[path] = (shape, leaf.dtype, f.offset, strides)
+        shape, dtype, offset, strides = plan
+        return np.ndarray(shape, dtype, buffer=block, offset=offset, strides=strides)
+
+    def _prepare(self) -> None:
+        """The defaults, written once (fields without one stay zero until given), and the fields that can be
+        written straight into the block's float32 words: float leaves and arrays with no padding inside."""
+        template = bytearray(_round_up(4, self.size))
+        for f in self.fields:
+            if f.has_default:
+                self._write(template, f.offset, f, f.type, self._default_value(f), f.name)
+        self._pack_cache = bytes(template)
+        self._template = np.frombuffer(self._pack_cache, dtype=np.float32).copy()
+        self._fast: dict[str, tuple[int, int, tuple[int, ...] | None]] = {}
+        float_words = np.zeros(len(self._template), dtype=bool)
+        for f in self.fields:
+            t = f.type
+            leaf = t.elem if isinstance(t, Array) else t
+            if not isinstance(leaf, Leaf) or leaf.kind != "f":
+                continue
+            strides = _leaf_strides(leaf, self.rules)
+            if leaf.columns and strides[1] != 4 * leaf.rows:
+                continue  # mat3: padded columns
+            if isinstance(t, Array) and f.stride != 4 * _flat_count(leaf):
+                continue  # padded elements (vec3[], float[] in std140)
+            start = f.offset // 4
+            stop = start + _flat_count(t)
+            shape = None
+            if leaf.columns:
+                shape = leaf.shape if not isinstance(t, Array) else (t.count, *leaf.shape)
+            self._fast[f.name] = (start, stop, shape)
+            float_words[start:stop] = True
+        self._float_words = float_words
 
     @staticmethod
     def _default_value(f: FieldInfo) -> Any:

@@ -70,9 +70,10 @@ def relative_lights(block: bytes, origin: np.ndarray) -> bytes:
 def pack_lights(components: list[tuple[Any, Any]], origin: np.ndarray | None = None) -> bytes:
     """The lights block for (LightComponent, TransformComponent) pairs (world matrices already computed); point
     lights relative to ``origin`` (subtracted in float64)."""
-    ambient = np.zeros(4)
-    positions = np.zeros((MAX_LIGHTS, 4))
-    colors = np.zeros((MAX_LIGHTS, 4))
+    block = LIGHTS_LAYOUT.new()  # filled by field name through typed views of the block
+    ambient = LIGHTS_LAYOUT.view(block, "ambient")
+    positions = LIGHTS_LAYOUT.view(block, "position")
+    colors = LIGHTS_LAYOUT.view(block, "color")
     n = dropped = 0
     for light, transform in components:
         linear = srgb_rgba_to_linear((*light.color, 1.0))[:3] * light.intensity
@@ -96,8 +97,8 @@ def pack_lights(components: list[tuple[Any, Any]], origin: np.ndarray | None = N
     if dropped:
         warnings.warn(f"{n + dropped} point and directional lights; only the first {MAX_LIGHTS} are used",
                       stacklevel=2)
-    block = LIGHTS_LAYOUT.pack({"count": (n, 0, 0, 0), "ambient": ambient, "position": positions, "color": colors})
-    return block[:LIGHTS_BYTES]
+    LIGHTS_LAYOUT.view(block, "count")[0] = n
+    return block[:LIGHTS_BYTES].tobytes()
 
 
 # --8<-- [start:pack_shadow]

@@ -219,3 +219,17 @@ def test_pack_frame_and_lights_put_values_at_the_declared_offsets():
     assert float(high) + float(low) == pytest.approx(1e7 + 0.3, abs=1e-6)
     empty = pack_lights([]) + pack_shadow([])
     assert empty == bytes(LIGHTS_LAYOUT.size)
+
+
+def test_views_fill_a_block_by_name_with_the_same_bytes_as_pack():
+    layout = BlockLayout("B", [("n", "i32", 0), ("m", "mat4"), ("arr", ("vec3", 2)), ("f", "float", 2.5)])
+    m = np.arange(16.0).reshape(4, 4)
+    arr = np.array([[1.0, 2, 3], [4, 5, 6]])
+    block = layout.new()
+    layout.view(block, "m")[...] = m
+    layout.view(block, "arr")[...] = arr
+    layout.view(block, "n")[...] = 7
+    assert block.tobytes() == layout.pack({"n": 7, "m": m, "arr": arr})
+    assert np.frombuffer(block.tobytes(), np.float32)[layout.offset("f") // 4] == 2.5  # the default
+    with pytest.raises(LayoutError, match=r"block 'B' has no field 'x'"):
+        layout.view(block, "x")
