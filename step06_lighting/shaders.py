@@ -2,6 +2,8 @@
 
 Every lit shader includes ``shading.glsl``/``shading.wgsl`` (Blinn-Phong, reflect, refract) from the folder of
 the implementation package, so ``--student`` renders with the exercises and the default with the solutions.
+Each concept builds the shaders its scene uses (:func:`shader_table`); the tests and studies build them all
+(:func:`register_shaders`).
 """
 
 from __future__ import annotations
@@ -24,12 +26,20 @@ SHADERS = {
 }
 
 
+def shader_table(names: tuple[str, ...]) -> dict[str, tuple[str, str]]:
+    """The part of :data:`SHADERS` a concept's scene uses (``names``: its materials' shaders)."""
+    unknown = [name for name in names if name not in SHADERS]
+    if unknown:
+        raise ValueError(f"step06_lighting has no shader {unknown[0]!r} (known: {', '.join(SHADERS)})")
+    return {name: SHADERS[name] for name in names}
+
+
 def impl_shader_dir(impl: ModuleType) -> Path:
     """The folder holding ``impl``'s ``shading.glsl`` and ``shading.wgsl``."""
     return Path(impl.__file__).resolve().parent
 
 
-
 def register_shaders(app: Any, impl: ModuleType) -> None:
-    """Build the step's shaders in ``app``'s API (GLSL programs or WGSL modules), including ``impl``'s ``shading``."""
+    """Build every shader of the step in ``app``'s API (GLSL programs or WGSL modules), including ``impl``'s
+    ``shading``."""
     build_shaders(app, SHADERS, SHADER_DIR, [impl_shader_dir(impl)])

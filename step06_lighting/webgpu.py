@@ -1,19 +1,24 @@
-"""Step 06, WebGPU variant: ``python -m step06_lighting.webgpu [--student]``.
+"""Step 06, WebGPU: ``python -m step06_lighting.webgpu [--concept NAME] [--student] [--headless] ...``.
 
-WGSL: the lights arrive in ``lights`` at @group(0) @binding(1) (``frame.wgsl``), the cube map as a
-``texture_cube<f32>`` plus its sampler in @group(1); the shading functions come from ``shading.wgsl`` of
-``exercises/`` or ``solutions/``.
+Each concept also runs on its own: ``python -m step06_lighting.lights.webgpu``. ``create_app`` builds the step's
+whole scene (``scene.py``: the three concepts in one), which the tests compare across the APIs.
 """
 
 from __future__ import annotations
 
-from gandalf_core.app.cli import run_variant, variant
+from gandalf_core.app.cli import launch_part, variant
 
+from . import CONCEPTS, DEFAULT_CONCEPT
 from .scene import build_scene
-from .shaders import SHADERS, register_shaders  # noqa: F401 (the studies call register_shaders)
+from .shaders import SHADERS
 
 create_app = variant("webgpu", __package__, build_scene, SHADERS, include_impl=True)
 
 
+def main(argv: list[str] | None = None) -> int:
+    """Run ``--concept``'s WebGPU variant (default: the lights) with the other options."""
+    return launch_part(__package__, "webgpu", CONCEPTS, "concept", argv, default=DEFAULT_CONCEPT)
+
+
 if __name__ == "__main__":
-    raise SystemExit(run_variant(create_app, description=__doc__))
+    raise SystemExit(main())

@@ -8,7 +8,6 @@ shades the hit point with a numpy twin of the step's shaders (``lighting.glsl`` 
 from __future__ import annotations
 
 import functools
-import importlib
 from pathlib import Path
 from types import ModuleType
 
@@ -18,6 +17,7 @@ from gandalf_core import Application, Scene, TransformComponent, testing
 from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, MeshData, linear_to_srgb, srgb_to_linear, uv_sphere
+from step06_lighting.shaders import register_shaders
 
 REFERENCES = Path(__file__).resolve().parent / "references"
 SIZE = (112, 84)
@@ -28,7 +28,7 @@ FOV = 45.0
 def make_app(backend: str, impl: ModuleType, size: tuple[int, int] = SIZE) -> Application:
     """A headless app of ``backend`` with the step's shaders built from ``impl``'s shading include."""
     app = Application(backend, *size, headless=True, fixed_dt=1 / 60)
-    importlib.import_module(f"step06_lighting.{backend}").register_shaders(app, impl)
+    register_shaders(app, impl)
     return app
 
 
@@ -138,3 +138,18 @@ def pixel_errors(image: np.ndarray, expected: np.ndarray, mask: np.ndarray) -> t
     """(mean, 99th percentile) absolute channel error in 8-bit steps over the pixels of ``mask``."""
     diff = np.abs(image[..., :3].astype(np.float64) - expected)[mask]
     return float(diff.mean()), float(np.percentile(diff, 99))
+
+
+# --- the concepts' pictures ---------------------------------------------------------------------------
+CONCEPT_SIZE = {"width": 160, "height": 120}
+
+
+@functools.cache
+def concept_picture(part: str, backend: str) -> np.ndarray:
+    """The tour's picture of ``part`` (``step06_lighting.<concept>``, or the step's whole scene) at 160×120."""
+    import importlib
+
+    from gandalf_core.testing import render_frames
+
+    frames = getattr(importlib.import_module(f"{part}.scene"), "TOUR_FRAMES", 30)
+    return render_frames(importlib.import_module(f"{part}.{backend}").create_app, frames, **CONCEPT_SIZE)

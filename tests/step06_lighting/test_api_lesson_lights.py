@@ -1,4 +1,4 @@
-"""The API lesson of step 06 (``lights_gl.py`` / ``lights_wgpu.py``): a uniform block of lights.
+"""The API lesson of step 06 (``lights/lights_gl.py`` / ``lights/lights_wgpu.py``): a uniform block of lights.
 
 Tolerance: in each picture, every pixel away from the silhouette (|r² − 1| > 0.03) is within 2 steps of a
 numpy Lambert reference (ambient 0.05 + the first ``COUNT`` lights only, clamped to 1, on a black background);
@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from step06_lighting import lights_gl, lights_wgpu
+from step06_lighting.lights import lights_gl, lights_wgpu
 
 SIZE = 64
 

@@ -1,4 +1,4 @@
-"""The light-count study (``step06_lighting.study_lights``) measures what it claims: not graded.
+"""The light-count study (``step06_lighting.lights.study_lights``) measures what it claims: not graded.
 
 At 96×72, keeping more of the strongest lights must bring the picture closer to the one with all 64, in both APIs,
 and keeping all of them must reproduce it exactly.
@@ -10,7 +10,7 @@ import json
 
 import pytest
 
-from step06_lighting import study_lights as study
+from step06_lighting.lights import study_lights as study
 
 SIZE = (96, 72)
 

@@ -1,4 +1,4 @@
-"""The mesh-resolution study (``step06_lighting.study_mesh_resolution``) measures what it claims: not graded.
+"""The mesh-resolution study (``step06_lighting.meshes.study_mesh_resolution``) measures what it claims: not graded.
 
 On a 96×72 picture, a finer ``uv_sphere`` must come closer to the ray-traced exact sphere in both APIs: the
 silhouette error falls (and stays near the inscribed polygon's bound), and so does the shading error.
@@ -11,7 +11,7 @@ import json
 import pytest
 
 from gandalf_core.resources import uv_sphere
-from step06_lighting import study_mesh_resolution as study
+from step06_lighting.meshes import study_mesh_resolution as study
 
 SIZE = (96, 72)
 

@@ -1,4 +1,5 @@
-"""The light-count study: ``python -m step06_lighting.study_lights --out DIR [--quick] [--backends opengl webgpu]``.
+"""The light-count study: ``python -m step06_lighting.lights.study_lights --out DIR [--quick]
+[--backends opengl webgpu]``.
 
 The lights block holds up to ``MAX_LIGHTS`` (64) point and directional lights, and every fragment loops over all of
 them. What does each light cost, and how much of the picture do the weakest lights carry?
@@ -21,7 +22,6 @@ error of dropping the weakest lights) to ``--out``. Runs headless and prints pro
 from __future__ import annotations
 
 import argparse
-import importlib
 import json
 import platform
 import statistics
@@ -80,10 +80,11 @@ def measure(backend: str, count: int, lights: list[dict], size: tuple[int, int],
     """(the picture, median ms per frame) of the scene with the ``count`` strongest lights."""
     from gandalf_core import Application
 
-    from . import solutions
+    from .. import solutions
+    from ..shaders import register_shaders
 
     with Application(backend, *size, headless=True, fixed_dt=1 / 60) as app:
-        importlib.import_module(f"step06_lighting.{backend}").register_shaders(app, solutions)
+        register_shaders(app, solutions)
         app.add_scene(lights_scene(count, lights))
         app.run(frames=3)
         picture = app.capture()
@@ -165,7 +166,7 @@ def plot(result: dict, path: Path) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m step06_lighting.study_lights", description=__doc__,
+    parser = argparse.ArgumentParser(prog="python -m step06_lighting.lights.study_lights", description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", type=Path, default=Path("out"), help=f"folder for {STEM}.json/.md/.png")
     parser.add_argument("--backends", nargs="+", choices=("opengl", "webgpu"), default=["opengl", "webgpu"])

@@ -1,4 +1,4 @@
-"""Frame time as lights and instanced entities grow, in both APIs: ``python -m step06_lighting.bench_lights``.
+"""Frame time as lights and instanced entities grow, in both APIs: ``python -m step06_lighting.lights.bench_lights``.
 
 Each case renders a grid of small Blinn-Phong spheres (one instanced draw call) lit by N point lights plus an
 ambient light, offscreen at 320x240, and prints one JSON object per line: backend, lights, entities and the
@@ -17,9 +17,8 @@ from gandalf_core import Application, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
 from gandalf_core.resources import MaterialData, uv_sphere
 
-from . import solutions
-from .opengl import register_shaders as register_glsl
-from .webgpu import register_shaders as register_wgsl
+from .. import solutions
+from ..shaders import register_shaders
 
 LIGHT_COUNTS = (0, 1, 4, 16, 64)
 ENTITY_COUNTS = (1, 100, 1000, 10000)
@@ -50,7 +49,7 @@ def bench_scene(lights: int, entities: int) -> Scene:
 def measure(backend: str, lights: int, entities: int, frames: int, size: tuple[int, int]) -> float:
     """Mean milliseconds per frame after a few warm-up frames."""
     with Application(backend, *size, headless=True, fixed_dt=1 / 60) as app:
-        (register_glsl if backend == "opengl" else register_wgsl)(app, solutions)
+        register_shaders(app, solutions)
         app.add_scene(bench_scene(lights, entities))
         app.run(frames=5)
         app.capture()

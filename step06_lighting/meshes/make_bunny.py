@@ -1,4 +1,4 @@
-"""Writes ``models/bunny.glb``, the step's small procedural bunny: ``python -m step06_lighting.make_bunny``.
+"""Writes ``models/bunny.glb``, the step's small procedural bunny: ``python -m step06_lighting.meshes.make_bunny``.
 
 Five parts (body, head, two ears, tail), each a deformed icosphere stored in its own local frame and placed by
 its glTF node transform, so loading the file exercises multi-part scenes and node transforms. No normals or
@@ -8,11 +8,13 @@ The output is deterministic; it is committed, so the step never needs this scrip
 
 from __future__ import annotations
 
+import argparse
 from pathlib import Path
 
 import numpy as np
 
-MODEL_PATH = Path(__file__).resolve().parent / "models" / "bunny.glb"
+#: The step's model, shared by its concepts (and by step 07), in the step's top folder.
+MODEL_PATH = Path(__file__).resolve().parents[1] / "models" / "bunny.glb"
 
 
 def _part(subdivisions: int, radii: tuple[float, float, float], flatten_below: float | None = None):
@@ -55,10 +57,14 @@ def build_bunny():
     return scene
 
 
-def main() -> int:
-    MODEL_PATH.parent.mkdir(parents=True, exist_ok=True)
-    build_bunny().export(MODEL_PATH)
-    print(f"wrote {MODEL_PATH} ({MODEL_PATH.stat().st_size} bytes)")
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m step06_lighting.meshes.make_bunny",
+                                     description=__doc__.splitlines()[0])
+    parser.add_argument("--out", type=Path, default=MODEL_PATH, help=f"the GLB file to write (default {MODEL_PATH})")
+    args = parser.parse_args(argv)
+    args.out.parent.mkdir(parents=True, exist_ok=True)
+    build_bunny().export(args.out)
+    print(f"wrote {args.out} ({args.out.stat().st_size} bytes)")
     return 0
 
 

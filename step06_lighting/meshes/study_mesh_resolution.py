@@ -1,4 +1,4 @@
-"""The mesh-resolution study: ``python -m step06_lighting.study_mesh_resolution --out DIR [--quick]
+"""The mesh-resolution study: ``python -m step06_lighting.meshes.study_mesh_resolution --out DIR [--quick]
 [--backends opengl webgpu]``.
 
 ``uv_sphere(radius, segments, rings)`` approximates a sphere with ``2 · segments · (rings - 1)`` triangles. How
@@ -23,7 +23,6 @@ Writes ``step06_study_mesh_resolution.json``, ``.md`` (the table) and ``.png`` (
 from __future__ import annotations
 
 import argparse
-import importlib
 import json
 import math
 import platform
@@ -106,10 +105,11 @@ def errors(picture: np.ndarray, expected: np.ndarray, hit: np.ndarray) -> dict:
 def _app(backend: str, size: tuple[int, int]):
     from gandalf_core import Application
 
-    from . import solutions
+    from .. import solutions
+    from ..shaders import register_shaders
 
     app = Application(backend, *size, headless=True, fixed_dt=1 / 60)
-    importlib.import_module(f"step06_lighting.{backend}").register_shaders(app, solutions)
+    register_shaders(app, solutions)
     return app
 
 
@@ -196,7 +196,7 @@ def plot(result: dict, path: Path) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m step06_lighting.study_mesh_resolution", description=__doc__,
+    parser = argparse.ArgumentParser(prog="python -m step06_lighting.meshes.study_mesh_resolution", description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", type=Path, default=Path("out"), help=f"folder for {STEM}.json/.md/.png")
     parser.add_argument("--backends", nargs="+", choices=("opengl", "webgpu"), default=["opengl", "webgpu"])

@@ -1,0 +1,24 @@
+"""Step 06 the lights, WebGPU variant: ``python -m step06_lighting.lights.webgpu [--student]``.
+
+Same scene in both APIs (``scene.py``); only the shaders differ: WGSL: the lights arrive in ``lights`` at
+@group(0) @binding(1) (``frame.wgsl``); ``phong.wgsl`` and ``phong_textured.wgsl`` loop over them in
+``lighting.wgsl``.
+"""
+
+from __future__ import annotations
+
+from gandalf_core.app.cli import run_variant, variant
+
+from ..shaders import shader_table
+from . import SHADERS, STEP
+from .scene import build_scene
+
+create_app = variant("webgpu", STEP, build_scene, shader_table(SHADERS), include_impl=True)
+
+
+def main(argv: list[str] | None = None) -> int:
+    return run_variant(create_app, argv, description=__doc__)
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
