@@ -6,6 +6,8 @@ with +Y up and a camera looks down its -Z axis. Batch forms take (N, ...) arrays
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import ArrayLike
 
@@ -153,6 +155,14 @@ def decompose_trs(m: ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return mm[:3, 3].copy(), quat_from_matrix3(cols), s
 
 
+def cross3(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Cross product of 3-vectors along the last axis (one pair or batches): ``np.cross`` without its axis
+    handling, which costs more than the arithmetic for the small arrays a frame uses."""
+    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
+    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
+    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
+
+
 def invert_affine(m: ArrayLike) -> np.ndarray:
     """Inverse of an affine 4x4 matrix (last row 0, 0, 0, 1); ValueError if it is singular (a zero scale).
 
@@ -160,16 +170,19 @@ def invert_affine(m: ArrayLike) -> np.ndarray:
     which keeps full relative precision for scales far from 1 (1e-6, 1e6) where elimination would not.
     """
     mm = _affine(m, "m")
-    a = mm[:3, :3]
-    c0, c1, c2 = a[:, 0], a[:, 1], a[:, 2]
-    rows = np.stack([np.cross(c1, c2), np.cross(c2, c0), np.cross(c0, c1)])
-    det = float(np.dot(c0, rows[0]))
-    lengths = float(np.prod(np.linalg.norm(a, axis=0)))
-    if not np.isfinite(det) or lengths == 0.0 or abs(det) <= _SINGULAR_RATIO * lengths:
+    # Plain floats: one 4x4 costs more in numpy call overhead than in arithmetic (the camera's view, every frame).
+    (a00, a01, a02, t0), (a10, a11, a12, t1), (a20, a21, a22, t2), _ = mm.tolist()
+    # Rows of the adjugate: the cross products of the columns c1 x c2, c2 x c0, c0 x c1.
+    r0 = (a11 * a22 - a21 * a12, a21 * a02 - a01 * a22, a01 * a12 - a11 * a02)
+    r1 = (a12 * a20 - a22 * a10, a22 * a00 - a02 * a20, a02 * a10 - a12 * a00)
+    r2 = (a10 * a21 - a20 * a11, a20 * a01 - a00 * a21, a00 * a11 - a10 * a01)
+    det = a00 * r0[0] + a10 * r0[1] + a20 * r0[2]
+    lengths = math.hypot(a00, a10, a20) * math.hypot(a01, a11, a21) * math.hypot(a02, a12, a22)
+    if not math.isfinite(det) or lengths == 0.0 or abs(det) <= _SINGULAR_RATIO * lengths:
         raise ValueError(f"m is singular (a zero scale or collapsed axis, determinant {det:g}); it has no inverse")
     inv = np.eye(4)
-    inv[:3, :3] = rows / det
-    inv[:3, 3] = -inv[:3, :3] @ mm[:3, 3]
+    inv[:3, :3] = np.array((r0, r1, r2)) / det
+    inv[:3, 3] = -(inv[:3, :3] @ (t0, t1, t2))
     return inv
 
 
@@ -191,7 +204,7 @@ def normal_matrix_batch(ms: ArrayLike) -> np.ndarray:
     peak = np.max(np.abs(a), axis=(1, 2), keepdims=True)
     a = a / np.where(peak > 0.0, peak, 1.0)
     c0, c1, c2 = a[:, :, 0], a[:, :, 1], a[:, :, 2]
-    cof = np.stack([np.cross(c1, c2), np.cross(c2, c0), np.cross(c0, c1)], axis=-1)
+    cof = np.stack([cross3(c1, c2), cross3(c2, c0), cross3(c0, c1)], axis=-1)
     det = np.einsum("ni,ni->n", c0, cof[:, :, 0])
     cof_peak = np.max(np.abs(cof), axis=(1, 2))
     scale = np.where(det < 0.0, -1.0, 1.0) / np.where(cof_peak > 0.0, cof_peak, 1.0)

@@ -21,6 +21,7 @@ from ..components import (
 )
 from ..ecs import System
 from ..math import depth_range, invert_affine
+from ..math.transform import cross3
 from ..resources import MaterialData
 from ..resources.blocks import LIGHTS_LAYOUT
 from ..systems.light_system import LightSystem, pack_lights, pack_shadow
@@ -143,13 +144,13 @@ class RenderSystem(System):
         scales like 1e-20 or 1e20) are decided again in float64 from the world matrices."""
         p = self._instances.reshape(-1, 3, 4)
         with np.errstate(over="ignore", invalid="ignore"):  # the rows it overflows in are decided below
-            det = np.einsum("ij,ij->i", p[:, :, 0], np.cross(p[:, :, 1], p[:, :, 2]))
+            det = np.einsum("ij,ij->i", p[:, :, 0], cross3(p[:, :, 1], p[:, :, 2]))
         unsure = ~np.isfinite(det) | (det == 0.0)
         if unsure.any():
             rows = np.arange(len(world))[self._rows][unsure]
             m = world[rows, :3, :3]
             m = m / np.abs(m).max(axis=(1, 2), keepdims=True).clip(min=np.finfo(np.float64).tiny)
-            det[unsure] = np.einsum("ij,ij->i", m[:, :, 0], np.cross(m[:, :, 1], m[:, :, 2]))
+            det[unsure] = np.einsum("ij,ij->i", m[:, :, 0], cross3(m[:, :, 1], m[:, :, 2]))
         return det < 0.0
 
     def _split_mirrored(self, flipped: np.ndarray) -> list[DrawBatch]:
