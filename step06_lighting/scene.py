@@ -29,12 +29,14 @@ TOUR_FRAMES = 30
 def build_scene(impl: ModuleType) -> Scene:
     """``impl`` is the step's ``solutions`` or ``exercises`` package (it provides LightCollectionSystem)."""
     scene = Scene("step06_lighting")
+    # --8<-- [start:whole]
     add_sky(scene)
     add_floor(scene)
     add_clay(scene)
     add_environment_materials(scene)
     add_bunny_mesh(scene)
-    for name, material, x in (("clay bunny", "clay", -2.3), ("silver bunny", "silver", 0.0), ("ice bunny", "ice", 2.3)):
+    for name, material, x in (("clay bunny", "clay", -2.3), ("silver bunny", "silver", 0.0),
+                              ("ice bunny", "ice", 2.3)):
         add_bunny(scene, name, material, x)
     add_light_ring(scene)
     add_key_and_ambient(scene)
@@ -43,4 +45,5 @@ def build_scene(impl: ModuleType) -> Scene:
     scene.create_entity(InfoComponent("camera"), camera, CameraComponent(40.0, 0.1, 100.0))
     scene.add_system(OrbitSystem())
     scene.add_system(impl.LightCollectionSystem())
+    # --8<-- [end:whole]
     return scene

@@ -27,9 +27,10 @@ def add_sky(scene: Scene) -> None:
 
 
 def add_environment_materials(scene: Scene) -> None:
-    """``silver`` mirrors the sky; ``ice`` refracts it (index of refraction 1.31) and reflects some by Fresnel."""
+    """``silver`` mirrors the sky; ``ice`` refracts it (index of refraction 1.31), reflects some."""
     scene.assets.material("silver", MaterialData("mirror", ["sky"], color=(0.96, 0.95, 0.92)))
-    scene.assets.material("ice", MaterialData("glass", ["sky"], color=(0.82, 0.93, 1.0), params={"ior": 1.31}))
+    scene.assets.material("ice", MaterialData("glass", ["sky"], color=(0.82, 0.93, 1.0),
+                                              params={"ior": 1.31}))
 # --8<-- [end:sky]
 
 

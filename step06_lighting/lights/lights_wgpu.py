@@ -61,7 +61,8 @@ def render(width: int = 64, height: int = 64) -> np.ndarray:
         fragment={"module": module, "entry_point": "fs_main", "targets": [{"format": "rgba8unorm"}]})
     # --8<-- [start:lights]
     lights = device.create_buffer_with_data(data=light_block(), usage=wgpu.BufferUsage.UNIFORM)
-    bind_group = device.create_bind_group(layout=pipeline.get_bind_group_layout(0),  # the shader's @group(0)
+    # The bind group's layout is the shader's @group(0); its entry 0 is @binding(0).
+    bind_group = device.create_bind_group(layout=pipeline.get_bind_group_layout(0),
                                           entries=[{"binding": 0, "resource": {"buffer": lights}}])
     # --8<-- [end:lights]
     target = device.create_texture(size=(width, height, 1), format="rgba8unorm",

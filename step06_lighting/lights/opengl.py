@@ -12,7 +12,9 @@ from ..shaders import shader_table
 from . import SHADERS, STEP
 from .scene import build_scene
 
+# --8<-- [start:variant]
 create_app = variant("opengl", STEP, build_scene, shader_table(SHADERS), include_impl=True)
+# --8<-- [end:variant]
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -43,7 +43,7 @@ def add_floor(scene: Scene) -> None:
 
 # --8<-- [start:ring]
 def add_light_ring(scene: Scene, radius: float = 3.6) -> None:
-    """RING_LIGHTS point lights of every hue circling the y axis at two heights, each with a glowing marker."""
+    """RING_LIGHTS point lights of every hue circling the y axis at two heights, with markers."""
     scene.assets.mesh("marker", uv_sphere(0.07, 12, 6))
     for k in range(RING_LIGHTS):
         rgb = colorsys.hsv_to_rgb(k / RING_LIGHTS, 0.75, 1.0)
@@ -51,8 +51,8 @@ def add_light_ring(scene: Scene, radius: float = 3.6) -> None:
         scene.create_entity(
             InfoComponent(f"light {k}"),
             TransformComponent(),
-            OrbitComponent(center=(0.0, 0.45 + 0.5 * (k % 2), 0.0), radius=radius, angle=360.0 * k / RING_LIGHTS,
-                           speed=24.0),
+            OrbitComponent(center=(0.0, 0.45 + 0.5 * (k % 2), 0.0), radius=radius,
+                           angle=360.0 * k / RING_LIGHTS, speed=24.0),
             LightComponent("point", rgb, intensity=1.6, range=4.0),  # range: fades to zero at 4 m
             MeshComponent("marker"),
             MaterialComponent(f"marker{k}"),
@@ -62,10 +62,12 @@ def add_light_ring(scene: Scene, radius: float = 3.6) -> None:
 def add_key_and_ambient(scene: Scene) -> None:
     """A warm directional key light from the upper left front, and a cool ambient light."""
     key = (-4.0, 6.0, 5.0)
-    scene.create_entity(
-        InfoComponent("key light"), TransformComponent(key, quaternion=look_at_rotation(key, (0, 0, 0))),
-        LightComponent("directional", (1.0, 0.96, 0.9), intensity=0.9))
-    scene.create_entity(InfoComponent("ambient"), TransformComponent(), LightComponent("ambient", (0.2, 0.22, 0.27)))
+    towards_origin = look_at_rotation(key, (0, 0, 0))  # a directional light shines along its -Z
+    scene.create_entity(InfoComponent("key light"),
+                        TransformComponent(key, quaternion=towards_origin),
+                        LightComponent("directional", (1.0, 0.96, 0.9), intensity=0.9))
+    scene.create_entity(InfoComponent("ambient"), TransformComponent(),
+                        LightComponent("ambient", (0.2, 0.22, 0.27)))
 # --8<-- [end:ring]
 
 
