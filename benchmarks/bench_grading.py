@@ -8,7 +8,8 @@ the time per step come from pytest's own durations.
 
 Configurations (``--configs``): ``serial`` (``--jobs 0``: one process, no isolation), ``n1`` (one xdist
 worker: isolation, no parallelism), ``n2`` (two workers, the front end's default), ``n4``, and ``n2-lp1``
-(two workers with ``LP_NUM_THREADS=1``: one software-rasteriser thread each).
+(two workers with ``LP_NUM_THREADS=1``: one software-rasteriser thread each), ``n1-lp1`` (one worker, one
+rasteriser thread).
 
 Wall-clock seconds depend on what else the machine runs; the CPU seconds (user + system of the grading processes,
 the software rasterisers' threads included) much less, so both are printed, with the load average before each run.
@@ -37,10 +38,11 @@ CONFIGS = {
     "n2": ["--jobs", "2"],
     "n4": ["--jobs", "4"],
     "n2-lp1": ["--jobs", "2"],
+    "n1-lp1": ["--jobs", "1"],
 }
 # Extra environment per configuration: one llvmpipe/lavapipe thread per worker, so two workers do not
 # each start a rasteriser thread per core on a 2-core machine.
-ENVS = {"n2-lp1": {"LP_NUM_THREADS": "1"}}
+ENVS = {"n2-lp1": {"LP_NUM_THREADS": "1"}, "n1-lp1": {"LP_NUM_THREADS": "1"}}
 DURATION = re.compile(r"^\s*([\d.]+)s (call|setup|teardown)\s+(\S+)")
 
 
