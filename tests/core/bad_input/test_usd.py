@@ -7,6 +7,7 @@ leave the open scene as it was; saving failures leave the old file as it was."""
 from __future__ import annotations
 
 import shutil
+import warnings
 from pathlib import Path
 
 import pytest
@@ -107,6 +108,15 @@ def loads(make, **kwargs):
     return action
 
 
+def quietly(action):
+    """``action`` with its USDSceneWarning silenced (the warning has its own case)."""
+    def quiet(folder: Path):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", USDSceneWarning)
+            return action(folder)
+    return quiet
+
+
 def saves(name: str, **kwargs):
     def action(folder: Path):
         return save_scene(scene(), folder / name, **kwargs)
@@ -136,7 +146,7 @@ CASES = [
     error("save-into-missing-folder", saves("no/such/folder/s.usda"), USDSceneError, "s.usda", "does not exist"),
     warning("unknown-prim-types-warned", loads("scene/unmapped.usda"), USDSceneWarning, "</World/hair>",
             "prim type 'BasisCurves'", "</World/panel>", "RectLight"),
-    result("unknown-prims-still-entities", loads("scene/unmapped.usda"),
+    result("unknown-prims-still-entities", quietly(loads("scene/unmapped.usda")),
            lambda s: {"hair", "panel", "ball"} <= {s.get_component(e, InfoComponent).name for e in s.entities}),
     error("reference-outside-folder", loads("scene/outside_reference.usda"), USDSceneError, "outside_reference.usda",
           "@../part.usda@", "outside the scene's folder", "allow_outside"),
