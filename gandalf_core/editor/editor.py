@@ -84,6 +84,15 @@ class Editor(EditorActions):
         self._payload_ids: dict[tuple[str, Any], int] = {}
         self._entity_count, self._entity_count_key = 0, -1
         self._shader_sources: dict[str, tuple[Any, ...]] = {}
+        #: Seconds (app clock) between the panels' runs while the GUI is idle; 0 runs them every frame.
+        self.gui_interval = 1.0 / 30.0
+        #: Frames that ran the panels, and frames that drew the last GUI frame again (see ``_gui_due``).
+        self.gui_frames = self.skipped_gui_frames = 0
+        self._busy_frames = 0
+        #: The app clock's step between the last two frames (what the stats panel shows headless).
+        self.frame_dt = 1.0 / 60.0
+        self._prev_now: float | None = None
+        self._state_key: Any = None
         self._installed: dict[int, tuple[Scene, list[uuid.UUID], list[System]]] = {}
         self._imgui = imgui
         self._context = imgui.create_context()
@@ -169,6 +178,56 @@ class Editor(EditorActions):
             self.frame_seconds = elapsed if self.frame_seconds == 0.0 else 0.9 * self.frame_seconds + 0.1 * elapsed
         self._last_wall = wall
         now = self.app.clock.time
+        if self._prev_now is not None and now > self._prev_now:
+            self.frame_dt = now - self._prev_now
+        self._prev_now = now
+        if self._gui_due(now):
+            self._gui_frame(io, now)
+            self._gui.draw_layer(imgui.get_draw_data(), renderer.width, renderer.height)
+        else:
+            self.skipped_gui_frames += 1
+        # Every frame: the GUI layer (and the live images) over this frame, whose scene has moved.
+        if encoder is None:
+            self._gui.composite(renderer.framebuffer)
+        else:
+            self._gui.composite(encoder, renderer.color_view)
+        self.gui_seconds = time.perf_counter() - wall
+
+    def _gui_due(self, now: float) -> bool:
+        """Whether this frame runs the panels (an ImGui frame) or only draws the last one's draw lists again.
+
+        The panels run on every frame with input (and the two after it), while a widget is held or the gizmo
+        dragged, whenever the editor's state changed (an edit, the selection, entities, the log, a panel moved
+        or hidden), and at least every :attr:`gui_interval` seconds of the app's clock; in between an idle GUI
+        costs only its drawing.
+        """
+        if self.gui_interval <= 0.0 or imgui_draw_data_missing(self._imgui):
+            return True
+        if self.app.input.events:
+            self._busy_frames = 3
+        if self._busy_frames > 0:
+            self._busy_frames -= 1
+            return True
+        if self._imgui.is_any_item_active() or self.gizmo_using or self._imgui.get_io().want_text_input:
+            return True
+        scene = self.app.scene
+        key = (self.commands.version, self.selected, id(scene), scene.membership_version, scene.hierarchy_version,
+               self.log.version, self.status, self.app.renderer.width, self.app.renderer.height,
+               tuple((p.visible, p.position, p.size) for p in self._panel_components(scene)))
+        if key != self._state_key:
+            self._state_key = key
+            return True
+        return now - self._last_time >= self.gui_interval
+
+    def invalidate_gui(self) -> None:
+        """Run the panels on the next frame (the last GUI frame's draw lists are out of date)."""
+        self._state_key = None
+
+    def _panel_components(self, scene: Scene) -> list[EditorPanelComponent]:
+        return [scene.get_component(e, EditorPanelComponent) for e in self.panels(scene) if e in scene]
+
+    def _gui_frame(self, io: Any, now: float) -> None:
+        imgui = self._imgui
         dt, self._last_time = now - self._last_time, now
         io.delta_time = dt if dt > 0.0 else 1.0 / 60.0  # ImGui rejects a zero time step
         from imgui_bundle import imguizmo
@@ -185,11 +244,7 @@ class Editor(EditorActions):
                 self.commands.seal()  # the drag (if any) is over: the next edit is a new undo step
         finally:
             imgui.render()
-        if encoder is None:
-            self._gui.render(imgui.get_draw_data(), renderer.framebuffer)
-        else:
-            self._gui.render(imgui.get_draw_data(), encoder, renderer.color_view)
-        self.gui_seconds = time.perf_counter() - wall
+        self.gui_frames += 1
 
     @property
     def wants_mouse(self) -> bool:
@@ -449,6 +504,12 @@ class Editor(EditorActions):
         self._context = None
         if _EDITORS.get(app) is self:
             del _EDITORS[app]
+
+
+def imgui_draw_data_missing(imgui: Any) -> bool:
+    """True before the first ImGui frame (there is nothing to draw again yet)."""
+    data = imgui.get_draw_data()
+    return data is None or not data.valid
 
 
 def enable_editor(app: Any) -> Editor:

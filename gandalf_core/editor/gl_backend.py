@@ -1,10 +1,11 @@
-"""Draws ImGui's draw data with moderngl into the OpenGL renderer's framebuffer.
+"""Draws ImGui's draw data with moderngl: into a cached GUI layer, composited over the OpenGL renderer's frame.
 
 ImGui colours are sRGB values and ImGui blends them as they are. The frame is an sRGB target with
-GL_FRAMEBUFFER_SRGB enabled, which would encode the GUI's colours a second time; the GUI is therefore
-drawn with GL_FRAMEBUFFER_SRGB disabled (bytes in = bytes out) and the flag is restored afterwards.
-The blend state matches the WebGPU backend exactly (colour: src-alpha / one-minus-src-alpha,
-alpha: one / one-minus-src-alpha), so both backends store the same bytes.
+GL_FRAMEBUFFER_SRGB enabled, which would encode the GUI's colours a second time; the layer and the composite
+therefore run with GL_FRAMEBUFFER_SRGB disabled (bytes in = bytes out) and the flag is restored afterwards.
+The blend state matches the WebGPU backend exactly (colour: src-alpha / one-minus-src-alpha, alpha: one /
+one-minus-src-alpha into the layer; one / one-minus-src-alpha for the premultiplied composite), so both backends
+store the same bytes. See :mod:`gandalf_core.editor.gui_layer` for the layer and its holes for live images.
 """
 
 from __future__ import annotations
@@ -15,6 +16,8 @@ from typing import Any
 import moderngl
 import numpy as np
 from imgui_bundle import imgui
+
+from .gui_layer import clip_box, command_vertices, gui_rects
 
 GL_FRAMEBUFFER_SRGB = 0x8DB9
 
@@ -37,11 +40,29 @@ void main() {
 _FRAGMENT = """
 #version 330
 uniform sampler2D u_texture;
+uniform bool u_hole;  // a live image's place in the layer: transparent
 in vec2 v_uv;
 in vec4 v_color;
 out vec4 f_color;
 void main() {
-    f_color = v_color * texture(u_texture, v_uv);
+    f_color = u_hole ? vec4(0.0) : v_color * texture(u_texture, v_uv);
+}
+"""
+
+_COMPOSITE_VERTEX = """
+#version 330
+void main() {
+    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+    gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+}
+"""
+
+_COMPOSITE_FRAGMENT = """
+#version 330
+uniform sampler2D u_layer;
+out vec4 f_color;
+void main() {
+    f_color = texelFetch(u_layer, ivec2(gl_FragCoord.xy), 0);  // premultiplied colour and coverage
 }
 """
 
@@ -53,6 +74,17 @@ class GLGuiRenderer:
         self.ctx = ctx
         self.program = ctx.program(vertex_shader=_VERTEX, fragment_shader=_FRAGMENT)
         self.program["u_texture"].value = 0
+        self.program["u_hole"].value = False
+        self.composite_program = ctx.program(vertex_shader=_COMPOSITE_VERTEX, fragment_shader=_COMPOSITE_FRAGMENT)
+        self.composite_program["u_layer"].value = 0
+        self._fullscreen = ctx.vertex_array(self.composite_program, [])
+        self._layer: moderngl.Texture | None = None
+        self._layer_fbo: moderngl.Framebuffer | None = None
+        self.rects: list[tuple[int, int, int, int]] = []
+        #: Live images of the last GUI frame: (texture id, clip box, first vertex, vertex count).
+        self._live: list[tuple[int, tuple[int, int, int, int], int, int]] = []
+        self._live_vbo: moderngl.Buffer | None = None
+        self._live_vao: moderngl.VertexArray | None = None
         self._vbo: moderngl.Buffer | None = None
         self._ibo: moderngl.Buffer | None = None
         self._vao: moderngl.VertexArray | None = None
@@ -110,25 +142,40 @@ class GLGuiRenderer:
             )
         return self._vao
 
-    # --- a frame ------------------------------------------------------------------------------------
-    def render(self, draw_data: Any, fbo: moderngl.Framebuffer) -> None:
-        """Draw ``draw_data`` over what ``fbo`` holds (``fbo`` must be bound)."""
+    # --- a GUI frame: the layer -----------------------------------------------------------------------
+    def _target(self, width: int, height: int) -> moderngl.Framebuffer:
+        if self._layer is None or self._layer.size != (width, height):
+            if self._layer is not None:
+                self._layer_fbo.release()
+                self._layer.release()
+            self._layer = self.ctx.texture((width, height), 4)
+            self._layer_fbo = self.ctx.framebuffer([self._layer])
+        return self._layer_fbo
+
+    def draw_layer(self, draw_data: Any, width: int, height: int) -> None:
+        """Draw ``draw_data`` into the transparent GUI layer (the frame is left alone)."""
         if draw_data.textures is not None:
             for tex in draw_data.textures:
                 if tex.status != imgui.ImTextureStatus.ok:
                     self._update_texture(tex)
-        width, height = fbo.size
-        if draw_data.cmd_lists_count == 0 or width <= 0 or height <= 0:
-            return
         ctx = self.ctx
+        fbo = self._target(width, height)
+        fbo.use()  # composite() binds the frame's framebuffer again
+        ctx.disable_direct(GL_FRAMEBUFFER_SRGB)
+        fbo.clear(0.0, 0.0, 0.0, 0.0)
+        self.rects, self._live = [], []
+        if draw_data.cmd_lists_count == 0:
+            ctx.enable_direct(GL_FRAMEBUFFER_SRGB)
+            return
         sx, sy = draw_data.display_size
         self.program["u_scale"].value = (2.0 / sx, -2.0 / sy)
-        ctx.disable_direct(GL_FRAMEBUFFER_SRGB)
         ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE)
         ctx.enable(moderngl.BLEND)
         ctx.blend_equation = moderngl.FUNC_ADD
         ctx.blend_func = (moderngl.SRC_ALPHA, moderngl.ONE_MINUS_SRC_ALPHA, moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA)
         fbo.viewport = (0, 0, width, height)
+        live_bytes: list[bytes] = []
+        first = 0
         try:
             for commands in draw_data.cmd_lists:
                 vtx_bytes = commands.vtx_buffer.size() * imgui.VERTEX_SIZE
@@ -137,15 +184,72 @@ class GLGuiRenderer:
                 self._vbo.write(ctypes.string_at(commands.vtx_buffer.data_address(), vtx_bytes))
                 self._ibo.write(ctypes.string_at(commands.idx_buffer.data_address(), idx_bytes))
                 for command in commands.cmd_buffer:
-                    x0, y0, x1, y1 = command.clip_rect
-                    x0, y0 = max(int(x0), 0), max(int(y0), 0)
-                    x1, y1 = min(int(x1), width), min(int(y1), height)
-                    if x1 <= x0 or y1 <= y0:
+                    box = clip_box(command, width, height)
+                    if box is None:
                         continue
+                    x0, y0, x1, y1 = box
                     fbo.scissor = (x0, height - y1, x1 - x0, y1 - y0)  # GL's origin is bottom-left
                     tex_id = command.tex_ref.get_tex_id()
-                    (self.textures.get(tex_id) or self.user_textures[tex_id]).use(location=0)
+                    texture = self.textures.get(tex_id)
+                    hole = texture is None
+                    if hole:  # a live image: a hole here, the image drawn into the frame every frame
+                        texture = self.user_textures[tex_id]
+                        live_bytes.append(command_vertices(commands, command))
+                        self._live.append((tex_id, box, first, command.elem_count))
+                        first += command.elem_count
+                        ctx.disable(moderngl.BLEND)
+                        self.program["u_hole"].value = True
+                    texture.use(location=0)
                     vao.render(moderngl.TRIANGLES, vertices=command.elem_count, first=command.idx_offset)
+                    if hole:
+                        self.program["u_hole"].value = False
+                        ctx.enable(moderngl.BLEND)
+        finally:
+            fbo.scissor = None
+            ctx.disable(moderngl.BLEND)
+            ctx.enable_direct(GL_FRAMEBUFFER_SRGB)
+        self.rects = gui_rects(draw_data, width, height)
+        if live_bytes:
+            self._write_live(b"".join(live_bytes))
+
+    def _write_live(self, data: bytes) -> None:
+        if self._live_vbo is None or self._live_vbo.size < len(data):
+            if self._live_vbo is not None:
+                self._live_vao.release()
+                self._live_vbo.release()
+            self._live_vbo = self.ctx.buffer(reserve=max(len(data), 4096), dynamic=True)
+            self._live_vao = self.ctx.vertex_array(
+                self.program, [(self._live_vbo, "2f 2f 4f1", "in_position", "in_uv", "in_color")])
+        self._live_vbo.write(data)
+
+    # --- every frame: the layer over the frame -------------------------------------------------------
+    def composite(self, fbo: moderngl.Framebuffer) -> None:
+        """Draw the live images, then the GUI layer, over what ``fbo`` holds, in the GUI's rectangles."""
+        if not self.rects or self._layer is None:
+            return
+        ctx = self.ctx
+        width, height = fbo.size
+        if (width, height) != self._layer.size:
+            return  # resized since the last GUI frame: the next one draws the layer at the new size
+        fbo.use()
+        ctx.disable_direct(GL_FRAMEBUFFER_SRGB)
+        ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
+        fbo.viewport = (0, 0, width, height)
+        try:
+            for tex_id, (x0, y0, x1, y1), first, count in self._live:
+                texture = self.user_textures.get(tex_id)
+                if texture is None:
+                    continue
+                fbo.scissor = (x0, height - y1, x1 - x0, y1 - y0)
+                texture.use(location=0)
+                self._live_vao.render(moderngl.TRIANGLES, vertices=count, first=first)
+            ctx.enable(moderngl.BLEND)
+            ctx.blend_equation = moderngl.FUNC_ADD
+            ctx.blend_func = (moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA, moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA)
+            self._layer.use(location=0)
+            for x, y, w, h in self.rects:
+                fbo.scissor = (x, height - y - h, w, h)
+                self._fullscreen.render(moderngl.TRIANGLES, vertices=3)
         finally:
             fbo.scissor = None
             ctx.disable(moderngl.BLEND)
@@ -158,8 +262,12 @@ class GLGuiRenderer:
         self._vao = self._vbo = self._ibo = None
 
     def release(self) -> None:
-        """Free the program, the buffers and every texture ImGui asked for."""
+        """Free the programs, the buffers, the layer and every texture ImGui asked for."""
         self._release_buffers()
+        for obj in (self._live_vao, self._live_vbo, self._layer_fbo, self._layer, self._fullscreen):
+            if obj is not None:
+                obj.release()
+        self.composite_program.release()
         for texture in self.textures.values():
             texture.release()
         self.textures.clear()

@@ -26,7 +26,6 @@ class StatsPanelSystem(PanelSystem):
     kind = "stats"
 
     def draw(self, panel: EditorPanelComponent) -> None:
-        io = imgui.get_io()
         editor = self.editor
         app = editor.app
         renderer = app.renderer
@@ -36,7 +35,7 @@ class StatsPanelSystem(PanelSystem):
             editor._entity_count_key = scene.membership_version
         # In a window: the wall clock, whatever the app's time step. Headless (captures, tests): the app's
         # own time step, so that a picture does not depend on how fast the machine was.
-        seconds = editor.frame_seconds if app.window is not None else io.delta_time
+        seconds = editor.frame_seconds if app.window is not None else editor.frame_dt
         imgui.text(f"fps       {1.0 / seconds if seconds else 0.0:8.1f}")
         imgui.text(f"frame     {1000.0 * seconds:8.3f} ms")
         if app.window is not None:

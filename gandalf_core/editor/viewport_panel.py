@@ -76,6 +76,7 @@ class ViewportPanelSystem(PanelSystem):
     def _forget_texture(self) -> None:
         if self._texture_key is not None:
             self.editor._gui.forget_texture(self._texture_key)
+            self.editor.invalidate_gui()  # the last GUI frame shows the old texture: lay it out again
         self._texture_ref = self._texture_key = None
 
     def on_destroy_system(self) -> None:

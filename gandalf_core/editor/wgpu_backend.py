@@ -1,17 +1,18 @@
-"""Draws ImGui's draw data with wgpu over the WebGPU renderer's ``rgba8unorm-srgb`` frame.
+"""Draws ImGui's draw data with wgpu: into a cached GUI layer, composited over the WebGPU renderer's frame.
 
 ImGui blends its sRGB colours as they are. An sRGB render target would blend in linear light instead,
 so the GUI would look different from the OpenGL backend (which draws with GL_FRAMEBUFFER_SRGB off).
-To store the same bytes as OpenGL, each frame:
+To store the same bytes as OpenGL:
 
-1. copies the frame's bytes into a plain ``rgba8unorm`` texture (formats that differ only in sRGB-ness
-   may be copied; the bytes are kept as they are),
-2. draws the GUI there with wgpu's ImGui backend (gamma 1: the bytes are treated as the colours),
-3. writes the result back with a pass that decodes each byte exactly to linear light, which the sRGB
-   target encodes back to the same byte.
+* on frames that run the panels, the GUI is drawn into a transparent ``rgba8unorm`` layer with wgpu's ImGui
+  pipeline (gamma 1: the bytes are treated as the colours; a live image leaves a hole, see
+  :mod:`gandalf_core.editor.gui_layer`);
+* every frame, the GUI's window rectangles of the frame are copied into a plain ``rgba8unorm`` texture (formats
+  that differ only in sRGB-ness may be copied; the bytes are kept as they are), the live images and then the
+  layer (premultiplied) are drawn over them there, and a pass writes the rectangles back, decoding each byte
+  exactly to linear light, which the sRGB target encodes back to the same byte.
 
-Steps 1 and 3 cover only the GUI's windows (the union of each draw list's clip rectangles); the rest of
-the frame is never touched.
+The rest of the frame is never touched.
 """
 
 from __future__ import annotations
@@ -22,7 +23,24 @@ import wgpu
 from imgui_bundle import imgui
 from wgpu.utils.imgui.imgui_backend import ImguiWgpuBackend
 
+from .gui_layer import clip_box, command_vertices, gui_rects
+
 GUI_FORMAT = "rgba8unorm"
+
+_COMPOSITE_WGSL = """
+@group(0) @binding(0) var layer: texture_2d<f32>;
+
+@vertex
+fn vs_main(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
+    let p = vec2<f32>(f32((i << 1u) & 2u), f32(i & 2u));
+    return vec4<f32>(p * 2.0 - 1.0, 0.0, 1.0);
+}
+
+@fragment
+fn fs_main(@builtin(position) pos: vec4<f32>) -> @location(0) vec4<f32> {
+    return textureLoad(layer, vec2<i32>(pos.xy), 0);  // premultiplied colour and coverage
+}
+"""
 
 _BLIT_WGSL = """
 @group(0) @binding(0) var gui: texture_2d<f32>;
@@ -45,21 +63,6 @@ fn fs_main(@builtin(position) pos: vec4<f32>) -> @location(0) vec4<f32> {
 """
 
 
-def gui_rects(draw_data: Any, width: int, height: int) -> list[tuple[int, int, int, int]]:
-    """(x, y, w, h) pixel rectangles that hold the GUI: per draw list (a window), its commands' clip rects' union."""
-    rects = []
-    for commands in draw_data.cmd_lists:
-        x0, y0, x1, y1 = float(width), float(height), 0.0, 0.0
-        for command in commands.cmd_buffer:
-            cx0, cy0, cx1, cy1 = command.clip_rect
-            x0, y0, x1, y1 = min(x0, cx0), min(y0, cy0), max(x1, cx1), max(y1, cy1)
-        ix0, iy0 = max(int(x0), 0), max(int(y0), 0)
-        ix1, iy1 = min(int(x1 + 0.999), width), min(int(y1 + 0.999), height)
-        if ix1 > ix0 and iy1 > iy0:
-            rects.append((ix0, iy0, ix1 - ix0, iy1 - iy0))
-    return rects
-
-
 class WGPUGuiRenderer:
     """Owns the GUI's wgpu objects; call :meth:`release` to free them."""
 
@@ -74,9 +77,47 @@ class WGPUGuiRenderer:
             primitive={"topology": "triangle-list"},
             label="editor blit",
         )
+        module = device.create_shader_module(code=_COMPOSITE_WGSL, label="editor composite")
+        premultiplied = {"src_factor": "one", "dst_factor": "one-minus-src-alpha", "operation": "add"}
+        self.composite_pipeline = device.create_render_pipeline(
+            layout="auto",
+            vertex={"module": module, "entry_point": "vs_main"},
+            fragment={"module": module, "entry_point": "fs_main", "targets": [
+                {"format": GUI_FORMAT, "blend": {"color": premultiplied, "alpha": premultiplied}}]},
+            primitive={"topology": "triangle-list"},
+            label="editor composite",
+        )
+        self.hole_pipeline = self._hole_pipeline()
         self._size: tuple[int, int] | None = None
         self._texture: Any = None
+        self._layer: Any = None
         self._bind_group: Any = None
+        self._layer_group: Any = None
+        self._texture_groups: dict[int, tuple[Any, Any]] = {}
+        self.rects: list[tuple[int, int, int, int]] = []
+        self._live: list[tuple[int, tuple[int, int, int, int], int, int]] = []
+        self._live_buffer: Any = None
+
+    def _hole_pipeline(self) -> Any:
+        """wgpu's ImGui pipeline with a blend that writes transparent black: a live image's hole in the layer."""
+        from wgpu.utils.imgui.imgui_backend import FRAGMENT_SHADER_SRC, VERTEX_SHADER_SRC
+
+        backend, device = self.backend, self.device
+        zero = {"src_factor": "zero", "dst_factor": "zero", "operation": "add"}
+        layout = device.create_pipeline_layout(bind_group_layouts=[
+            backend._render_pipeline.get_bind_group_layout(0), backend._texture_bind_group_layout])
+        return device.create_render_pipeline(
+            layout=layout,
+            vertex={"module": device.create_shader_module(code=VERTEX_SHADER_SRC), "entry_point": "main",
+                    "buffers": [{"array_stride": imgui.VERTEX_SIZE, "step_mode": "vertex", "attributes": [
+                        {"format": "float32x2", "offset": 0, "shader_location": 0},
+                        {"format": "float32x2", "offset": 8, "shader_location": 1},
+                        {"format": "unorm8x4", "offset": 16, "shader_location": 2}]}]},
+            primitive={"topology": "triangle-list", "cull_mode": "none"},
+            fragment={"module": device.create_shader_module(code=FRAGMENT_SHADER_SRC), "entry_point": "main",
+                      "targets": [{"format": GUI_FORMAT, "blend": {"color": zero, "alpha": zero}}]},
+            label="editor hole",
+        )
 
     def texture_ref(self, view: Any) -> tuple[Any, Any]:
         """Register a texture view a panel shows with ``imgui.image``: (key for :meth:`forget_texture`, its ref)."""
@@ -84,34 +125,112 @@ class WGPUGuiRenderer:
         return ref, ref
 
     def forget_texture(self, key: Any) -> None:
-        self.backend._texture_views.pop(key.get_tex_id(), None)
+        tex_id = key.get_tex_id()
+        self.backend._texture_views.pop(tex_id, None)
+        self._texture_groups.pop(tex_id, None)
 
     def _target(self, width: int, height: int) -> None:
         if self._size == (width, height):
             return
-        if self._texture is not None:
-            self._texture.destroy()
+        for texture in (self._texture, self._layer):
+            if texture is not None:
+                texture.destroy()
         usage = wgpu.TextureUsage
         self._texture = self.device.create_texture(
             size=(width, height, 1), format=GUI_FORMAT,
             usage=usage.RENDER_ATTACHMENT | usage.COPY_DST | usage.TEXTURE_BINDING, label="editor gui",
         )
+        self._layer = self.device.create_texture(
+            size=(width, height, 1), format=GUI_FORMAT, usage=usage.RENDER_ATTACHMENT | usage.TEXTURE_BINDING,
+            label="editor gui layer",
+        )
         self._view = self._texture.create_view()
+        self._layer_view = self._layer.create_view()
         self._bind_group = self.device.create_bind_group(
             layout=self.blit.get_bind_group_layout(0), entries=[{"binding": 0, "resource": self._view}]
         )
+        self._layer_group = self.device.create_bind_group(
+            layout=self.composite_pipeline.get_bind_group_layout(0),
+            entries=[{"binding": 0, "resource": self._layer_view}],
+        )
         self._size = (width, height)
 
-    def render(self, draw_data: Any, encoder: Any, color_view: Any) -> None:
-        """Record the GUI over ``color_view`` (the frame) on ``encoder``."""
-        frame = color_view.texture
-        width, height = frame.size[0], frame.size[1]
-        rects = gui_rects(draw_data, width, height)
-        if not rects:
-            return
+    def _texture_group(self, tex_id: int) -> Any:
+        view = self.backend._texture_views[tex_id]
+        cached = self._texture_groups.get(tex_id)
+        if cached is None or cached[0] is not view:
+            group = self.device.create_bind_group(layout=self.backend._texture_bind_group_layout,
+                                                  entries=[{"binding": 0, "resource": view}])
+            cached = self._texture_groups[tex_id] = (view, group)
+        return cached[1]
+
+    # --- a GUI frame: the layer -----------------------------------------------------------------------
+    def draw_layer(self, draw_data: Any, width: int, height: int) -> None:
+        """Draw ``draw_data`` into the transparent GUI layer (the frame is left alone)."""
+        backend = self.backend
+        backend._clear_pending_textures()
+        if draw_data.textures is not None:
+            for tex in draw_data.textures:
+                if tex.status != imgui.ImTextureStatus.ok:
+                    backend._update_texture(tex)
         self._target(width, height)
+        self.rects, self._live = [], []
+        encoder = self.device.create_command_encoder()
+        layer_pass = encoder.begin_render_pass(color_attachments=[
+            {"view": self._layer_view, "load_op": "clear", "clear_value": (0, 0, 0, 0), "store_op": "store"}
+        ])
+        live_bytes: list[bytes] = []
+        if draw_data.cmd_lists_count > 0 and draw_data.total_idx_count > 0:
+            backend._update_vertex_buffer(draw_data)
+            backend._set_render_state(draw_data)
+            layer_pass.set_viewport(0, 0, width, height, 0, 1)
+            layer_pass.set_vertex_buffer(0, backend._vertex_buffer)
+            layer_pass.set_index_buffer(backend._index_buffer, "uint32" if imgui.INDEX_SIZE == 4 else "uint16")
+            layer_pass.set_bind_group(0, backend._bind_group)
+            pipeline = None
+            vtx_base = idx_base = first = 0
+            for commands in draw_data.cmd_lists:
+                for command in commands.cmd_buffer:
+                    box = clip_box(command, width, height)
+                    if box is None:
+                        continue
+                    tex_id = command.tex_ref.get_tex_id()
+                    hole = tex_id not in backend._textures
+                    wanted = self.hole_pipeline if hole else backend._render_pipeline
+                    if wanted is not pipeline:
+                        layer_pass.set_pipeline(wanted)
+                        pipeline = wanted
+                    if hole:  # a live image: a hole here, the image drawn into the frame every frame
+                        live_bytes.append(command_vertices(commands, command))
+                        self._live.append((tex_id, box, first, command.elem_count))
+                        first += command.elem_count
+                    layer_pass.set_bind_group(1, self._texture_group(tex_id))
+                    x0, y0, x1, y1 = box
+                    layer_pass.set_scissor_rect(x0, y0, x1 - x0, y1 - y0)
+                    layer_pass.draw_indexed(command.elem_count, 1, command.idx_offset + idx_base,
+                                            command.vtx_offset + vtx_base, 0)
+                vtx_base += commands.vtx_buffer.size()
+                idx_base += commands.idx_buffer.size()
+        layer_pass.end()
+        self.device.queue.submit([encoder.finish()])
+        self.rects = gui_rects(draw_data, width, height)
+        if live_bytes:
+            data = b"".join(live_bytes)
+            if self._live_buffer is None or self._live_buffer.size < len(data):
+                if self._live_buffer is not None:
+                    self._live_buffer.destroy()
+                self._live_buffer = self.device.create_buffer(
+                    size=max(len(data), 4096), usage=wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.COPY_DST)
+            self.device.queue.write_buffer(self._live_buffer, 0, data)
+
+    # --- every frame: the layer over the frame -------------------------------------------------------
+    def composite(self, encoder: Any, color_view: Any) -> None:
+        """Record the live images and the GUI layer over ``color_view`` (the frame) on ``encoder``."""
+        frame = color_view.texture
+        if not self.rects or self._size != (frame.size[0], frame.size[1]):
+            return
         # Only the GUI's windows make the round trip: the rest of the frame is never touched.
-        for x, y, w, h in rects:
+        for x, y, w, h in self.rects:
             encoder.copy_texture_to_texture(
                 {"texture": frame, "mip_level": 0, "origin": (x, y, 0)},
                 {"texture": self._texture, "mip_level": 0, "origin": (x, y, 0)},
@@ -120,31 +239,46 @@ class WGPUGuiRenderer:
         gui_pass = encoder.begin_render_pass(color_attachments=[
             {"view": self._view, "load_op": "load", "store_op": "store"}
         ])
-        self.backend.render(draw_data, gui_pass)
+        live = [entry for entry in self._live if entry[0] in self.backend._texture_views]
+        if live:
+            gui_pass.set_pipeline(self.backend._render_pipeline)  # alpha 1: the image's bytes replace the frame's
+            gui_pass.set_bind_group(0, self.backend._bind_group)
+            gui_pass.set_vertex_buffer(0, self._live_buffer)
+            for tex_id, (x0, y0, x1, y1), first, count in live:
+                gui_pass.set_bind_group(1, self._texture_group(tex_id))
+                gui_pass.set_scissor_rect(x0, y0, x1 - x0, y1 - y0)
+                gui_pass.draw(count, 1, first, 0)
+        gui_pass.set_pipeline(self.composite_pipeline)
+        gui_pass.set_bind_group(0, self._layer_group)
+        for x, y, w, h in self.rects:
+            gui_pass.set_scissor_rect(x, y, w, h)
+            gui_pass.draw(3)
         gui_pass.end()
         blit_pass = encoder.begin_render_pass(color_attachments=[
             {"view": color_view, "load_op": "load", "store_op": "store"}
         ])
         blit_pass.set_pipeline(self.blit)
         blit_pass.set_bind_group(0, self._bind_group)
-        for x, y, w, h in rects:
+        for x, y, w, h in self.rects:
             blit_pass.set_scissor_rect(x, y, w, h)
             blit_pass.draw(3)
         blit_pass.end()
 
     def release(self) -> None:
-        """Free the GUI target, ImGui's textures and the backend's buffers."""
+        """Free the GUI target and layer, ImGui's textures and the backend's buffers."""
         backend = self.backend
         for texture in backend._textures.values():
             texture.destroy()
         backend._textures.clear()
         backend._texture_views.clear()
-        for buffer in (backend._vertex_buffer, backend._index_buffer, backend._uniform_buffer):
+        self._texture_groups.clear()
+        for buffer in (backend._vertex_buffer, backend._index_buffer, backend._uniform_buffer, self._live_buffer):
             if buffer is not None:
                 buffer.destroy()
-        if self._texture is not None:
-            self._texture.destroy()
-            self._texture = None
+        for texture in (self._texture, self._layer):
+            if texture is not None:
+                texture.destroy()
+        self._texture = self._layer = None
         for tex in imgui.get_platform_io().textures:
             tex.set_tex_id(0)
             tex.set_status(imgui.ImTextureStatus.destroyed)

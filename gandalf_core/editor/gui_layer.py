@@ -1,0 +1,51 @@
+"""What both GUI backends share for the cached GUI layer.
+
+The GUI is drawn into a transparent *layer* texture only on frames that run the panels; every frame composites
+that layer over the finished frame (premultiplied: ``frame = layer + frame · (1 - layer.a)``, the same as drawing
+the GUI over it, to within a rounding of 1 level) in each window's rectangle. A texture a panel shows live (the
+viewport's) would be frozen in the layer, so the layer gets a transparent hole where it is drawn and the image
+itself is drawn into the frame every frame, before the layer: what the GUI draws over it (the gizmo) stays on top.
+"""
+
+from __future__ import annotations
+
+import ctypes
+from typing import Any
+
+import numpy as np
+from imgui_bundle import imgui
+
+_INDEX = np.uint32 if imgui.INDEX_SIZE == 4 else np.uint16
+
+
+def gui_rects(draw_data: Any, width: int, height: int) -> list[tuple[int, int, int, int]]:
+    """(x, y, w, h) pixel rectangles that hold the GUI: per draw list (a window), its commands' clip rects' union."""
+    rects = []
+    for commands in draw_data.cmd_lists:
+        x0, y0, x1, y1 = float(width), float(height), 0.0, 0.0
+        for command in commands.cmd_buffer:
+            cx0, cy0, cx1, cy1 = command.clip_rect
+            x0, y0, x1, y1 = min(x0, cx0), min(y0, cy0), max(x1, cx1), max(y1, cy1)
+        ix0, iy0 = max(int(x0), 0), max(int(y0), 0)
+        ix1, iy1 = min(int(x1 + 0.999), width), min(int(y1 + 0.999), height)
+        if ix1 > ix0 and iy1 > iy0:
+            rects.append((ix0, iy0, ix1 - ix0, iy1 - iy0))
+    return rects
+
+
+def clip_box(command: Any, width: int, height: int) -> tuple[int, int, int, int] | None:
+    """The command's clip rectangle in whole pixels (x0, y0, x1, y1) inside the frame, or None when empty."""
+    x0, y0, x1, y1 = command.clip_rect
+    x0, y0 = max(int(x0), 0), max(int(y0), 0)
+    x1, y1 = min(int(x1), width), min(int(y1), height)
+    return (x0, y0, x1, y1) if x1 > x0 and y1 > y0 else None
+
+
+def command_vertices(commands: Any, command: Any) -> bytes:
+    """The vertices of one draw command as a plain triangle list (ImGui's vertex layout), for drawing it again."""
+    indices = np.frombuffer(ctypes.string_at(commands.idx_buffer.data_address() + command.idx_offset * imgui.INDEX_SIZE,
+                                             command.elem_count * imgui.INDEX_SIZE), dtype=_INDEX)
+    vertices = np.frombuffer(ctypes.string_at(commands.vtx_buffer.data_address(),
+                                              commands.vtx_buffer.size() * imgui.VERTEX_SIZE), dtype=np.uint8)
+    rows = vertices.reshape(-1, imgui.VERTEX_SIZE)
+    return rows[indices.astype(np.int64) + command.vtx_offset].tobytes()
