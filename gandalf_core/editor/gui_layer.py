@@ -19,18 +19,30 @@ _INDEX = np.uint32 if imgui.INDEX_SIZE == 4 else np.uint16
 
 
 def gui_rects(draw_data: Any, width: int, height: int) -> list[tuple[int, int, int, int]]:
-    """(x, y, w, h) pixel rectangles that hold the GUI: per draw list (a window), its commands' clip rects' union."""
-    rects = []
+    """(x, y, w, h) pixel rectangles that hold the GUI: per draw list (a window), the box around its vertices,
+    inside its commands' clip rectangles. Boxes inside another box are left out (drawn once)."""
+    boxes: list[tuple[int, int, int, int]] = []
     for commands in draw_data.cmd_lists:
+        count = commands.vtx_buffer.size()
+        if count == 0:
+            continue
         x0, y0, x1, y1 = float(width), float(height), 0.0, 0.0
         for command in commands.cmd_buffer:
             cx0, cy0, cx1, cy1 = command.clip_rect
             x0, y0, x1, y1 = min(x0, cx0), min(y0, cy0), max(x1, cx1), max(y1, cy1)
+        raw = ctypes.string_at(commands.vtx_buffer.data_address(), count * imgui.VERTEX_SIZE)
+        xy = np.frombuffer(raw, dtype=np.float32).reshape(count, imgui.VERTEX_SIZE // 4)[:, :2]
+        lo, hi = xy.min(axis=0), xy.max(axis=0)
+        x0, y0 = max(x0, float(lo[0])), max(y0, float(lo[1]))
+        x1, y1 = min(x1, float(hi[0])), min(y1, float(hi[1]))
         ix0, iy0 = max(int(x0), 0), max(int(y0), 0)
-        ix1, iy1 = min(int(x1 + 0.999), width), min(int(y1 + 0.999), height)
+        ix1, iy1 = min(int(x1 + 0.999) + 1, width), min(int(y1 + 0.999) + 1, height)  # + 1: anti-aliased edges
         if ix1 > ix0 and iy1 > iy0:
-            rects.append((ix0, iy0, ix1 - ix0, iy1 - iy0))
-    return rects
+            boxes.append((ix0, iy0, ix1, iy1))
+    kept = [b for i, b in enumerate(boxes)
+            if not any(j != i and o[0] <= b[0] and o[1] <= b[1] and o[2] >= b[2] and o[3] >= b[3]
+                       and (o != b or j < i) for j, o in enumerate(boxes))]
+    return [(x0, y0, x1 - x0, y1 - y0) for x0, y0, x1, y1 in kept]
 
 
 def clip_box(command: Any, width: int, height: int) -> tuple[int, int, int, int] | None:
