@@ -59,6 +59,34 @@ def trs_batch(t: ArrayLike, q: ArrayLike, s: ArrayLike, out: np.ndarray | None =
     return TRSBatch()(t, q, s, out)
 
 
+#: Up to this many matrices, :class:`TRSBatch` computes in plain floats: three dozen numpy calls on arrays of a few
+#: elements cost more than the arithmetic (a scene with one camera and one model, every frame).
+_FEW = 8
+
+
+def _few_trs(t: ArrayLike, q: ArrayLike, s: ArrayLike, out: np.ndarray) -> bool:
+    """T @ R(q/|q|) @ S into ``out`` for a few float64 (n, 3)/(n, 4) arrays of matching length; False (nothing
+    written) for anything else, including non-finite or zero quaternions, so the general path raises its errors."""
+    if not all(isinstance(a, np.ndarray) and a.dtype == np.float64 for a in (t, q, s)) or out.dtype != np.float64:
+        return False
+    n = len(out)
+    if t.shape != (n, 3) or q.shape != (n, 4) or s.shape != (n, 3) or out.shape != (n, 4, 4):
+        return False
+    rows = []
+    for (tx, ty, tz), (w, x, y, z), (sx, sy, sz) in zip(t.tolist(), q.tolist(), s.tolist()):
+        k = w * w + x * x + y * y + z * z
+        if not (k > 0.0 and math.isfinite(k + tx + ty + tz + sx + sy + sz)):
+            return False
+        k = 2.0 / k
+        xk, yk, zk = x * k, y * k, z * k
+        rows.append(((1.0 - (y * yk + z * zk)) * sx, (x * yk - w * zk) * sy, (x * zk + w * yk) * sz, tx,
+                     (x * yk + w * zk) * sx, (1.0 - (x * xk + z * zk)) * sy, (y * zk - w * xk) * sz, ty,
+                     (x * zk - w * yk) * sx, (y * zk + w * xk) * sy, (1.0 - (x * xk + y * yk)) * sz, tz,
+                     0.0, 0.0, 0.0, 1.0))
+    out[...] = np.array(rows).reshape(n, 4, 4)
+    return True
+
+
 class TRSBatch:
     """Builds T @ R @ S for N entities per call, keeping its scratch arrays between calls.
 
@@ -79,6 +107,8 @@ class TRSBatch:
         self._n = n
 
     def __call__(self, t: ArrayLike, q: ArrayLike, s: ArrayLike, out: np.ndarray | None = None) -> np.ndarray:
+        if out is not None and len(out) <= _FEW and _few_trs(t, q, s, out):
+            return out
         qq = _checked(q, "q", (4,)).reshape(-1, 4)
         n = qq.shape[0]
         tt = _checked(t, "t", (3,))

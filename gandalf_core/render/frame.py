@@ -101,8 +101,7 @@ def pack_frame(
     draws at the far one. ``clip_to_direction`` maps a clip-space point on the far plane to a world
     direction (the inverse of projection × the view's rotation).
     """
-    block = FRAME_LAYOUT.new()
-    field = _frame_fields(block)
+    block, field = _FRAME_BLOCK, _FRAME_FIELDS  # reused: every field is written below, the bytes copied out
     field["view"][...] = view
     field["projection"][...] = projection
     field["camera_position"][:3] = np.asarray(camera_position, dtype=np.float64)[:3]
@@ -110,19 +109,10 @@ def pack_frame(
     wraps, wrapped = divmod(float(time), TIME_WRAP)
     field["time"][:3] = (wrapped, dt, wraps)
     field["depth"][:2] = depth_ends
-    rotation_only = np.eye(4)
-    rotation_only[:3, :3] = view[:3, :3]
-    if projection[3, 3] != 0.0 and projection[3, 2] == 0.0:
-        # Orthographic: every pixel would look the same way. Give the sky a 90° perspective of the same
-        # aspect instead, so it still shows a view of the surroundings.
-        aspect = abs(projection[1, 1] / projection[0, 0]) if projection[0, 0] else 1.0
-        projection = np.array([[1 / aspect, 0, 0, 0], [0, 1, 0, 0], [0, 0, -1, -0.2], [0, 0, -1, 0]])
-    try:
-        clip_to_direction = np.linalg.inv(projection @ rotation_only)
-    except np.linalg.LinAlgError:
-        clip_to_direction = np.eye(4)
-    field["clip_to_direction"][...] = clip_to_direction
-    if origin is not None:
+    field["clip_to_direction"][...] = _clip_to_direction(projection, view[:3, :3])
+    if origin is None:
+        field["origin_high"][:3] = field["origin_low"][:3] = 0.0
+    else:
         origin = np.asarray(origin, dtype=np.float64)
         high = origin.astype(np.float32)
         field["origin_high"][:3] = high
@@ -130,9 +120,35 @@ def pack_frame(
     return block.tobytes()
 
 
+def _clip_to_direction(projection: np.ndarray, rotation: np.ndarray) -> np.ndarray:
+    """The inverse of projection x the view's rotation; the last one is kept, as the camera rarely changes."""
+    global _LAST_CLIP_TO_DIRECTION
+    key = projection.tobytes() + rotation.tobytes()
+    if _LAST_CLIP_TO_DIRECTION[0] == key:
+        return _LAST_CLIP_TO_DIRECTION[1]
+    rotation_only = np.eye(4)
+    rotation_only[:3, :3] = rotation
+    if projection[3, 3] != 0.0 and projection[3, 2] == 0.0:
+        # Orthographic: every pixel would look the same way. Give the sky a 90° perspective of the same
+        # aspect instead, so it still shows a view of the surroundings.
+        aspect = abs(projection[1, 1] / projection[0, 0]) if projection[0, 0] else 1.0
+        projection = np.array([[1 / aspect, 0, 0, 0], [0, 1, 0, 0], [0, 0, -1, -0.2], [0, 0, -1, 0]])
+    try:
+        inverse = np.linalg.inv(projection @ rotation_only)
+    except np.linalg.LinAlgError:
+        inverse = np.eye(4)
+    _LAST_CLIP_TO_DIRECTION = (key, inverse)
+    return inverse
+
+
 def _frame_fields(block: np.ndarray) -> dict[str, np.ndarray]:
     """Typed views of every field of a frame block (FRAME_LAYOUT's offsets), to fill by name."""
     return {name: FRAME_LAYOUT.view(block, name) for name in FRAME_LAYOUT.names()}
+
+
+_FRAME_BLOCK = FRAME_LAYOUT.new()
+_FRAME_FIELDS = _frame_fields(_FRAME_BLOCK)
+_LAST_CLIP_TO_DIRECTION: tuple[bytes, np.ndarray] = (b"", np.eye(4))
 
 
 def instance_capacity(nbytes: int) -> int:

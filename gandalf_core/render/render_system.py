@@ -9,6 +9,8 @@ batch of their own with clockwise front faces, so culling keeps the faces that p
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ..components import (
@@ -30,6 +32,7 @@ from .color import srgb_rgba_to_linear
 from .frame import DrawBatch, FrameData, pack_frame, pack_instances
 
 DEFAULT_CLEAR = (0.0, 0.0, 0.0, 1.0)
+_FEW_INSTANCES = 8
 _NO_LIGHTS = pack_lights([]) + pack_shadow([])
 # Offset of shadow.x in the lights block.
 _SHADOW_ON_OFFSET = LIGHTS_LAYOUT.offset("shadow")
@@ -45,6 +48,8 @@ class RenderSystem(System):
         self.batches: list[DrawBatch] = []
         self._rows: np.ndarray | slice = np.zeros(0, dtype=np.intp)
         self._instances: np.ndarray | None = None
+        self._clear_key: bytes = b""
+        self._clear_linear = np.zeros(4)
 
     def on_create_system(self) -> None:
         scene = self.scene
@@ -56,7 +61,11 @@ class RenderSystem(System):
     def clear_color(self) -> np.ndarray:
         """The first ClearColorComponent's colour in linear light (black when the scene has none)."""
         comps = self._backgrounds.components
-        return srgb_rgba_to_linear(comps[0][0].color if comps else DEFAULT_CLEAR)
+        srgb = np.asarray(comps[0][0].color if comps else DEFAULT_CLEAR, dtype=np.float64)
+        key = srgb.tobytes()
+        if key != self._clear_key:  # converted again only when the colour changes
+            self._clear_key, self._clear_linear = key, srgb_rgba_to_linear(srgb)
+        return self._clear_linear
     # --8<-- [end:clear_color]
 
     def primary_camera(self) -> tuple[object, CameraComponent, TransformComponent] | None:
@@ -143,6 +152,11 @@ class RenderSystem(System):
         frame); the few rows where float32 cannot tell (a determinant that underflows to 0 or overflows, at
         scales like 1e-20 or 1e20) are decided again in float64 from the world matrices."""
         p = self._instances.reshape(-1, 3, 4)
+        if len(p) <= _FEW_INSTANCES:  # plain floats: cheaper than a dozen numpy calls on a handful of rows
+            dets = [a0 * (b1 * c2 - b2 * c1) + a1 * (b2 * c0 - b0 * c2) + a2 * (b0 * c1 - b1 * c0)
+                    for (a0, b0, c0, _), (a1, b1, c1, _), (a2, b2, c2, _) in p.tolist()]
+            if all(math.isfinite(d) and d != 0.0 for d in dets):
+                return np.array(dets) < 0.0
         with np.errstate(over="ignore", invalid="ignore"):  # the rows it overflows in are decided below
             det = np.einsum("ij,ij->i", p[:, :, 0], cross3(p[:, :, 1], p[:, :, 2]))
         unsure = ~np.isfinite(det) | (det == 0.0)
