@@ -1,5 +1,6 @@
 #version 330 core
-// Blinn-Phong with the engine's lights (positions relative to the camera, which sits at the origin).
+// Blinn-Phong with the engine's lights
+// (positions relative to the camera, which sits at the origin).
 #include "frame.glsl"
 in vec3 v_position;
 in vec3 v_normal;

@@ -1,4 +1,5 @@
-// pyGANDALF comparison: Blinn-Phong with the engine's lights (positions relative to the camera, at the origin).
+// pyGANDALF comparison: Blinn-Phong with the engine's lights
+// (positions relative to the camera, at the origin).
 #include "frame.wgsl"
 #include "instance.wgsl"
 struct Material { color: vec4<f32> };
@@ -8,7 +9,8 @@ struct VOut {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
 };
-@vertex fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, inst: Instance) -> VOut {
+@vertex fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>,
+    inst: Instance) -> VOut {
     var out: VOut;
     let world = instance_model(inst) * vec4<f32>(position, 1.0);
     out.position = world.xyz;

@@ -1,10 +1,12 @@
-// Normal-shaded: one colour, lit by a fixed world-space light: ambient 0.3 plus Lambert 0.7 (linear light).
+// Normal-shaded: one colour, lit by a fixed world-space light:
+// ambient 0.3 plus Lambert 0.7 (linear light).
 #include "frame.wgsl"
 #include "instance.wgsl"
 struct Material { color: vec4<f32> };
 @group(1) @binding(0) var<uniform> material: Material;
 struct VOut { @builtin(position) position: vec4<f32>, @location(0) normal: vec3<f32> };
-@vertex fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, inst: Instance) -> VOut {
+@vertex fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>,
+    inst: Instance) -> VOut {
     var out: VOut;
     out.position = frame.projection * frame.view * instance_model(inst) * vec4<f32>(position, 1.0);
     out.normal = instance_normal(inst, normal);  // correct under any scale

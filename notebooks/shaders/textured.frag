@@ -5,7 +5,8 @@ in vec2 v_uv;
 layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
     vec4 color;  // MaterialData.color, already in linear light
 } material;
-uniform sampler2D u_albedo;  // the material's first texture; its sampler state comes with it in OpenGL
+uniform sampler2D u_albedo;  // the material's first texture; its sampler state
+                             // comes with it in OpenGL
 
 out vec4 f_color;
 

@@ -16,7 +16,8 @@ struct VertexOut {
 };
 
 @vertex
-fn vs_main(@location(0) position: vec3<f32>, @location(2) uv: vec2<f32>, inst: Instance) -> VertexOut {
+fn vs_main(@location(0) position: vec3<f32>, @location(2) uv: vec2<f32>,
+    inst: Instance) -> VertexOut {
     var out: VertexOut;
     out.uv = uv;  // interpolated (perspective-correct) across the triangle
     out.position = frame.projection * frame.view * instance_model(inst) * vec4<f32>(position, 1.0);

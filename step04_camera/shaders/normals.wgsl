@@ -5,7 +5,8 @@ struct Material { color: vec4<f32> };
 @group(1) @binding(0) var<uniform> material: Material;
 struct VOut { @builtin(position) position: vec4<f32>, @location(0) normal: vec3<f32> };
 
-@vertex fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, inst: Instance) -> VOut {
+@vertex fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>,
+    inst: Instance) -> VOut {
     var out: VOut;
     out.position = frame.projection * frame.view * instance_model(inst) * vec4<f32>(position, 1.0);
     out.normal = instance_normal(inst, normal);

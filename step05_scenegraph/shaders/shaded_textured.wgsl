@@ -11,7 +11,8 @@ struct VOut {
     @location(1) uv: vec2<f32>,
 };
 @vertex fn vs_main(
-    @location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, @location(2) uv: vec2<f32>, inst: Instance,
+    @location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, @location(2) uv: vec2<f32>,
+    inst: Instance,
 ) -> VOut {
     var out: VOut;
     out.position = frame.projection * frame.view * instance_model(inst) * vec4<f32>(position, 1.0);

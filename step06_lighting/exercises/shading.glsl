@@ -2,10 +2,13 @@
 // Every function returns magenta until you write it. Keep them free of NaN for any input.
 
 // One light's contribution (linear RGB) at a surface point, Blinn-Phong:
-//     (albedo * max(n·l, 0) + specular * max(n·h, 0)^shininess * max(n·l, 0)) * radiance,  h = normalize(l + v)
+//     (albedo * max(n·l, 0) + specular * max(n·h, 0)^shininess * max(n·l, 0)) * radiance,
+//     h = normalize(l + v)
 // n: unit normal, l: unit direction towards the light, v: unit direction towards the eye,
-// radiance: the light's linear colour × intensity × attenuation. Shininess may be 0 (pow(0, 0)!) or 1e4.
-vec3 blinn_phong(vec3 n, vec3 l, vec3 v, vec3 radiance, vec3 albedo, float specular, float shininess) {
+// radiance: the light's linear colour × intensity × attenuation.
+// Shininess may be 0 (pow(0, 0)!) or 1e4.
+vec3 blinn_phong(vec3 n, vec3 l, vec3 v, vec3 radiance, vec3 albedo, float specular,
+    float shininess) {
     return vec3(1.0, 0.0, 1.0);
 }
 
@@ -14,7 +17,8 @@ vec3 reflect_direction(vec3 i, vec3 n) {
     return vec3(1.0, 0.0, 1.0);
 }
 
-// The refracted direction for unit i and n and eta = n1 / n2; the zero vector on total internal reflection.
+// The refracted direction for unit i and n and eta = n1 / n2; the
+// zero vector on total internal reflection.
 vec3 refract_direction(vec3 i, vec3 n, float eta) {
     return vec3(1.0, 0.0, 1.0);
 }

@@ -1,4 +1,5 @@
-// Ice or glass: the environment seen through one refraction, mixed with the reflection by Schlick's Fresnel.
+// Ice or glass: the environment seen through one refraction, mixed
+// with the reflection by Schlick's Fresnel.
 #include "lit_vertex.wgsl"
 #include "lighting.wgsl"
 
@@ -10,6 +11,7 @@ struct Material {
 @group(1) @binding(1) var env: texture_cube<f32>;
 @group(1) @binding(2) var env_sampler: sampler;
 
+// --8<-- [start:fragment]
 @fragment
 fn fs_main(in: LitOut) -> @location(0) vec4<f32> {
     let n = safe_normalize(in.normal, vec3<f32>(0.0, 1.0, 0.0));
@@ -17,7 +19,8 @@ fn fs_main(in: LitOut) -> @location(0) vec4<f32> {
     let ior = max(material.ior, 1e-3);
     let r = reflect_direction(i, n);
     var t = refract_direction(i, n, 1.0 / ior);
-    // Total internal reflection gives t = 0: a zero lookup direction is undefined, so reflect instead.
+    // Total internal reflection gives t = 0: a zero lookup direction is
+    // undefined, so reflect instead.
     t = select(r, t, dot(t, t) > 1e-12);
     let f0 = (ior - 1.0) * (ior - 1.0) / ((ior + 1.0) * (ior + 1.0));
     let cos_i = clamp(-dot(i, n), 0.0, 1.0);
@@ -27,3 +30,4 @@ fn fs_main(in: LitOut) -> @location(0) vec4<f32> {
     let reflected = textureSample(env, env_sampler, r).rgb;
     return vec4<f32>(mix(refracted, reflected, fresnel), 1.0);
 }
+// --8<-- [end:fragment]

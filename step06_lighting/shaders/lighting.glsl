@@ -1,10 +1,13 @@
-// All lights of the Lights block at one surface point: ambient + the sum of blinn_phong() over the lights.
-// blinn_phong() comes from shading.glsl, which the variant file finds in exercises/ or solutions/.
+// All lights of the Lights block at one surface point: ambient + the sum
+// of blinn_phong() over the lights. blinn_phong() comes from
+// shading.glsl, which the variant file finds in exercises/ or solutions/.
 #include "frame.glsl"
 #include "shading.glsl"
 
-// Unit direction towards the light and its radiance (colour × intensity × distance falloff) at point p.
-// A point light exactly at p lights it head-on (l = n) instead of normalising a zero vector.
+// --8<-- [start:lights]
+// Unit direction towards the light and its radiance
+// (colour × intensity × distance falloff) at point p. A point light exactly
+// at p lights it head-on (l = n) instead of normalising a zero vector.
 void light_at(int i, vec3 p, vec3 n, out vec3 l, out vec3 radiance) {
     vec4 position = u_light_position[i];
     vec4 color = u_light_color[i];
@@ -34,6 +37,7 @@ vec3 shade(vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, float shininess)
     }
     return color;
 }
+// --8<-- [end:lights]
 
 // A unit vector from a possibly unnormalised (or zero) one: interpolated normals can cancel out.
 vec3 safe_normalize(vec3 v, vec3 fallback) {

@@ -1,8 +1,10 @@
-// All lights of the lights block at one surface point: ambient + the sum of blinn_phong() over the lights.
-// blinn_phong() comes from shading.wgsl, which the variant file finds in exercises/ or solutions/.
+// All lights of the lights block at one surface point: ambient + the sum
+// of blinn_phong() over the lights. blinn_phong() comes from
+// shading.wgsl, which the variant file finds in exercises/ or solutions/.
 #include "frame.wgsl"
 #include "shading.wgsl"
 
+// --8<-- [start:lights]
 struct LightSample {
     l: vec3<f32>,         // unit direction towards the light
     radiance: vec3<f32>,  // colour × intensity × distance falloff
@@ -13,7 +15,8 @@ fn light_at(i: i32, p: vec3<f32>, n: vec3<f32>) -> LightSample {
     let position = lights.position[i];
     let color = lights.color[i];
     if (position.w < 0.5) {
-        return LightSample(position.xyz, color.rgb);  // directional: already a unit vector towards the light
+        return LightSample(position.xyz, color.rgb);  // directional: already a unit
+                                                      // vector towards the light
     }
     let d = position.xyz - p;
     let distance = length(d);
@@ -28,7 +31,8 @@ fn light_at(i: i32, p: vec3<f32>, n: vec3<f32>) -> LightSample {
     return LightSample(l, radiance);
 }
 
-fn shade(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, albedo: vec3<f32>, specular: f32, shininess: f32) -> vec3<f32> {
+fn shade(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, albedo: vec3<f32>, specular: f32,
+    shininess: f32) -> vec3<f32> {
     var color = lights.ambient.rgb * albedo;
     let count = min(lights.count.x, i32(MAX_LIGHTS));
     for (var i = 0; i < count; i++) {
@@ -37,6 +41,7 @@ fn shade(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, albedo: vec3<f32>, specular: 
     }
     return color;
 }
+// --8<-- [end:lights]
 
 // A unit vector from a possibly unnormalised (or zero) one: interpolated normals can cancel out.
 fn safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {

@@ -1,4 +1,5 @@
-// The vertex stage of the lit shaders (phong, mirror, glass, emissive): world-space position and normal.
+// The vertex stage of the lit shaders
+// (phong, mirror, glass, emissive): world-space position and normal.
 #include "frame.wgsl"
 #include "instance.wgsl"
 
@@ -9,7 +10,8 @@ struct LitOut {
 };
 
 @vertex
-fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, inst: Instance) -> LitOut {
+fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>,
+    inst: Instance) -> LitOut {
     let world = instance_model(inst) * vec4<f32>(position, 1.0);
     var out: LitOut;
     out.position = frame.projection * frame.view * world;

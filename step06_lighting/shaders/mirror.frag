@@ -1,5 +1,6 @@
 #version 330 core
-// A mirror (the silver bunny): the environment seen in the reflected direction, tinted by the colour.
+// A mirror (the silver bunny): the environment seen in the reflected
+// direction, tinted by the colour.
 #include "lighting.glsl"
 in vec3 v_world;
 in vec3 v_normal;

@@ -1,4 +1,5 @@
-// A mirror (the silver bunny): the environment seen in the reflected direction, tinted by the colour.
+// A mirror (the silver bunny): the environment seen in the reflected
+// direction, tinted by the colour.
 #include "lit_vertex.wgsl"
 #include "lighting.wgsl"
 

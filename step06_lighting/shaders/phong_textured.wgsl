@@ -20,8 +20,8 @@ struct TexturedOut {
 };
 
 @vertex
-fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, @location(2) uv: vec2<f32>,
-           inst: Instance) -> TexturedOut {
+fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>,
+           @location(2) uv: vec2<f32>, inst: Instance) -> TexturedOut {
     let world = instance_model(inst) * vec4<f32>(position, 1.0);
     var out: TexturedOut;
     out.position = frame.projection * frame.view * world;

@@ -1,10 +1,12 @@
 // Reference solution: the shading functions of step 06 in GLSL.
 
-vec3 blinn_phong(vec3 n, vec3 l, vec3 v, vec3 radiance, vec3 albedo, float specular, float shininess) {
+vec3 blinn_phong(vec3 n, vec3 l, vec3 v, vec3 radiance, vec3 albedo, float specular,
+    float shininess) {
     float n_dot_l = max(dot(n, l), 0.0);
     vec3 h = l + v;
     float h_length = length(h);
-    // l = -v (light straight behind the surface seen from the eye) has no half vector; n_dot_l is 0 there anyway.
+    // l = -v (light straight behind the surface seen from the eye) has
+    // no half vector; n_dot_l is 0 there anyway.
     h = h_length > 1e-6 ? h / h_length : n;
     // pow(0, 0) is undefined in GLSL: shininess 0 means "no falloff", so the lobe is 1 everywhere.
     float lobe = shininess > 0.0 ? pow(max(dot(n, h), 0.0), shininess) : 1.0;

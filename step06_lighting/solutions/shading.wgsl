@@ -5,7 +5,8 @@ fn blinn_phong(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, radiance: vec3<f32>, al
     let n_dot_l = max(dot(n, l), 0.0);
     let h_sum = l + v;
     let h_length = length(h_sum);
-    // l = -v (light straight behind the surface seen from the eye) has no half vector; n_dot_l is 0 there anyway.
+    // l = -v (light straight behind the surface seen from the eye) has
+    // no half vector; n_dot_l is 0 there anyway.
     let h = select(n, h_sum / max(h_length, 1e-6), h_length > 1e-6);
     // pow(0, 0) is undefined: shininess 0 means "no falloff", so the lobe is 1 everywhere.
     let lobe = select(1.0, pow(max(dot(n, h), 0.0), shininess), shininess > 0.0);

@@ -182,7 +182,7 @@ def test_glsl_error_names_file_and_line(frag, line):
 
 def test_wgsl_error_names_file_and_line():
     with Application("webgpu", 8, 8, headless=True) as app:
-        with pytest.raises(ShaderCompileError, match=r"broken\.wgsl:5:"):
+        with pytest.raises(ShaderCompileError, match=r"broken\.wgsl:7:"):
             app.renderer.shaders.build("broken", SHADERS / "broken.wgsl")
 
 

@@ -10,6 +10,7 @@ layout(std140) uniform Material {  // the material's values, the same bytes as W
 } material;
 out vec4 f_color;
 void main() {
-    vec3 lit = gandalf_builtin_lighting(v_world, v_normal, material.color.rgb, material.specular, material.shininess);
+    vec3 lit = gandalf_builtin_lighting(v_world, v_normal, material.color.rgb, material.specular,
+        material.shininess);
     f_color = vec4(lit, material.color.a);
 }

@@ -3,12 +3,15 @@
 #include "builtin_lighting.wgsl"
 struct Material { color: vec4<f32>, specular: f32, shininess: f32 };
 @group(1) @binding(0) var<uniform> material: Material;
-struct LitOut { @builtin(position) position: vec4<f32>, @location(0) world: vec3<f32>, @location(1) normal: vec3<f32> };
-@vertex fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, inst: Instance) -> LitOut {
+struct LitOut { @builtin(position) position: vec4<f32>, @location(0) world: vec3<f32>,
+    @location(1) normal: vec3<f32> };
+@vertex fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>,
+    inst: Instance) -> LitOut {
     let world = instance_model(inst) * vec4<f32>(position, 1.0);
     return LitOut(frame.projection * frame.view * world, world.xyz, instance_normal(inst, normal));
 }
 @fragment fn fs_main(in: LitOut) -> @location(0) vec4<f32> {
-    let lit = gandalf_builtin_lighting(in.world, in.normal, material.color.rgb, material.specular, material.shininess);
+    let lit = gandalf_builtin_lighting(in.world, in.normal, material.color.rgb, material.specular,
+        material.shininess);
     return vec4<f32>(lit, material.color.a);
 }

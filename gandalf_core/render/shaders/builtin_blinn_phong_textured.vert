@@ -1,5 +1,6 @@
 #version 330 core
-// Built-in material gandalf.blinn_phong with a texture: world-space position, normal and texture coordinates.
+// Built-in material gandalf.blinn_phong with a texture: world-space
+// position, normal and texture coordinates.
 #include "frame.glsl"
 #include "instance.glsl"
 layout(location = 0) in vec3 a_position;

@@ -1,4 +1,5 @@
-// Built-in material gandalf.blinn_phong with a texture: the scene's lights on the colour times the texture.
+// Built-in material gandalf.blinn_phong with a texture: the scene's
+// lights on the colour times the texture.
 #include "instance.wgsl"
 #include "builtin_lighting.wgsl"
 struct Material { color: vec4<f32>, specular: f32, shininess: f32 };
@@ -11,13 +12,15 @@ struct LitOut {
     @location(1) normal: vec3<f32>,
     @location(2) uv: vec2<f32>,
 };
-@vertex fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, @location(2) uv: vec2<f32>,
-                   inst: Instance) -> LitOut {
+@vertex fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>,
+                   @location(2) uv: vec2<f32>, inst: Instance) -> LitOut {
     let world = instance_model(inst) * vec4<f32>(position, 1.0);
-    return LitOut(frame.projection * frame.view * world, world.xyz, instance_normal(inst, normal), uv);
+    return LitOut(frame.projection * frame.view * world, world.xyz,
+                  instance_normal(inst, normal), uv);
 }
 @fragment fn fs_main(in: LitOut) -> @location(0) vec4<f32> {
     let albedo = material.color * textureSample(color_texture, color_sampler, in.uv);
-    let lit = gandalf_builtin_lighting(in.world, in.normal, albedo.rgb, material.specular, material.shininess);
+    let lit = gandalf_builtin_lighting(in.world, in.normal, albedo.rgb, material.specular,
+        material.shininess);
     return vec4<f32>(lit, albedo.a);
 }

@@ -1,5 +1,6 @@
-// The engine's built-in lit material (gandalf.blinn_phong): ambient + every light of the Lights block, each with
-// the Blinn-Phong model. Self-contained on purpose: step 06's exercise asks you to write this model yourself.
+// The engine's built-in lit material (gandalf.blinn_phong): ambient + every light of the Lights
+// block, each with the Blinn-Phong model. Self-contained on purpose: step 06's exercise asks you to
+// write this model yourself.
 #include "frame.glsl"
 
 vec3 gandalf_builtin_lighting(vec3 p, vec3 normal, vec3 albedo, float specular, float shininess) {

@@ -1,5 +1,6 @@
-// The engine's built-in lit material (gandalf.blinn_phong): ambient + every light of the lights block, each with
-// the Blinn-Phong model. Self-contained on purpose: step 06's exercise asks you to write this model yourself.
+// The engine's built-in lit material (gandalf.blinn_phong): ambient + every light of the lights
+// block, each with the Blinn-Phong model. Self-contained on purpose: step 06's exercise asks you to
+// write this model yourself.
 #include "frame.wgsl"
 
 fn gandalf_builtin_lighting(p: vec3<f32>, normal: vec3<f32>, albedo: vec3<f32>, specular: f32,

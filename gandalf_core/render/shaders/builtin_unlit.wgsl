@@ -3,7 +3,8 @@
 #include "instance.wgsl"
 struct Material { color: vec4<f32> };
 @group(1) @binding(0) var<uniform> material: Material;
-@vertex fn vs_main(@location(0) position: vec3<f32>, inst: Instance) -> @builtin(position) vec4<f32> {
+@vertex fn vs_main(@location(0) position: vec3<f32>,
+    inst: Instance) -> @builtin(position) vec4<f32> {
     return frame.projection * frame.view * instance_model(inst) * vec4<f32>(position, 1.0);
 }
 @fragment fn fs_main() -> @location(0) vec4<f32> { return material.color; }

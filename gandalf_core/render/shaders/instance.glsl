@@ -9,8 +9,9 @@ mat4 instance_model() {
 }
 
 // The normal matrix as the cofactor matrix of the model's 3x3 part: proportional to the inverse
-// transpose, finite even for zero scale, and cheap (three cross products). The columns are first divided by
-// their largest component (no squares: they would underflow), so scales from 1e-30 to 1e30 keep their normals.
+// transpose, finite even for zero scale, and cheap (three cross products). The columns are first
+// divided by their largest component (no squares: they would underflow), so scales from 1e-30 to
+// 1e30 keep their normals.
 vec3 instance_normal(vec3 n) {
     mat3 m = mat3(instance_model());
     vec3 a = max(max(abs(m[0]), abs(m[1])), abs(m[2]));

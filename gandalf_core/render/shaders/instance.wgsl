@@ -11,8 +11,9 @@ fn instance_model(inst: Instance) -> mat4x4<f32> {
 }
 
 // The normal matrix as the cofactor matrix of the model's 3x3 part: proportional to the inverse
-// transpose, finite even for zero scale, and cheap (three cross products). The columns are first divided by
-// their largest component (no squares: they would underflow), so scales from 1e-30 to 1e30 keep their normals.
+// transpose, finite even for zero scale, and cheap (three cross products). The columns are first
+// divided by their largest component (no squares: they would underflow), so scales from 1e-30 to
+// 1e30 keep their normals.
 fn instance_normal(inst: Instance, n: vec3<f32>) -> vec3<f32> {
     let m = instance_model(inst);
     let a = max(max(abs(m[0].xyz), abs(m[1].xyz)), abs(m[2].xyz));

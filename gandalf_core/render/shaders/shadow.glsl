@@ -1,5 +1,6 @@
 // Shadow mapping: how much of the shadow-casting light reaches a surface point (1 = all, 0 = none).
-// The engine binds its shadow map to u_shadow_map (texture unit 15, not one of the material's textures).
+// The engine binds its shadow map to u_shadow_map
+// (texture unit 15, not one of the material's textures).
 #include "frame.glsl"
 uniform sampler2DShadow u_shadow_map;
 
@@ -9,7 +10,8 @@ float shadow_factor(vec3 world_position, vec3 normal) {
     }
     vec4 clip = u_light_view_projection * vec4(world_position, 1.0);
     vec3 ndc = clip.xyz / clip.w;
-    // OpenGL: NDC x, y, z in [-1, 1]; texture coordinates and stored depth in [0, 1], row 0 at the bottom.
+    // OpenGL: NDC x, y, z in [-1, 1]; texture coordinates and stored
+    // depth in [0, 1], row 0 at the bottom.
     vec3 coord = ndc * 0.5 + 0.5;
     if (any(lessThan(coord, vec3(0.0))) || any(greaterThan(coord, vec3(1.0)))) {
         return 1.0;  // outside the light's box: nothing there was drawn into the map
@@ -23,7 +25,8 @@ float shadow_factor(vec3 world_position, vec3 normal) {
     float lit = 0.0;
     for (int y = -1; y <= 1; ++y) {
         for (int x = -1; x <= 1; ++x) {
-            lit += textureLod(u_shadow_map, vec3(coord.xy + vec2(x, y) * u_shadow.z, reference), 0.0);
+            lit += textureLod(u_shadow_map,
+                              vec3(coord.xy + vec2(x, y) * u_shadow.z, reference), 0.0);
         }
     }
     return lit / 9.0;

@@ -7,7 +7,8 @@ fn vs_main(@location(0) position: vec3<f32>, inst: Instance) -> @builtin(positio
     return lights.light_view_projection * instance_model(inst) * vec4<f32>(position, 1.0);
 }
 
-// Depth only: the rasteriser stores it, this stage adds nothing (the pipeline has no colour target).
+// Depth only: the rasteriser stores it, this stage adds nothing
+// (the pipeline has no colour target).
 @fragment
 fn fs_main() {
 }

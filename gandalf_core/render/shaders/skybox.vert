@@ -1,5 +1,6 @@
 #version 330 core
-// The sky: one triangle covering the screen at the far plane; each pixel looks up its view direction.
+// The sky: one triangle covering the screen at the far plane; each
+// pixel looks up its view direction.
 #include "frame.glsl"
 out vec3 v_direction;
 void main() {

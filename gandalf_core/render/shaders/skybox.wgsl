@@ -1,4 +1,5 @@
-// The sky: one triangle covering the screen at the far plane; each pixel looks up its view direction.
+// The sky: one triangle covering the screen at the far plane; each
+// pixel looks up its view direction.
 #include "frame.wgsl"
 @group(1) @binding(0) var sky: texture_cube<f32>;
 @group(1) @binding(1) var sky_sampler: sampler;

@@ -10,7 +10,8 @@ void main() {
     vec3 n = normalize(v_normal);
     vec3 c = u_ambient.rgb * material.color.rgb;
     for (int i = 0; i < u_light_count.x; ++i) {
-        c += material.color.rgb * u_light_color[i].rgb * max(dot(n, normalize(u_light_position[i].xyz)), 0.0);
+        c += material.color.rgb * u_light_color[i].rgb * max(dot(n,
+            normalize(u_light_position[i].xyz)), 0.0);
     }
     f_color = vec4(c, 1.0);
 }

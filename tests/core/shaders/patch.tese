@@ -1,5 +1,6 @@
 #version 410 core
-// Test shader: bilinear interpolation of the quad's corners (0, 1, 2, 3 counter-clockwise), then a dome.
+// Test shader: bilinear interpolation of the quad's corners
+// (0, 1, 2, 3 counter-clockwise), then a dome.
 #include "frame.glsl"
 layout(quads, equal_spacing, ccw) in;
 void main() {
