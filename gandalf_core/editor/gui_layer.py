@@ -39,10 +39,32 @@ def gui_rects(draw_data: Any, width: int, height: int) -> list[tuple[int, int, i
         ix1, iy1 = min(int(x1 + 0.999) + 1, width), min(int(y1 + 0.999) + 1, height)  # + 1: anti-aliased edges
         if ix1 > ix0 and iy1 > iy0:
             boxes.append((ix0, iy0, ix1, iy1))
-    kept = [b for i, b in enumerate(boxes)
-            if not any(j != i and o[0] <= b[0] and o[1] <= b[1] and o[2] >= b[2] and o[3] >= b[3]
-                       and (o != b or j < i) for j, o in enumerate(boxes))]
-    return [(x0, y0, x1 - x0, y1 - y0) for x0, y0, x1, y1 in kept]
+    return [(x0, y0, x1 - x0, y1 - y0) for x0, y0, x1, y1 in merge_boxes(boxes)]
+
+
+def _area(b: tuple[int, int, int, int]) -> int:
+    return (b[2] - b[0]) * (b[3] - b[1])
+
+
+def merge_boxes(boxes: list[tuple[int, int, int, int]], slack: float = 0.05) -> list[tuple[int, int, int, int]]:
+    """Fewer boxes covering the same pixels: two boxes become their union when that adds at most ``slack`` of it
+    (panels side by side, a box inside another). Each box left costs a copy and two draws per frame."""
+    boxes = list(dict.fromkeys(boxes))
+    merged = True
+    while merged and len(boxes) > 1:
+        merged = False
+        for i in range(len(boxes)):
+            for j in range(i + 1, len(boxes)):
+                a, b = boxes[i], boxes[j]
+                union = (min(a[0], b[0]), min(a[1], b[1]), max(a[2], b[2]), max(a[3], b[3]))
+                if _area(union) <= (_area(a) + _area(b)) + slack * _area(union):
+                    boxes[i] = union
+                    del boxes[j]
+                    merged = True
+                    break
+            if merged:
+                break
+    return boxes
 
 
 def clip_box(command: Any, width: int, height: int) -> tuple[int, int, int, int] | None:
