@@ -1,20 +1,24 @@
 // Exercise: the metallic-roughness microfacet BRDF in GLSL (included by the step's PBR shaders).
 // Every function returns a neutral value (magenta for colours) until you write it.
-// Rules graded for EVERY input, including roughness 0 and 1, cosines 0 (grazing) and out of range, black base
-// colours: the result is finite (no NaN/Inf: watch 0/0 and pow(0, 0)) and matches the formula below.
+// Rules graded for EVERY input, including roughness 0 and 1, cosines 0
+// (grazing) and out of range, black base colours: the result is finite
+// (no NaN/Inf: watch 0/0 and pow(0, 0)) and matches the formula below.
 
 // GGX / Trowbridge-Reitz normal distribution D(h) = alpha² / (pi ((n·h)² (alpha² - 1) + 1)²).
-// Clamp the perceptual roughness to [0.045, 1] first and square it: alpha = roughness². Clamp n·h to [0, 1].
+// Clamp the perceptual roughness to [0.045, 1] first and square
+// it: alpha = roughness². Clamp n·h to [0, 1].
 float distribution_ggx(float n_dot_h, float roughness) {
     return 0.0;
 }
 
-// Schlick-GGX's k for direct (analytic) lights: k = (roughness + 1)² / 8, roughness clamped to [0, 1].
+// Schlick-GGX's k for direct (analytic) lights:
+// k = (roughness + 1)² / 8, roughness clamped to [0, 1].
 float k_direct(float roughness) {
     return 0.0;
 }
 
-// Schlick-GGX's k for image-based light: k = alpha / 2 = roughness² / 2, roughness clamped to [0, 1].
+// Schlick-GGX's k for image-based light:
+// k = alpha / 2 = roughness² / 2, roughness clamped to [0, 1].
 float k_ibl(float roughness) {
     return 0.0;
 }
@@ -30,27 +34,28 @@ vec3 fresnel_schlick(float cos_theta, vec3 f0) {
     return vec3(1.0, 0.0, 1.0);
 }
 
-// Schlick's Fresnel for image-based light (Lagarde): f0 + (max(1 - roughness, f0) - f0) (1 - cos_theta)^5,
-// cos_theta and roughness clamped to [0, 1] (max per channel).
+// Schlick's Fresnel for image-based light (Lagarde): f0 + (max(1 - roughness, f0) - f0)
+// (1 - cos_theta)^5, cos_theta and roughness clamped to [0, 1] (max per channel).
 vec3 fresnel_schlick_roughness(float cos_theta, vec3 f0, float roughness) {
     return vec3(1.0, 0.0, 1.0);
 }
 
 // Metallic-roughness workflow, the reflectance at normal incidence: F0 = mix(0.04, base, metallic)
-// (dielectrics reflect 4 %, metals tint their reflection with the base colour); metallic clamped to [0, 1].
+// (dielectrics reflect 4 %, metals tint their reflection with the
+// base colour); metallic clamped to [0, 1].
 vec3 base_reflectance(vec3 base, float metallic) {
     return vec3(1.0, 0.0, 1.0);
 }
 
-// Metallic-roughness workflow, the diffuse albedo: base (1 - metallic) (1 - fresnel), metallic clamped to
-// [0, 1]. Metals scatter no light diffusely; what Fresnel reflects is not scattered. (The Lambert BRDF is
-// this albedo / pi; the shaders divide.)
+// Metallic-roughness workflow, the diffuse albedo: base (1 - metallic) (1 - fresnel), metallic
+// clamped to [0, 1]. Metals scatter no light diffusely; what Fresnel reflects is not scattered.
+// (The Lambert BRDF is this albedo / pi; the shaders divide.)
 vec3 diffuse_albedo(vec3 base, float metallic, vec3 fresnel) {
     return vec3(1.0, 0.0, 1.0);
 }
 
-// The Cook-Torrance specular BRDF  D G F / (4 (n·v)(n·l))  for unit n, v (towards the eye), l (towards the
-// light), roughness in [0, 1] and f0, built from the functions above:
+// The Cook-Torrance specular BRDF  D G F / (4 (n·v)(n·l))  for unit n, v (towards the eye),
+// l (towards the light), roughness in [0, 1] and f0, built from the functions above:
 //   D = distribution_ggx(n·h, roughness);  G = geometry_smith(n·v, n·l, k_direct(roughness));
 //   F = fresnel_schlick(v·h, f0);  h = normalize(l + v), or n when l + v = 0.
 // Clamp n·v and n·l to [1e-4, 1] (also in the denominator) so that grazing angles stay finite.

@@ -1,14 +1,16 @@
 // Image filter, exercise 2 (convolve): one pass of the separable Gaussian blur at pixel p, in WGSL.
 // The compute shader filter/shaders/blur_pass.* calls it for every pixel, once with dir = (1, 0)
-// (horizontal pass), then on that result with dir = (0, 1) (vertical pass). Returns magenta until you
-// write it.
+// (horizontal pass), then on that result with dir = (0, 1)
+// (vertical pass). Returns magenta until you write it.
 //
-// Given by the kernel (see filter/shaders/io.wgsl): image_size() (width, height in pixels); load_texel(q)
-// (the pixel at q, which must lie inside the image: outside it gives magenta); kernel_weight(i) (the
-// normalised weight of tap i).
-//   1. Sum kernel_weight(i) * pixel(p + i * dir) over i = -radius..radius (2 radius + 1 taps, radius 0..32).
-//   2. Clamp-to-edge: clamp every tap's coordinates to 0..image_size() - 1, per axis (no wrap, no zero padding),
-//      so the border pixels are right and no read leaves the image (also for a 1x1 image).
+// Given by the kernel (see filter/shaders/io.wgsl): image_size() (width, height in pixels);
+// load_texel(q) (the pixel at q, which must lie inside the image: outside it gives magenta);
+// kernel_weight(i) (the normalised weight of tap i).
+//   1. Sum kernel_weight(i) * pixel(p + i * dir) over i = -radius..radius
+//      (2 radius + 1 taps, radius 0..32).
+//   2. Clamp-to-edge: clamp every tap's coordinates to 0..image_size() - 1,
+//      per axis (no wrap, no zero padding), so the border pixels are right
+//      and no read leaves the image (also for a 1x1 image).
 //   3. Use dir as given: the same function does both passes. Return the sum (all four channels).
 fn blur_pass(p: vec2<i32>, dir: vec2<i32>, radius: i32) -> vec4<f32> {
     return vec4<f32>(1.0, 0.0, 1.0, 1.0);

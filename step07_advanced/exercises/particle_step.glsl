@@ -1,11 +1,14 @@
-// Exercise 3: one time step of a particle in GLSL, run by the compute shader particles.comp for every particle.
-// Returns the particle unchanged until you write it.
+// Exercise 3: one time step of a particle in GLSL, run by the compute shader particles.comp for
+// every particle. Returns the particle unchanged until you write it.
 //
-// Particle: position.xyz, position.w = remaining life in seconds; velocity.xyz (velocity.w: keep as is).
-// SimParams s: s.gravity.xyz (m/s²), s.dt (s), s.floor_y, s.restitution (0..1).
-//   1. velocity += gravity * dt, then position += velocity * dt   (semi-implicit Euler, in this order)
+// Particle: position.xyz, position.w = remaining life in seconds;
+// velocity.xyz (velocity.w: keep as is). SimParams s: s.gravity.xyz
+// (m/s²), s.dt (s), s.floor_y, s.restitution (0..1).
+//   1. velocity += gravity * dt, then position += velocity * dt
+//      (semi-implicit Euler, in this order)
 //   2. if position.y < floor_y while moving down (velocity.y < 0): bounce,
-//        position.y = floor_y + (floor_y - position.y) * restitution;  velocity.y = -velocity.y * restitution
+//        position.y = floor_y + (floor_y - position.y) * restitution;
+//        velocity.y = -velocity.y * restitution
 //   3. life (position.w) -= dt
 Particle particle_step(Particle p, SimParams s) {
     return p;

@@ -1,6 +1,7 @@
-// Blinn-Phong with every light of the scene, shared by step 07's lit techniques (explode, parallax); the same sums as
-// blinn_phong.wgsl. p: the shaded point, n: the unit normal, v: the unit vector towards the eye (camera-relative
-// positions, as the engine's frame and lights blocks hold them). Needs frame.glsl (the lights block) first.
+// Blinn-Phong with every light of the scene, shared by step 07's lit techniques
+// (explode, parallax); the same sums as blinn_phong.wgsl. p: the shaded point, n: the unit normal,
+// v: the unit vector towards the eye (camera-relative positions, as the engine's frame and lights
+// blocks hold them). Needs frame.glsl (the lights block) first.
 vec3 blinn_phong_lights(vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, float shininess) {
     vec3 color = u_ambient.rgb * albedo;
     int count = min(u_light_count.x, MAX_LIGHTS);

@@ -1,7 +1,9 @@
-// Blinn-Phong with every light of the scene, shared by step 07's lit techniques (explode, parallax); the same sums as
-// blinn_phong.glsl. p: the shaded point, n: the unit normal, v: the unit vector towards the eye (camera-relative
-// positions, as the engine's frame and lights blocks hold them). Needs frame.wgsl (the lights block) first.
-fn blinn_phong_lights(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, albedo: vec3<f32>, specular: f32, shininess: f32) -> vec3<f32> {
+// Blinn-Phong with every light of the scene, shared by step 07's lit techniques
+// (explode, parallax); the same sums as blinn_phong.glsl. p: the shaded point, n: the unit normal,
+// v: the unit vector towards the eye (camera-relative positions, as the engine's frame and lights
+// blocks hold them). Needs frame.wgsl (the lights block) first.
+fn blinn_phong_lights(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, albedo: vec3<f32>, specular: f32,
+    shininess: f32) -> vec3<f32> {
     var color = lights.ambient.rgb * albedo;
     let count = min(u32(max(lights.count.x, 0)), MAX_LIGHTS);
     for (var i = 0u; i < count; i++) {

@@ -4,7 +4,8 @@ const float BRDF_PI = 3.14159265358979;
 const float BRDF_MIN_ROUGHNESS = 0.045;
 const float BRDF_MIN_COSINE = 1e-4;
 
-// Trowbridge-Reitz (GGX) normal distribution D; perceptual roughness clamped to [0.045, 1], alpha = roughness².
+// Trowbridge-Reitz (GGX) normal distribution D; perceptual roughness
+// clamped to [0.045, 1], alpha = roughness².
 float distribution_ggx(float n_dot_h, float roughness) {
     float r = clamp(roughness, BRDF_MIN_ROUGHNESS, 1.0);
     float a2 = r * r * r * r;
@@ -25,7 +26,8 @@ float k_ibl(float roughness) {
     return r * r / 2.0;
 }
 
-// Smith's shadowing-masking G = G1(n·v) G1(n·l), G1(x) = x / (x (1 - k) + k), cosines clamped to [1e-4, 1].
+// Smith's shadowing-masking G = G1(n·v) G1(n·l),
+// G1(x) = x / (x (1 - k) + k), cosines clamped to [1e-4, 1].
 float geometry_smith(float n_dot_v, float n_dot_l, float k) {
     float v = clamp(n_dot_v, BRDF_MIN_COSINE, 1.0);
     float l = clamp(n_dot_l, BRDF_MIN_COSINE, 1.0);
@@ -51,7 +53,8 @@ vec3 base_reflectance(vec3 base, float metallic) {
     return mix(vec3(0.04), base, clamp(metallic, 0.0, 1.0));
 }
 
-// The diffuse albedo: metals have none, and what Fresnel reflects is not scattered (divide by pi for the BRDF).
+// The diffuse albedo: metals have none, and what Fresnel reflects is not scattered
+// (divide by pi for the BRDF).
 vec3 diffuse_albedo(vec3 base, float metallic, vec3 fresnel) {
     return base * (1.0 - clamp(metallic, 0.0, 1.0)) * (1.0 - fresnel);
 }

@@ -4,7 +4,8 @@ const BRDF_PI: f32 = 3.14159265358979;
 const BRDF_MIN_ROUGHNESS: f32 = 0.045;
 const BRDF_MIN_COSINE: f32 = 1e-4;
 
-// Trowbridge-Reitz (GGX) normal distribution D; perceptual roughness clamped to [0.045, 1], alpha = roughness².
+// Trowbridge-Reitz (GGX) normal distribution D; perceptual roughness
+// clamped to [0.045, 1], alpha = roughness².
 fn distribution_ggx(n_dot_h: f32, roughness: f32) -> f32 {
     let r = clamp(roughness, BRDF_MIN_ROUGHNESS, 1.0);
     let a2 = r * r * r * r;
@@ -25,7 +26,8 @@ fn k_ibl(roughness: f32) -> f32 {
     return r * r / 2.0;
 }
 
-// Smith's shadowing-masking G = G1(n·v) G1(n·l), G1(x) = x / (x (1 - k) + k), cosines clamped to [1e-4, 1].
+// Smith's shadowing-masking G = G1(n·v) G1(n·l),
+// G1(x) = x / (x (1 - k) + k), cosines clamped to [1e-4, 1].
 fn geometry_smith(n_dot_v: f32, n_dot_l: f32, k: f32) -> f32 {
     let v = clamp(n_dot_v, BRDF_MIN_COSINE, 1.0);
     let l = clamp(n_dot_l, BRDF_MIN_COSINE, 1.0);
@@ -51,13 +53,15 @@ fn base_reflectance(base: vec3<f32>, metallic: f32) -> vec3<f32> {
     return mix(vec3<f32>(0.04), base, clamp(metallic, 0.0, 1.0));
 }
 
-// The diffuse albedo: metals have none, and what Fresnel reflects is not scattered (divide by pi for the BRDF).
+// The diffuse albedo: metals have none, and what Fresnel reflects is not scattered
+// (divide by pi for the BRDF).
 fn diffuse_albedo(base: vec3<f32>, metallic: f32, fresnel: vec3<f32>) -> vec3<f32> {
     return base * (1.0 - clamp(metallic, 0.0, 1.0)) * (1.0 - fresnel);
 }
 
 // The Cook-Torrance specular BRDF  D G F / (4 (n·v)(n·l))  with k_direct.
-fn ggx_specular(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, roughness: f32, f0: vec3<f32>) -> vec3<f32> {
+fn ggx_specular(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, roughness: f32,
+    f0: vec3<f32>) -> vec3<f32> {
     // Clamped cosines: at grazing angles n·v reaches 0 and the denominator with it.
     let n_dot_v = clamp(dot(n, v), BRDF_MIN_COSINE, 1.0);
     let n_dot_l = clamp(dot(n, l), BRDF_MIN_COSINE, 1.0);

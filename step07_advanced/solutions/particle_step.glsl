@@ -5,7 +5,8 @@ Particle particle_step(Particle p, SimParams s) {
     vec3 velocity = p.velocity.xyz + s.gravity.xyz * s.dt;
     vec3 position = p.position.xyz + velocity * s.dt;
     if (position.y < s.floor_y && velocity.y < 0.0) {
-        // Mirror the overshoot above the floor and reverse the vertical speed, both scaled by the restitution.
+        // Mirror the overshoot above the floor and reverse the vertical
+        // speed, both scaled by the restitution.
         position.y = s.floor_y + (s.floor_y - position.y) * s.restitution;
         velocity.y = -velocity.y * s.restitution;
     }

@@ -5,7 +5,8 @@ fn particle_step(p: Particle, s: SimParams) -> Particle {
     var velocity = p.velocity.xyz + s.gravity.xyz * s.dt;
     var position = p.position.xyz + velocity * s.dt;
     if (position.y < s.floor_y && velocity.y < 0.0) {
-        // Mirror the overshoot above the floor and reverse the vertical speed, both scaled by the restitution.
+        // Mirror the overshoot above the floor and reverse the vertical
+        // speed, both scaled by the restitution.
         position.y = s.floor_y + (s.floor_y - position.y) * s.restitution;
         velocity.y = -velocity.y * s.restitution;
     }

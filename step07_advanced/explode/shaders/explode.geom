@@ -11,7 +11,8 @@ out vec3 v_world;
 out vec3 v_normal;
 #include "explode_material.glsl"
 void main() {
-    // The student's function (exercises/ or solutions/explode.glsl): the same offset for all three corners.
+    // The student's function (exercises/ or solutions/explode.glsl):
+    // the same offset for all three corners.
     vec3 offset = explode_offset(g_world[0], g_world[1], g_world[2],
                                  material.explode_time, material.amount, material.period);
     for (int i = 0; i < 3; ++i) {

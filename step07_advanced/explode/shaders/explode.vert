@@ -1,5 +1,6 @@
 #version 330 core
-// OpenGL route, stage 1 of 3: the model matrix only; the geometry shader explodes the whole triangle.
+// OpenGL route, stage 1 of 3: the model matrix only; the geometry
+// shader explodes the whole triangle.
 #include "instance.glsl"
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;

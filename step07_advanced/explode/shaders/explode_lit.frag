@@ -1,6 +1,7 @@
 #version 330 core
-// The fragment stage of the unexploded reference: two-sided Blinn-Phong (the same as explode.frag's, with only
-// the shading values in its Material block, as explode_lit.wgsl's).
+// The fragment stage of the unexploded reference: two-sided
+// Blinn-Phong (the same as explode.frag's, with only the shading
+// values in its Material block, as explode_lit.wgsl's).
 #include "explode_shading.glsl"
 in vec3 v_world;
 in vec3 v_normal;

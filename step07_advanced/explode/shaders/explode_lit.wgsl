@@ -1,4 +1,5 @@
-// The unexploded reference: the bunny from its vertex buffer, the same lighting as the exploding shader.
+// The unexploded reference: the bunny from its vertex buffer, the
+// same lighting as the exploding shader.
 #include "explode_shading.wgsl"
 #include "instance.wgsl"
 
@@ -10,7 +11,8 @@ struct Material {
 @group(1) @binding(0) var<uniform> material: Material;
 
 @vertex
-fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, inst: Instance) -> SurfaceOut {
+fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>,
+    inst: Instance) -> SurfaceOut {
     let world = instance_model(inst) * vec4<f32>(position, 1.0);
     var out: SurfaceOut;
     out.position = frame.projection * frame.view * world;

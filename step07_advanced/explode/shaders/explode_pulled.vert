@@ -1,6 +1,6 @@
 #version 430 core
-// Vertex pulling in OpenGL (the study's third route): the WebGPU route's vertex shader in GLSL 4.30.
-// The mesh drawn is 3·F attribute-less vertices; vertex k is corner k % 3 of triangle k / 3.
+// Vertex pulling in OpenGL (the study's third route): the WebGPU route's vertex shader in GLSL
+// 4.30. The mesh drawn is 3·F attribute-less vertices; vertex k is corner k % 3 of triangle k / 3.
 #include "frame.glsl"
 #include "instance.glsl"
 #include "explode.glsl"
@@ -20,7 +20,8 @@ void main() {
     vec3 w0 = (model * vec4(positions[i0].xyz, 1.0)).xyz;
     vec3 w1 = (model * vec4(positions[i1].xyz, 1.0)).xyz;
     vec3 w2 = (model * vec4(positions[i2].xyz, 1.0)).xyz;
-    vec3 offset = explode_offset(w0, w1, w2, material.explode_time, material.amount, material.period);
+    vec3 offset = explode_offset(w0, w1, w2, material.explode_time, material.amount,
+        material.period);
     uint index = corner == 0u ? i0 : (corner == 1u ? i1 : i2);
     v_world = (corner == 0u ? w0 : (corner == 1u ? w1 : w2)) + offset;
     v_normal = instance_normal(normals[index].xyz);

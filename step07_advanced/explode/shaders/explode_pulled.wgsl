@@ -1,5 +1,6 @@
-// WebGPU route: vertex pulling. The mesh drawn is 3·F attribute-less vertices; vertex k is corner k % 3 of
-// triangle k / 3, whose three corners this shader reads from storage buffers, explodes and outputs.
+// WebGPU route: vertex pulling. The mesh drawn is 3·F attribute-less
+// vertices; vertex k is corner k % 3 of triangle k / 3, whose three
+// corners this shader reads from storage buffers, explodes and outputs.
 #include "explode_shading.wgsl"
 #include "instance.wgsl"
 #include "explode.wgsl"
@@ -15,8 +16,10 @@ struct Material {
 @group(1) @binding(0) var<uniform> material: Material;
 
 // --8<-- [start:pulling]
-@group(1) @binding(1) var<storage, read> positions: array<vec4<f32>>;  // xyz: model-space corner, w: 1
-@group(1) @binding(2) var<storage, read> normals: array<vec4<f32>>;    // xyz: model-space vertex normal
+// xyz: model-space corner, w: 1
+@group(1) @binding(1) var<storage, read> positions: array<vec4<f32>>;
+// xyz: model-space vertex normal
+@group(1) @binding(2) var<storage, read> normals: array<vec4<f32>>;
 @group(1) @binding(3) var<storage, read> indices: array<u32>;          // three per triangle
 
 fn corner_world(model: mat4x4<f32>, index: u32) -> vec3<f32> {
@@ -34,8 +37,10 @@ fn vs_main(@builtin(vertex_index) vertex: u32, inst: Instance) -> SurfaceOut {
     let w0 = corner_world(model, i0);
     let w1 = corner_world(model, i1);
     let w2 = corner_world(model, i2);
-    // The student's function (exercises/ or solutions/explode.wgsl): every corner of a face computes the same.
-    let offset = explode_offset(w0, w1, w2, material.explode_time, material.amount, material.period);
+    // The student's function (exercises/ or solutions/explode.wgsl):
+    // every corner of a face computes the same.
+    let offset = explode_offset(w0, w1, w2, material.explode_time, material.amount,
+        material.period);
     let world = select(select(w2, w1, corner == 1u), w0, corner == 0u) + offset;
     let index = select(select(i2, i1, corner == 1u), i0, corner == 0u);
     var out: SurfaceOut;

@@ -12,7 +12,8 @@ void main() {
     for (int j = -u_radius; j <= u_radius; ++j) {
         vec4 row = vec4(0.0);
         for (int i = -u_radius; i <= u_radius; ++i) {
-            row += weights[i + u_radius] * texelFetch(u_src, clamp(p + ivec2(i, j), ivec2(0), size - 1), 0);
+            row += weights[i + u_radius] * texelFetch(u_src,
+                clamp(p + ivec2(i, j), ivec2(0), size - 1), 0);
         }
         sum += weights[j + u_radius] * row;
     }

@@ -13,7 +13,8 @@ fn cs_main(@builtin(global_invocation_id) id: vec3<u32>) {
     for (var j = -r; j <= r; j++) {
         var row = vec4<f32>(0.0);
         for (var i = -r; i <= r; i++) {
-            row += weights[i + r] * textureLoad(src, clamp(p + vec2<i32>(i, j), vec2<i32>(0), size - 1), 0);
+            row += weights[i + r] * textureLoad(src,
+                clamp(p + vec2<i32>(i, j), vec2<i32>(0), size - 1), 0);
         }
         sum += weights[j + r] * row;
     }

@@ -9,7 +9,8 @@ layout(OUT_FORMAT, binding = 0) writeonly uniform image2D u_dst;
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(p, image_size()))) return;  // the last groups hang over the image's edge
+    if (any(greaterThanEqual(p, image_size()))) return;  // the last groups hang over
+                                                         // the image's edge
     imageStore(u_dst, p, blur_pass(p, u_direction, u_radius));
 }
 // --8<-- [end:kernel]

@@ -1,5 +1,6 @@
-// One blur pass, tiled: a work group loads TILE pixels + an apron of radius on each side, for ROWS lines,
-// into workgroup memory once, then every invocation reads its 2r + 1 taps from there instead of from the texture.
+// One blur pass, tiled: a work group loads TILE pixels + an apron of radius
+// on each side, for ROWS lines, into workgroup memory once, then every
+// invocation reads its 2r + 1 taps from there instead of from the texture.
 // --8<-- [start:tiled]
 #include "io.wgsl"
 

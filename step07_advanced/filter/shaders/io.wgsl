@@ -1,7 +1,8 @@
-// The filter kernels' inputs in WGSL: the pass's parameters, the source image, the weight table and the output.
-// The source is a sampled texture read with textureLoad (rgba8unorm input or rgba32float intermediate); the output
-// is a write-only storage texture (OUT_FORMAT: rgba32float or rgba8unorm). WebGPU has no read-write storage
-// textures without a feature, and no sRGB storage format: the filters treat the stored 8-bit values as data.
+// The filter kernels' inputs in WGSL: the pass's parameters, the source image, the weight table and
+// the output. The source is a sampled texture read with textureLoad
+// (rgba8unorm input or rgba32float intermediate); the output is a write-only storage texture
+// (OUT_FORMAT: rgba32float or rgba8unorm). WebGPU has no read-write storage textures without a
+// feature, and no sRGB storage format: the filters treat the stored 8-bit values as data.
 struct Params {
     direction: vec2<i32>,  // (1, 0): horizontal pass, (0, 1): vertical pass
     radius: i32,           // 0..MAX_RADIUS

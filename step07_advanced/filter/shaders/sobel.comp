@@ -5,7 +5,8 @@ layout(local_size_x = 16, local_size_y = 16) in;
 layout(OUT_FORMAT, binding = 0) writeonly uniform image2D u_dst;
 
 float luma(ivec2 p) {
-    return dot(texelFetch(u_src, clamp(p, ivec2(0), image_size() - 1), 0).rgb, vec3(0.2126, 0.7152, 0.0722));
+    return dot(texelFetch(u_src, clamp(p, ivec2(0), image_size() - 1), 0).rgb,
+        vec3(0.2126, 0.7152, 0.0722));
 }
 
 void main() {

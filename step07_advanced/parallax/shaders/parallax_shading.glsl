@@ -1,4 +1,5 @@
-// Blinn-Phong with every light of the scene: step 07's shared sums (the same as parallax_shading.wgsl).
+// Blinn-Phong with every light of the scene: step 07's shared sums
+// (the same as parallax_shading.wgsl).
 #include "../../shaders/blinn_phong.glsl"
 
 vec3 shade(vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, float shininess) {

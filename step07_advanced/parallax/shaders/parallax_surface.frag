@@ -1,6 +1,8 @@
 #version 330 core
-// One brick material, four ways to read it: normal mapping only (method 0), simple parallax (1), steep parallax
-// (2) and parallax occlusion mapping (3). Only the uv the maps are sampled at differs; the shading is the same.
+// One brick material, four ways to read it: normal mapping only
+// (method 0), simple parallax (1), steep parallax
+// (2) and parallax occlusion mapping (3). Only the uv the maps are
+//     sampled at differs; the shading is the same.
 #include "frame.glsl"
 in vec3 v_world;
 in vec3 v_normal;
@@ -21,8 +23,9 @@ uniform sampler2D u_height_map;
 out vec4 f_color;
 
 // --8<-- [start:height_at]
-// The exercise's functions read the height field through height_at(uv). Every sample uses the screen-space
-// derivatives of the unshifted uv: the shifted uv jumps at the bricks' edges, and mip selection must not.
+// The exercise's functions read the height field through height_at(uv).
+// Every sample uses the screen-space derivatives of the unshifted uv: the
+// shifted uv jumps at the bricks' edges, and mip selection must not.
 vec2 g_uv_dx;
 vec2 g_uv_dy;
 float height_at(vec2 uv) {
@@ -44,7 +47,8 @@ void main() {
     g_uv_dx = dFdx(uv);
     g_uv_dy = dFdy(uv);
     // --8<-- [start:methods]
-    // The view direction in texture space: x along +u, y along +v (against B), z out of the surface.
+    // The view direction in texture space: x along +u, y along +v
+    // (against B), z out of the surface.
     vec3 view_ts = vec3(dot(v, t), -dot(v, b), dot(v, n));
     int method = int(material.method + 0.5);
     int layers = int(material.layers + 0.5);

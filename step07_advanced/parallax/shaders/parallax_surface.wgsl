@@ -1,5 +1,7 @@
-// One brick material, four ways to read it: normal mapping only (method 0), simple parallax (1), steep parallax
-// (2) and parallax occlusion mapping (3). Only the uv the maps are sampled at differs; the shading is the same.
+// One brick material, four ways to read it: normal mapping only
+// (method 0), simple parallax (1), steep parallax
+// (2) and parallax occlusion mapping (3). Only the uv the maps are
+//     sampled at differs; the shading is the same.
 #include "surface_vertex.wgsl"
 #include "parallax_shading.wgsl"
 
@@ -21,8 +23,9 @@ struct Material {
 @group(1) @binding(6) var height_sampler: sampler;
 
 // --8<-- [start:height_at]
-// The exercise's functions read the height field through height_at(uv). Every sample uses the screen-space
-// derivatives of the unshifted uv: the shifted uv jumps at the bricks' edges, and mip selection must not
+// The exercise's functions read the height field through height_at(uv). Every
+// sample uses the screen-space derivatives of the unshifted uv: the shifted uv
+// jumps at the bricks' edges, and mip selection must not
 // (textureSampleGrad is also what WGSL allows inside the march's non-uniform loop).
 var<private> g_uv_dx: vec2<f32>;
 var<private> g_uv_dy: vec2<f32>;
@@ -45,7 +48,8 @@ fn fs_main(in: SurfaceOut) -> @location(0) vec4<f32> {
     g_uv_dx = dpdx(uv);
     g_uv_dy = dpdy(uv);
     // --8<-- [start:methods]
-    // The view direction in texture space: x along +u, y along +v (against B), z out of the surface.
+    // The view direction in texture space: x along +u, y along +v
+    // (against B), z out of the surface.
     let view_ts = vec3<f32>(dot(v, t), -dot(v, b), dot(v, n));
     let method = i32(material.method + 0.5);
     let layers = i32(material.layers + 0.5);
@@ -56,9 +60,11 @@ fn fs_main(in: SurfaceOut) -> @location(0) vec4<f32> {
     } else if (method == 3) {
         uv = parallax_occlusion(uv, view_ts, material.height_scale, layers);
     }
-    let albedo = material.color.rgb * textureSampleGrad(albedo_map, albedo_sampler, uv, g_uv_dx, g_uv_dy).rgb;
+    let albedo = material.color.rgb
+        * textureSampleGrad(albedo_map, albedo_sampler, uv, g_uv_dx, g_uv_dy).rgb;
     let m = textureSampleGrad(normal_map, normal_sampler, uv, g_uv_dx, g_uv_dy).rgb * 2.0 - 1.0;
     let shading = normalize(t * m.x + b * m.y + n * m.z);
     // --8<-- [end:methods]
-    return vec4<f32>(shade(in.world, shading, v, albedo, material.specular, material.shininess), 1.0);
+    return vec4<f32>(
+        shade(in.world, shading, v, albedo, material.specular, material.shininess), 1.0);
 }

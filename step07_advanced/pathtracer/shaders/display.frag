@@ -1,5 +1,6 @@
 #version 430 core
-// Step 07 path tracer, OpenGL: show the accumulation's mean, tonemapped; the sRGB framebuffer encodes it.
+// Step 07 path tracer, OpenGL: show the accumulation's mean,
+// tonemapped; the sRGB framebuffer encodes it.
 #include "tonemap.glsl"
 layout(std430, binding = 0) readonly buffer Accum { vec4 accum[]; };  // the material's buffer 0
 layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct

@@ -1,5 +1,6 @@
-// Step 07 path tracer, WebGPU: one attribute-less triangle that covers the screen shows the accumulation's mean,
-// tonemapped; the sRGB target encodes it. uv = (0, 0) is the top-left corner, as in display.vert.
+// Step 07 path tracer, WebGPU: one attribute-less triangle that covers
+// the screen shows the accumulation's mean, tonemapped; the sRGB target
+// encodes it. uv = (0, 0) is the top-left corner, as in display.vert.
 struct Material {
     color: vec4<f32>,
     exposure: f32,
@@ -25,7 +26,8 @@ fn vs_main(@builtin(vertex_index) vertex: u32) -> VertexOut {
 
 fn tonemap(x_in: vec3<f32>) -> vec3<f32> {
     let x = max(x_in, vec3<f32>(0.0));
-    return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), vec3<f32>(0.0), vec3<f32>(1.0));
+    return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14),
+                 vec3<f32>(0.0), vec3<f32>(1.0));
 }
 
 @fragment

@@ -1,7 +1,8 @@
 #version 430
-// Step 07 path tracer, OpenGL: one sample per pixel per dispatch, added to a float accumulation buffer.
-// The scene (spheres, materials, the triangles in BVH order, the BVH nodes and the sky) sits in storage buffers
-// that the CPU packed once (scene.py / bvh.py); pathtrace.wgsl is the same kernel in WGSL, line for line.
+// Step 07 path tracer, OpenGL: one sample per pixel per dispatch, added to a float accumulation
+// buffer. The scene (spheres, materials, the triangles in BVH order, the BVH nodes and the sky)
+// sits in storage buffers that the CPU packed once (scene.py / bvh.py); pathtrace.wgsl is the same
+// kernel in WGSL, line for line.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 // --8<-- [start:bindings]
@@ -14,12 +15,17 @@ layout(std140, binding = 4) uniform Params {
     uvec4 u_size;       // width, height, sample index (the frame of the accumulation), seed
     uvec4 u_counts;     // spheres, triangles, BVH nodes, maximum bounces
 };
-layout(std430, binding = 0) readonly buffer Spheres { vec4 spheres[]; };      // (centre, radius), (material, -, -, -)
-layout(std430, binding = 1) readonly buffer Materials { vec4 materials[]; };  // (albedo, kind), (fuzz, ior, -, -)
-layout(std430, binding = 2) readonly buffer Triangles { vec4 triangles[]; };  // p0 (w: material), p1, p2, n0, n1, n2
-layout(std430, binding = 3) readonly buffer Nodes { vec4 nodes[]; };          // (bmin, first|right), (bmax, count)
+// (centre, radius), (material, -, -, -)
+layout(std430, binding = 0) readonly buffer Spheres { vec4 spheres[]; };
+// (albedo, kind), (fuzz, ior, -, -)
+layout(std430, binding = 1) readonly buffer Materials { vec4 materials[]; };
+// p0 (w: material), p1, p2, n0, n1, n2
+layout(std430, binding = 2) readonly buffer Triangles { vec4 triangles[]; };
+// (bmin, first|right), (bmax, count)
+layout(std430, binding = 3) readonly buffer Nodes { vec4 nodes[]; };
 layout(std430, binding = 4) readonly buffer Sky { vec4 sky_texels[]; };       // linear RGB, 6 faces
-layout(std430, binding = 5) buffer Accum { vec4 accum[]; };                   // rgb: sum of samples, a: count
+// rgb: sum of samples, a: count
+layout(std430, binding = 5) buffer Accum { vec4 accum[]; };
 // --8<-- [end:bindings]
 
 #include "rng.glsl"

@@ -1,6 +1,7 @@
-// Step 07 path tracer, WebGPU: one sample per pixel per dispatch, added to a float accumulation buffer.
-// The scene (spheres, materials, the triangles in BVH order, the BVH nodes and the sky) sits in storage buffers
-// that the CPU packed once (scene.py / bvh.py); pathtrace.comp is the same kernel in GLSL, line for line.
+// Step 07 path tracer, WebGPU: one sample per pixel per dispatch, added to a float accumulation
+// buffer. The scene (spheres, materials, the triangles in BVH order, the BVH nodes and the sky)
+// sits in storage buffers that the CPU packed once (scene.py / bvh.py); pathtrace.comp is the same
+// kernel in GLSL, line for line.
 
 // --8<-- [start:bindings]
 struct Params {
@@ -13,12 +14,17 @@ struct Params {
     counts: vec4<u32>,      // spheres, triangles, BVH nodes, maximum bounces
 };
 @group(0) @binding(0) var<uniform> params: Params;
-@group(0) @binding(1) var<storage, read> spheres: array<vec4<f32>>;    // (centre, radius), (material, -, -, -)
-@group(0) @binding(2) var<storage, read> materials: array<vec4<f32>>;  // (albedo, kind), (fuzz, ior, -, -)
-@group(0) @binding(3) var<storage, read> triangles: array<vec4<f32>>;  // p0 (w: material), p1, p2, n0, n1, n2
-@group(0) @binding(4) var<storage, read> nodes: array<vec4<f32>>;      // (bmin, first|right), (bmax, count)
+// (centre, radius), (material, -, -, -)
+@group(0) @binding(1) var<storage, read> spheres: array<vec4<f32>>;
+// (albedo, kind), (fuzz, ior, -, -)
+@group(0) @binding(2) var<storage, read> materials: array<vec4<f32>>;
+// p0 (w: material), p1, p2, n0, n1, n2
+@group(0) @binding(3) var<storage, read> triangles: array<vec4<f32>>;
+// (bmin, first|right), (bmax, count)
+@group(0) @binding(4) var<storage, read> nodes: array<vec4<f32>>;
 @group(0) @binding(5) var<storage, read> sky_texels: array<vec4<f32>>; // linear RGB, 6 faces
-@group(0) @binding(6) var<storage, read_write> accum: array<vec4<f32>>; // rgb: sum of samples, a: count
+// rgb: sum of samples, a: count
+@group(0) @binding(6) var<storage, read_write> accum: array<vec4<f32>>;
 // --8<-- [end:bindings]
 
 #include "rng.wgsl"

@@ -1,5 +1,6 @@
-// The random numbers of the path tracer, bit for bit the same as rng.wgsl: a PCG hash (PCG-RXS-M-XS, as in
-// Jarzynski & Olano, "Hash Functions for GPU Rendering", 2020) in 32-bit unsigned arithmetic (wrapping).
+// The random numbers of the path tracer, bit for bit the same as rng.wgsl: a PCG hash
+// (PCG-RXS-M-XS, as in Jarzynski & Olano, "Hash Functions for GPU Rendering", 2020) in 32-bit
+// unsigned arithmetic (wrapping).
 // --8<-- [start:rng]
 uint pcg_hash(uint v) {
     uint state = v * 747796405u + 2891336453u;

@@ -1,5 +1,6 @@
-// The random numbers of the path tracer, bit for bit the same as rng.glsl: a PCG hash (PCG-RXS-M-XS, as in
-// Jarzynski & Olano, "Hash Functions for GPU Rendering", 2020) in 32-bit unsigned arithmetic (wrapping).
+// The random numbers of the path tracer, bit for bit the same as rng.glsl: a PCG hash
+// (PCG-RXS-M-XS, as in Jarzynski & Olano, "Hash Functions for GPU Rendering", 2020) in 32-bit
+// unsigned arithmetic (wrapping).
 // --8<-- [start:rng]
 fn pcg_hash(v: u32) -> u32 {
     let state = v * 747796405u + 2891336453u;

@@ -1,6 +1,7 @@
-// The sky: the scene's cube map (linear RGB, faces +X -X +Y -Y +Z -Z, rows top first) read from a storage
-// buffer with bilinear filtering inside each face, the same arithmetic as sky.wgsl and scene.sample_sky.
-// Needs `sky_texels[]` and the Params block (u_background.w = face size, 0: the constant u_background.rgb).
+// The sky: the scene's cube map (linear RGB, faces +X -X +Y -Y +Z -Z, rows top first) read from a
+// storage buffer with bilinear filtering inside each face, the same arithmetic as sky.wgsl and
+// scene.sample_sky. Needs `sky_texels[]` and the Params block
+// (u_background.w = face size, 0: the constant u_background.rgb).
 // --8<-- [start:sky]
 vec3 sky_texel(uint face, int row, int col, int size) {
     return sky_texels[(face * uint(size) + uint(row)) * uint(size) + uint(col)].rgb;

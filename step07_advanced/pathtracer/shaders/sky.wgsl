@@ -1,6 +1,7 @@
-// The sky: the scene's cube map (linear RGB, faces +X -X +Y -Y +Z -Z, rows top first) read from a storage
-// buffer with bilinear filtering inside each face, the same arithmetic as sky.glsl and scene.sample_sky.
-// Needs `sky_texels` and `params` (params.background.w = face size, 0: the constant params.background.rgb).
+// The sky: the scene's cube map (linear RGB, faces +X -X +Y -Y +Z -Z, rows top first) read from a
+// storage buffer with bilinear filtering inside each face, the same arithmetic as sky.glsl and
+// scene.sample_sky. Needs `sky_texels` and `params` (params.background.w = face size, 0: the
+// constant params.background.rgb).
 // --8<-- [start:sky]
 fn sky_texel(face: u32, row: i32, col: i32, size: i32) -> vec3<f32> {
     return sky_texels[(face * u32(size) + u32(row)) * u32(size) + u32(col)].rgb;

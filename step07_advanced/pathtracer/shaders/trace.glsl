@@ -1,5 +1,6 @@
-// Step 07 path tracer, GLSL: closest hit over the spheres (the student's hit_sphere) and the triangles (a BVH
-// with a short stack), and the path loop with the three materials. trace.wgsl is the same in WGSL.
+// Step 07 path tracer, GLSL: closest hit over the spheres
+// (the student's hit_sphere) and the triangles (a BVH with a short stack),
+// and the path loop with the three materials. trace.wgsl is the same in WGSL.
 const float T_MIN = 1e-4;
 const float T_FAR = 1e30;
 const float RAY_OFFSET = 5e-4;
@@ -10,7 +11,8 @@ const int STACK_SIZE = 32;
 
 struct Hit {
     float t;
-    vec3 normal;    // unit, outward: (p - centre) / radius, or the triangle's normal on its counter-clockwise side
+    vec3 normal;    // unit, outward: (p - centre) / radius, or the
+                    // triangle's normal on its counter-clockwise side
     uint material;
 };
 
@@ -97,8 +99,8 @@ bool trace(vec3 origin, vec3 dir, out Hit hit) {
         }
         for (uint k = index; k < index + count; k++) {
             vec4 p0 = triangles[6u * k];
-            vec3 tuv = hit_triangle(origin, dir, p0.xyz, triangles[6u * k + 1u].xyz, triangles[6u * k + 2u].xyz,
-                                    hit.t);
+            vec3 tuv = hit_triangle(origin, dir, p0.xyz, triangles[6u * k + 1u].xyz,
+                                    triangles[6u * k + 2u].xyz, hit.t);
             if (tuv.x > 0.0) {
                 float w = 1.0 - tuv.y - tuv.z;
                 vec3 n = w * triangles[6u * k + 3u].xyz + tuv.y * triangles[6u * k + 4u].xyz
@@ -142,15 +144,17 @@ vec3 path_radiance(vec3 origin, vec3 dir, inout uint rng) {
                 next = vec3(0.0);  // fuzzed below the surface: absorbed
             }
         } else {
-            next = scatter_dielectric(dir, hit.normal, m1.y, rng_next(rng));  // the student's function
+            // the student's function
+            next = scatter_dielectric(dir, hit.normal, m1.y, rng_next(rng));
         }
         float len2 = dot(next, next);
         if (!(len2 > 1e-12) || !is_finite(len2)) {
             break;  // absorbed (a zero or broken direction)
         }
         throughput *= m0.rgb;
-        // Start the next ray a little off the surface, on the side it leaves to: float32 knows a point on a
-        // sphere 1000 units from its centre only to ~1e-4, and a ray must not hit the surface it starts on.
+        // Start the next ray a little off the surface, on the side it leaves
+        // to: float32 knows a point on a sphere 1000 units from its centre
+        // only to ~1e-4, and a ray must not hit the surface it starts on.
         vec3 p = origin + hit.t * dir;
         dir = next / sqrt(len2);
         origin = p + (dot(dir, facing) > 0.0 ? facing : -facing) * RAY_OFFSET;

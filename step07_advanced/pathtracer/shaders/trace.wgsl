@@ -1,5 +1,6 @@
-// Step 07 path tracer, WGSL: closest hit over the spheres (the student's hit_sphere) and the triangles (a BVH
-// with a short stack), and the path loop with the three materials. trace.glsl is the same in GLSL.
+// Step 07 path tracer, WGSL: closest hit over the spheres
+// (the student's hit_sphere) and the triangles (a BVH with a short stack),
+// and the path loop with the three materials. trace.glsl is the same in GLSL.
 const T_MIN: f32 = 1e-4;
 const T_FAR: f32 = 1e30;
 const RAY_OFFSET: f32 = 5e-4;
@@ -10,7 +11,8 @@ const STACK_SIZE: i32 = 32;
 
 struct Hit {
     t: f32,
-    normal: vec3<f32>,  // unit, outward: (p - centre) / radius, or the triangle's normal on its counter-clockwise side
+    normal: vec3<f32>,  // unit, outward: (p - centre) / radius, or the
+                        // triangle's normal on its counter-clockwise side
     material: u32,
 };
 
@@ -19,7 +21,8 @@ fn is_finite(x: f32) -> bool {
 }
 
 // Slab test: does the ray meet the box between T_MIN and t_max?
-fn hit_box(origin: vec3<f32>, inv_dir: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>, t_max: f32) -> bool {
+fn hit_box(origin: vec3<f32>, inv_dir: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f32>,
+    t_max: f32) -> bool {
     let t0 = (bmin - origin) * inv_dir;
     let t1 = (bmax - origin) * inv_dir;
     let lo = min(t0, t1);
@@ -30,8 +33,8 @@ fn hit_box(origin: vec3<f32>, inv_dir: vec3<f32>, bmin: vec3<f32>, bmax: vec3<f3
 }
 
 // Möller–Trumbore: (t, u, v) with t = -1 for a miss; the hit point is (1 - u - v) p0 + u p1 + v p2.
-fn hit_triangle(origin: vec3<f32>, dir: vec3<f32>, p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>, t_max: f32)
-    -> vec3<f32> {
+fn hit_triangle(origin: vec3<f32>, dir: vec3<f32>, p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>,
+                t_max: f32) -> vec3<f32> {
     let e1 = p1 - p0;
     let e2 = p2 - p0;
     let pv = cross(dir, e2);
@@ -101,8 +104,8 @@ fn trace(origin: vec3<f32>, dir: vec3<f32>, hit: ptr<function, Hit>) -> bool {
         }
         for (var k = index; k < index + count; k++) {
             let p0 = triangles[6u * k];
-            let tuv = hit_triangle(origin, dir, p0.xyz, triangles[6u * k + 1u].xyz, triangles[6u * k + 2u].xyz,
-                                   (*hit).t);
+            let tuv = hit_triangle(origin, dir, p0.xyz, triangles[6u * k + 1u].xyz,
+                                   triangles[6u * k + 2u].xyz, (*hit).t);
             if (tuv.x > 0.0) {
                 let w = 1.0 - tuv.y - tuv.z;
                 let n = w * triangles[6u * k + 3u].xyz + tuv.y * triangles[6u * k + 4u].xyz
@@ -148,15 +151,17 @@ fn path_radiance(origin_in: vec3<f32>, dir_in: vec3<f32>, rng: ptr<function, u32
                 next = vec3<f32>(0.0);  // fuzzed below the surface: absorbed
             }
         } else {
-            next = scatter_dielectric(dir, hit.normal, m1.y, rng_next(rng));  // the student's function
+            // the student's function
+            next = scatter_dielectric(dir, hit.normal, m1.y, rng_next(rng));
         }
         let len2 = dot(next, next);
         if (!(len2 > 1e-12) || !is_finite(len2)) {
             break;  // absorbed (a zero or broken direction)
         }
         throughput *= m0.rgb;
-        // Start the next ray a little off the surface, on the side it leaves to: float32 knows a point on a
-        // sphere 1000 units from its centre only to ~1e-4, and a ray must not hit the surface it starts on.
+        // Start the next ray a little off the surface, on the side it leaves
+        // to: float32 knows a point on a sphere 1000 units from its centre
+        // only to ~1e-4, and a ray must not hit the surface it starts on.
         let p = origin + hit.t * dir;
         dir = next / sqrt(len2);
         origin = p + select(-facing, facing, dot(dir, facing) > 0.0) * RAY_OFFSET;

@@ -1,8 +1,9 @@
 // Image-based light with the split sum (Karis 2013), from three precomputed maps (see ibl.py):
-//   diffuse  = diffuse_albedo(base, metallic, F) · irradiance(n)          (irradiance map holds E(n)/π)
-//   specular = prefiltered(r, roughness) · (F0 · A + B)                    (A, B from the BRDF table)
-// with F = fresnel_schlick_roughness(n·v, F0, roughness) and F0 = base_reflectance(base, metallic): the
-// student's functions from brdf.glsl. Level k of the prefiltered cube holds roughness k / (levels - 1).
+//   diffuse  = diffuse_albedo(base, metallic, F) · irradiance(n)   (irradiance map holds E(n)/π)
+//   specular = prefiltered(r, roughness) · (F0 · A + B)             (A, B from the BRDF table)
+// with F = fresnel_schlick_roughness(n·v, F0, roughness) and
+// F0 = base_reflectance(base, metallic): the student's functions from
+// brdf.glsl. Level k of the prefiltered cube holds roughness k / (levels - 1).
 // --8<-- [start:ibl]
 vec3 ibl_light(samplerCube irradiance, samplerCube prefiltered, sampler2D brdf_lut, float levels,
                vec3 n, vec3 v, vec3 base, float metallic, float roughness) {

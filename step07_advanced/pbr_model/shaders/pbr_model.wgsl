@@ -1,6 +1,7 @@
-// The textured glTF model: metallic-roughness, normal, occlusion and emissive maps, lit by the scene's lights
-// (pbr_direct, from the showcase) and by image-based light (ibl.wgsl). Bindings follow the material's
-// texture order (gandalf_core.resources.gltf): five maps, then the three IBL textures.
+// The textured glTF model: metallic-roughness, normal, occlusion and emissive
+// maps, lit by the scene's lights (pbr_direct, from the showcase) and by
+// image-based light (ibl.wgsl). Bindings follow the material's texture order
+// (gandalf_core.resources.gltf): five maps, then the three IBL textures.
 #include "surface_vertex.wgsl"
 #include "pbr_lighting.wgsl"
 #include "normal_map.wgsl"
@@ -39,20 +40,23 @@ fn fs_main(in: SurfaceOut) -> @location(0) vec4<f32> {
     let n = safe_normalize(in.normal, vec3<f32>(0.0, 1.0, 0.0));
     let v = safe_normalize(frame.camera_position.xyz - in.world, n);
     // --8<-- [start:maps]
-    let base = material.color.rgb * textureSample(base_color_map, base_color_sampler, in.uv).rgb;  // sRGB
-    let mr = textureSample(metallic_roughness_map, metallic_roughness_sampler, in.uv);  // G rough, B metal
+    // sRGB
+    let base = material.color.rgb * textureSample(base_color_map, base_color_sampler, in.uv).rgb;
+    // G rough, B metal
+    let mr = textureSample(metallic_roughness_map, metallic_roughness_sampler, in.uv);
     let metallic = clamp(material.metallic * mr.b, 0.0, 1.0);
     let roughness = clamp(material.roughness * mr.g, 0.0, 1.0);
     var m = textureSample(normal_map, normal_sampler, in.uv).rgb * 2.0 - 1.0;
     m = vec3<f32>(m.xy * material.normal_scale, m.z);
     let shading = perturb_normal(n, in.tangent, m * 0.5 + 0.5);
-    let ao = 1.0 + material.occlusion_strength * (textureSample(occlusion_map, occlusion_sampler, in.uv).r - 1.0);
+    let ao = 1.0 + material.occlusion_strength
+        * (textureSample(occlusion_map, occlusion_sampler, in.uv).r - 1.0);
     let emitted = material.emissive.rgb * textureSample(emissive_map, emissive_sampler, in.uv).rgb;
     // --8<-- [end:maps]
     let shadow = shadow_factor(in.world, n);
     var color = pbr_direct(in.world, shading, v, base, metallic, roughness, shadow);
-    color += material.env_strength * ao * ibl_light(irradiance, irradiance_sampler, prefiltered, prefiltered_sampler,
-                                                    brdf_lut, lut_sampler, material.prefiltered_levels, shading, v,
-                                                    base, metallic, roughness);
+    color += material.env_strength * ao * ibl_light(irradiance, irradiance_sampler,
+        prefiltered, prefiltered_sampler, brdf_lut, lut_sampler, material.prefiltered_levels,
+        shading, v, base, metallic, roughness);
     return vec4<f32>(color + emitted, 1.0);
 }

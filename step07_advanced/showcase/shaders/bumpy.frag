@@ -1,5 +1,6 @@
 #version 330 core
-// PBR with an albedo texture, a tangent-space normal map and parallax occlusion mapping from a height map.
+// PBR with an albedo texture, a tangent-space normal map and parallax
+// occlusion mapping from a height map.
 #include "pbr_lighting.glsl"
 #include "normal_map.glsl"
 #include "parallax.glsl"
@@ -34,7 +35,8 @@ void main() {
     vec3 shading = perturb_normal(n, v_tangent, textureGrad(u_normal_map, uv, dx, dy).rgb);
     // The shadow map's bias follows the surface's own slope, not the bumps the normal map adds.
     float shadow = shadow_factor(v_world, n);
-    vec3 color = pbr_direct(v_world, shading, v, base, material.metallic, material.roughness, shadow);
+    vec3 color = pbr_direct(v_world, shading, v, base, material.metallic, material.roughness,
+        shadow);
     color += material.env_strength
              * pbr_environment(u_env, shading, v, base, material.metallic, material.roughness);
     f_color = vec4(color, 1.0);

@@ -1,4 +1,5 @@
-// PBR with an albedo texture, a tangent-space normal map and parallax occlusion mapping from a height map.
+// PBR with an albedo texture, a tangent-space normal map and parallax
+// occlusion mapping from a height map.
 #include "surface_vertex.wgsl"
 #include "pbr_lighting.wgsl"
 #include "normal_map.wgsl"
@@ -33,11 +34,14 @@ fn fs_main(in: SurfaceOut) -> @location(0) vec4<f32> {
     let v_ts = vec3<f32>(dot(v, basis.t), dot(v, basis.b), dot(v, n));
     let uv = parallax_uv(height_map, height_sampler, uv0, v_ts, material.height_scale, dx, dy);
     let base = material.color.rgb * textureSampleGrad(albedo, albedo_sampler, uv, dx, dy).rgb;
-    let shading = perturb_normal(n, in.tangent, textureSampleGrad(normal_map, normal_sampler, uv, dx, dy).rgb);
+    let shading = perturb_normal(n, in.tangent,
+        textureSampleGrad(normal_map, normal_sampler, uv, dx, dy).rgb);
     // The shadow map's bias follows the surface's own slope, not the bumps the normal map adds.
     let shadow = shadow_factor(in.world, n);
-    var color = pbr_direct(in.world, shading, v, base, material.metallic, material.roughness, shadow);
+    var color = pbr_direct(in.world, shading, v, base, material.metallic, material.roughness,
+        shadow);
     color += material.env_strength
-        * pbr_environment(env, env_sampler, shading, v, base, material.metallic, material.roughness);
+        * pbr_environment(env, env_sampler, shading, v, base, material.metallic,
+            material.roughness);
     return vec4<f32>(color, 1.0);
 }

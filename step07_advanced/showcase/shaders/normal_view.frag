@@ -1,6 +1,6 @@
 #version 330 core
-// The shading normal of a normal-mapped surface as a colour (n · 0.5 + 0.5): a debug view, and how the
-// normal_map exercise is graded.
+// The shading normal of a normal-mapped surface as a colour (n · 0.5 + 0.5): a debug view, and how
+// the normal_map exercise is graded.
 #include "normal_map.glsl"
 in vec3 v_normal;
 in vec2 v_uv;

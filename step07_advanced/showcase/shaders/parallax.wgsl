@@ -5,7 +5,8 @@ struct TangentBasis {
     b: vec3<f32>,
 };
 
-// The unit tangent T (made orthogonal to n) and bitangent B = cross(n, T) · w of the glTF convention.
+// The unit tangent T (made orthogonal to n) and bitangent
+// B = cross(n, T) · w of the glTF convention.
 fn tangent_basis(n: vec3<f32>, tangent: vec4<f32>) -> TangentBasis {
     let raw = tangent.xyz - n * dot(n, tangent.xyz);
     let len = length(raw);
@@ -14,19 +15,22 @@ fn tangent_basis(n: vec3<f32>, tangent: vec4<f32>) -> TangentBasis {
     return TangentBasis(t, cross(n, t) * select(1.0, -1.0, tangent.w < 0.0));
 }
 
-// Parallax occlusion mapping: march the view ray down through the height field (1 = top, 0 = deepest) in
-// tangent space and return the UV where it first goes below the surface, refined between the last two
-// layers. v_ts is the unit direction towards the eye in tangent space, scale the depth in UV units.
-// Explicit gradients (textureSampleGrad) are also what WGSL requires for sampling inside non-uniform loops.
-fn parallax_uv(height_map: texture_2d<f32>, height_sampler: sampler, uv: vec2<f32>, v_ts: vec3<f32>, scale: f32,
-               dx: vec2<f32>, dy: vec2<f32>) -> vec2<f32> {
+// Parallax occlusion mapping: march the view ray down through the height field
+// (1 = top, 0 = deepest) in tangent space and return the UV where it first goes below the surface,
+// refined between the last two layers. v_ts is the unit direction towards the eye in tangent space,
+// scale the depth in UV units. Explicit gradients (textureSampleGrad) are also what WGSL requires
+// for sampling inside non-uniform loops.
+fn parallax_uv(height_map: texture_2d<f32>, height_sampler: sampler, uv: vec2<f32>, v_ts: vec3<f32>,
+               scale: f32, dx: vec2<f32>, dy: vec2<f32>) -> vec2<f32> {
     if (scale <= 0.0 || v_ts.z <= 0.0) {
         return uv;
     }
     let max_layers = 32;
-    let layers = mix(f32(max_layers), 8.0, clamp(v_ts.z, 0.0, 1.0));  // more layers at grazing angles
+    // more layers at grazing angles
+    let layers = mix(f32(max_layers), 8.0, clamp(v_ts.z, 0.0, 1.0));
     let layer_depth = 1.0 / layers;
-    // +x of tangent space is +u, +y (the bitangent, image up) is -v; a flat view would shift without bound.
+    // +x of tangent space is +u, +y (the bitangent, image up) is -v; a
+    // flat view would shift without bound.
     let delta = vec2<f32>(v_ts.x, -v_ts.y) / max(v_ts.z, 0.1) * scale / layers;
     var current = uv;
     var depth = 0.0;
@@ -38,7 +42,8 @@ fn parallax_uv(height_map: texture_2d<f32>, height_sampler: sampler, uv: vec2<f3
     }
     let previous = current + delta;
     let after = surface - depth;  // <= 0: below the surface
-    let before = 1.0 - textureSampleGrad(height_map, height_sampler, previous, dx, dy).r - (depth - layer_depth);
+    let before = 1.0 - textureSampleGrad(height_map, height_sampler, previous, dx, dy).r
+        - (depth - layer_depth);
     let denominator = after - before;
     let w = select(0.0, after / denominator, abs(denominator) > 1e-6);
     return mix(current, previous, clamp(w, 0.0, 1.0));

@@ -1,6 +1,7 @@
 #version 430 core
 // The particle update as an OpenGL compute shader: one invocation per particle, 64 per work group.
-// Compute shaders need GLSL 4.30 (the render shaders stay at 3.30). The same bytes as particles.wgsl:
+// Compute shaders need GLSL 4.30 (the render shaders stay at 3.30).
+// The same bytes as particles.wgsl:
 // the parameters in a std140 uniform block, the particles in a std430 shader storage buffer.
 layout(local_size_x = 64) in;
 
@@ -17,7 +18,8 @@ struct SimParams {
     uint seed;         // changes every step: new random launch velocities
 };
 
-layout(std140, binding = 4) uniform Sim { SimParams u_sim; };  // 0 and 1 are the engine's Frame and Lights
+layout(std140, binding = 4) uniform Sim { SimParams u_sim; };  // 0 and 1 are the engine's
+                                                               // Frame and Lights
 layout(std430, binding = 1) buffer Particles { Particle particles[]; };
 
 #include "particle_step.glsl"
@@ -45,7 +47,8 @@ void main() {
     Particle p = particle_step(particles[i], u_sim);
     if (p.position.w <= 0.0) {
         uint key = hash_u32(i ^ hash_u32(u_sim.seed)) & 0xfffffff0u;
-        vec3 launch = vec3((random01(key) - 0.5) * 2.4, 5.0 + 1.5 * random01(key + 1u), (random01(key + 2u) - 0.5) * 2.4);
+        vec3 launch = vec3((random01(key) - 0.5) * 2.4, 5.0 + 1.5 * random01(key + 1u),
+            (random01(key + 2u) - 0.5) * 2.4);
         p.position = vec4(u_sim.emitter.xyz, u_sim.emitter.w * (0.5 + 0.5 * random01(key + 3u)));
         p.velocity = vec4(launch, 0.0);
     }

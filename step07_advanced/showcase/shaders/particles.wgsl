@@ -1,5 +1,6 @@
 // The particle update as a WebGPU compute shader: one invocation per particle, 64 per work group.
-// The same bytes as particles.comp: the parameters in a uniform buffer, the particles in a storage buffer.
+// The same bytes as particles.comp: the parameters in a uniform
+// buffer, the particles in a storage buffer.
 
 struct Particle {
     position: vec4<f32>,  // xyz: position, w: remaining life (s)

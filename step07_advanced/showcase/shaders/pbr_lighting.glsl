@@ -1,13 +1,13 @@
-// Metallic-roughness shading with every light of the scene, plus an environment term from a sky cube map.
-// ggx_specular(), fresnel_schlick(), base_reflectance() and diffuse_albedo() come from brdf.glsl (exercises/ or
-// solutions/);
-// shadow_factor() from the engine's shadow.glsl.
+// Metallic-roughness shading with every light of the scene, plus an environment term from a sky
+// cube map. ggx_specular(), fresnel_schlick(), base_reflectance() and diffuse_albedo() come from
+// brdf.glsl (exercises/ or solutions/); shadow_factor() from the engine's shadow.glsl.
 #include "frame.glsl"
 #include "shadow.glsl"
 #include "brdf.glsl"
 
 const float PI = 3.14159265358979;
-// Perceptual roughness below this makes the GGX lobe narrower than a pixel (and D overflow float16 GPUs).
+// Perceptual roughness below this makes the GGX lobe narrower than a pixel
+// (and D overflow float16 GPUs).
 const float MIN_ROUGHNESS = 0.045;
 
 // A unit vector from a possibly unnormalised (or zero) one: interpolated normals can cancel out.
@@ -35,9 +35,10 @@ void light_at(int i, vec3 p, vec3 n, out vec3 l, out vec3 radiance) {
     }
 }
 
-// Direct light: sum over the lights of (diffuse_albedo/π + specular BRDF) · radiance · n·l, plus the lights
-// block's ambient. diffuse_albedo = base (1 - metallic)(1 - F): what is reflected specularly is not scattered.
-// `shadow` is the part of the shadow-casting light that reaches p (shadow_factor(); 1 without shadows).
+// Direct light: sum over the lights of (diffuse_albedo/π + specular BRDF) · radiance · n·l, plus
+// the lights block's ambient. diffuse_albedo = base (1 - metallic)(1 - F): what is reflected
+// specularly is not scattered. `shadow` is the part of the shadow-casting light that reaches p
+// (shadow_factor(); 1 without shadows).
 vec3 pbr_direct(vec3 p, vec3 n, vec3 v, vec3 base, float metallic, float roughness, float shadow) {
     float r = clamp(roughness, MIN_ROUGHNESS, 1.0);
     vec3 f0 = base_reflectance(base, metallic);
@@ -55,14 +56,16 @@ vec3 pbr_direct(vec3 p, vec3 n, vec3 v, vec3 base, float metallic, float roughne
             continue;
         }
         vec3 h = safe_normalize(l + v, n);
-        vec3 diffuse_part = diffuse_albedo(base, metallic, fresnel_schlick(max(dot(h, v), 0.0), f0));
+        vec3 diffuse_part = diffuse_albedo(base, metallic,
+            fresnel_schlick(max(dot(h, v), 0.0), f0));
         color += (diffuse_part / PI + ggx_specular(n, v, l, r, f0)) * radiance * n_dot_l;
     }
     return color;
 }
 
-// Image-based light from a (mip-mapped) cube map: blurrier mips stand in for rougher lobes (split sum with
-// Karis' analytic fit of the pre-integrated BRDF); the diffuse part reads a nearly fully blurred level.
+// Image-based light from a (mip-mapped) cube map: blurrier mips stand in for
+// rougher lobes (split sum with Karis' analytic fit of the pre-integrated
+// BRDF); the diffuse part reads a nearly fully blurred level.
 vec3 pbr_environment(samplerCube env, vec3 n, vec3 v, vec3 base, float metallic, float roughness) {
     float r = clamp(roughness, MIN_ROUGHNESS, 1.0);
     vec3 f0 = base_reflectance(base, metallic);

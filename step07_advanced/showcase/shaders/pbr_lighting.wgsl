@@ -1,13 +1,13 @@
-// Metallic-roughness shading with every light of the scene, plus an environment term from a sky cube map.
-// ggx_specular(), fresnel_schlick(), base_reflectance() and diffuse_albedo() come from brdf.wgsl (exercises/ or
-// solutions/);
-// shadow_factor() from the engine's shadow.wgsl.
+// Metallic-roughness shading with every light of the scene, plus an environment term from a sky
+// cube map. ggx_specular(), fresnel_schlick(), base_reflectance() and diffuse_albedo() come from
+// brdf.wgsl (exercises/ or solutions/); shadow_factor() from the engine's shadow.wgsl.
 #include "frame.wgsl"
 #include "shadow.wgsl"
 #include "brdf.wgsl"
 
 const PI: f32 = 3.14159265358979;
-// Perceptual roughness below this makes the GGX lobe narrower than a pixel (and D overflow float16 GPUs).
+// Perceptual roughness below this makes the GGX lobe narrower than a pixel
+// (and D overflow float16 GPUs).
 const MIN_ROUGHNESS: f32 = 0.045;
 
 // A unit vector from a possibly unnormalised (or zero) one: interpolated normals can cancel out.
@@ -40,11 +40,12 @@ fn light_at(i: i32, p: vec3<f32>, n: vec3<f32>) -> LightSample {
     return LightSample(l, radiance);
 }
 
-// Direct light: sum over the lights of (diffuse_albedo/π + specular BRDF) · radiance · n·l, plus the lights
-// block's ambient. diffuse_albedo = base (1 - metallic)(1 - F): what is reflected specularly is not scattered.
-// `shadow` is the part of the shadow-casting light that reaches p (shadow_factor(); 1 without shadows).
-fn pbr_direct(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>, metallic: f32, roughness: f32,
-              shadow: f32) -> vec3<f32> {
+// Direct light: sum over the lights of (diffuse_albedo/π + specular BRDF) · radiance · n·l, plus
+// the lights block's ambient. diffuse_albedo = base (1 - metallic)(1 - F): what is reflected
+// specularly is not scattered. `shadow` is the part of the shadow-casting light that reaches p
+// (shadow_factor(); 1 without shadows).
+fn pbr_direct(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>, metallic: f32,
+              roughness: f32, shadow: f32) -> vec3<f32> {
     let r = clamp(roughness, MIN_ROUGHNESS, 1.0);
     let f0 = base_reflectance(base, metallic);
     let diffuse = base * (1.0 - metallic);
@@ -64,10 +65,11 @@ fn pbr_direct(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>, metalli
     return color;
 }
 
-// Image-based light from a (mip-mapped) cube map: blurrier mips stand in for rougher lobes (split sum with
-// Karis' analytic fit of the pre-integrated BRDF); the diffuse part reads a nearly fully blurred level.
-fn pbr_environment(env: texture_cube<f32>, env_sampler: sampler, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>,
-                   metallic: f32, roughness: f32) -> vec3<f32> {
+// Image-based light from a (mip-mapped) cube map: blurrier mips stand in for
+// rougher lobes (split sum with Karis' analytic fit of the pre-integrated
+// BRDF); the diffuse part reads a nearly fully blurred level.
+fn pbr_environment(env: texture_cube<f32>, env_sampler: sampler, n: vec3<f32>, v: vec3<f32>,
+                   base: vec3<f32>, metallic: f32, roughness: f32) -> vec3<f32> {
     let r = clamp(roughness, MIN_ROUGHNESS, 1.0);
     let f0 = base_reflectance(base, metallic);
     let n_dot_v = clamp(dot(n, v), 1e-4, 1.0);

@@ -1,6 +1,7 @@
 #version 330 core
-// The shadow study: the engine's shadow lookup (shadow.glsl) with the percentage-closer filter's radius as a
-// material parameter (material.pcf = r: (2r + 1)^2 taps). The output is the lit fraction itself (white = lit).
+// The shadow study: the engine's shadow lookup (shadow.glsl) with the percentage-closer filter's
+// radius as a material parameter (material.pcf = r: (2r + 1)^2 taps). The output is the lit
+// fraction itself (white = lit).
 #include "shadow.glsl"
 in vec3 v_world;
 in vec3 v_normal;
@@ -23,7 +24,8 @@ float study_shadow(vec3 world_position, vec3 normal, int r) {
     float lit = 0.0;
     for (int y = -r; y <= r; ++y) {
         for (int x = -r; x <= r; ++x) {
-            lit += textureLod(u_shadow_map, vec3(coord.xy + vec2(x, y) * u_shadow.z, reference), 0.0);
+            lit += textureLod(u_shadow_map,
+                              vec3(coord.xy + vec2(x, y) * u_shadow.z, reference), 0.0);
         }
     }
     float taps = float(2 * r + 1);

@@ -1,5 +1,6 @@
-// The shadow study: the engine's shadow lookup (shadow.wgsl) with the percentage-closer filter's radius as a
-// material parameter (pcf = r: (2r + 1)^2 taps). The output is the lit fraction itself (white = lit).
+// The shadow study: the engine's shadow lookup (shadow.wgsl) with the
+// percentage-closer filter's radius as a material parameter
+// (pcf = r: (2r + 1)^2 taps). The output is the lit fraction itself (white = lit).
 #include "frame.wgsl"
 #include "instance.wgsl"
 #include "shadow.wgsl"
@@ -16,7 +17,8 @@ struct VOut {
 };
 
 @vertex
-fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, inst: Instance) -> VOut {
+fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>,
+    inst: Instance) -> VOut {
     var out: VOut;
     let world = instance_model(inst) * vec4<f32>(position, 1.0);
     out.position = frame.projection * frame.view * world;

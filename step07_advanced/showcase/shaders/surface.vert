@@ -1,5 +1,6 @@
 #version 330 core
-// World-space position, normal, UV and tangent for the step's surface shaders (pbr, bumpy, normal_view).
+// World-space position, normal, UV and tangent for the step's surface shaders
+// (pbr, bumpy, normal_view).
 #include "frame.glsl"
 #include "instance.glsl"
 layout(location = 0) in vec3 a_position;
@@ -16,7 +17,8 @@ void main() {
     v_world = world.xyz;
     v_normal = instance_normal(a_normal);
     v_uv = a_uv;
-    // A tangent lies in the surface, so it follows the model matrix itself (normals need the cofactor).
+    // A tangent lies in the surface, so it follows the model matrix itself
+    // (normals need the cofactor).
     v_tangent = vec4(mat3(model) * a_tangent.xyz, a_tangent.w);
     gl_Position = u_projection * u_view * world;
 }

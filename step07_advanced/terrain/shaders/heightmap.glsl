@@ -1,5 +1,5 @@
-// The terrain's heightmap for the GLSL stages: a 16-bit height split into red (high byte) and green (low byte)
-// of an RGBA8 texture, read texel by texel (the exercise's terrain_height interpolates).
+// The terrain's heightmap for the GLSL stages: a 16-bit height split into red (high byte) and green
+// (low byte) of an RGBA8 texture, read texel by texel (the exercise's terrain_height interpolates).
 uniform sampler2D u_heightmap;
 
 int heightmap_size() {

@@ -1,5 +1,6 @@
-// The 16-bit height of a texel: red holds the high byte, green the low byte (heightfield.py encodes them).
-// The including file declares `heightmap: texture_2d<f32>` in its own bind group.
+// The 16-bit height of a texel: red holds the high byte, green the
+// low byte (heightfield.py encodes them). The including file declares
+// `heightmap: texture_2d<f32>` in its own bind group.
 fn heightmap_size() -> i32 {
     return i32(textureDimensions(heightmap).x);
 }

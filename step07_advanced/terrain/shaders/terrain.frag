@@ -1,5 +1,6 @@
 #version 410 core
-// Per fragment, from the uv alone: the normal (the exercise's terrain_normal), the height, the colour.
+// Per fragment, from the uv alone: the normal
+// (the exercise's terrain_normal), the height, the colour.
 #include "frame.glsl"
 #include "heightmap.glsl"
 #include "terrain.glsl"

@@ -1,7 +1,8 @@
 #version 410 core
-// Tessellation control: once per patch, the level of each edge from its displaced corners (the exercise's
-// tess_level), and the inner level as the largest of them. Two patches sharing an edge compute the same level
-// from the same two corners, so their edges have the same vertices: no cracks.
+// Tessellation control: once per patch, the level of each edge from its
+// displaced corners (the exercise's tess_level), and the inner level as the
+// largest of them. Two patches sharing an edge compute the same level from
+// the same two corners, so their edges have the same vertices: no cracks.
 #include "frame.glsl"
 #include "heightmap.glsl"
 #include "terrain.glsl"

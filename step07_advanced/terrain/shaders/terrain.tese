@@ -1,5 +1,6 @@
 #version 410 core
-// Tessellation evaluation: each generated vertex at its place in the patch, lifted by the heightmap.
+// Tessellation evaluation: each generated vertex at its place in the
+// patch, lifted by the heightmap.
 #include "frame.glsl"
 #include "heightmap.glsl"
 #include "terrain.glsl"

@@ -1,5 +1,6 @@
-// The terrain in WebGPU: the vertex shader pulls the vertices the compute pass (tessellate.wgsl) wrote, by
-// vertex_index (no vertex buffer); the fragment shader shades from the uv alone, as terrain.frag does.
+// The terrain in WebGPU: the vertex shader pulls the vertices the compute
+// pass (tessellate.wgsl) wrote, by vertex_index (no vertex buffer); the
+// fragment shader shades from the uv alone, as terrain.frag does.
 #include "frame.wgsl"
 #include "terrain.wgsl"
 #include "terrain_shading.wgsl"
@@ -12,7 +13,8 @@ struct Material {
 @group(1) @binding(0) var<uniform> material: Material;
 @group(1) @binding(1) var heightmap: texture_2d<f32>;
 @group(1) @binding(2) var heightmap_sampler: sampler;  // unused: texels are read with textureLoad
-@group(1) @binding(3) var<storage, read> vertices: array<vec4<f32>>;  // (u, v, world y, 1); unused slots 0
+// (u, v, world y, 1); unused slots 0
+@group(1) @binding(3) var<storage, read> vertices: array<vec4<f32>>;
 #include "heightmap_decode.wgsl"
 
 struct TerrainOut {
@@ -36,6 +38,7 @@ fn vs_main(@builtin(vertex_index) index: u32) -> TerrainOut {
 fn fs_main(in: TerrainOut) -> @location(0) vec4<f32> {
     let n = terrain_normal(in.uv, vec2<f32>(material.size, material.height_scale));
     let h = terrain_height(in.uv);
-    let world = vec3<f32>((in.uv.x - 0.5) * material.size, material.height_scale * h, (in.uv.y - 0.5) * material.size);
+    let world = vec3<f32>((in.uv.x - 0.5) * material.size, material.height_scale * h,
+        (in.uv.y - 0.5) * material.size);
     return vec4<f32>(shade_terrain(h, n, world_to_relative(world), material.color.rgb), 1.0);
 }

@@ -1,5 +1,6 @@
-// Colour by height and slope (grass, rock, snow), lit by the engine's lights, faded into the haze with distance.
-// The same maths as terrain_shading.wgsl: both APIs shade every fragment from its uv alone.
+// Colour by height and slope (grass, rock, snow), lit by the engine's
+// lights, faded into the haze with distance. The same maths as
+// terrain_shading.wgsl: both APIs shade every fragment from its uv alone.
 vec3 terrain_albedo(float h, vec3 n) {
     vec3 grass = vec3(0.060, 0.150, 0.030);
     vec3 rock = vec3(0.180, 0.150, 0.120);

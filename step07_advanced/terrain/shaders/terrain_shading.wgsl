@@ -1,5 +1,6 @@
-// Colour by height and slope (grass, rock, snow), lit by the engine's lights, faded into the haze with distance.
-// The same maths as terrain_shading.glsl: both APIs shade every fragment from its uv alone.
+// Colour by height and slope (grass, rock, snow), lit by the engine's
+// lights, faded into the haze with distance. The same maths as
+// terrain_shading.glsl: both APIs shade every fragment from its uv alone.
 fn terrain_albedo(h: f32, n: vec3<f32>) -> vec3<f32> {
     let grass = vec3<f32>(0.060, 0.150, 0.030);
     let rock = vec3<f32>(0.180, 0.150, 0.120);

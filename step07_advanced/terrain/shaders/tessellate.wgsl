@@ -1,8 +1,9 @@
-// WebGPU has no tessellation stage: this compute pass does its work. One invocation per (cell, patch): every
-// patch owns a fixed budget of L x L cells (L = the max level), 6 vertices each. The patch's levels come from the
-// exercise's tess_level, exactly as terrain.tesc computes them; the patch is cut into an n x n grid
-// (n = ceil(inner)), and the vertices on each edge are snapped to that edge's own ceil(outer) segments, so a
-// neighbour with another inner level still meets it vertex for vertex. Cells beyond n write degenerate triangles.
+// WebGPU has no tessellation stage: this compute pass does its work. One invocation per
+// (cell, patch): every patch owns a fixed budget of L x L cells (L = the max level), 6 vertices
+// each. The patch's levels come from the exercise's tess_level, exactly as terrain.tesc computes
+// them; the patch is cut into an n x n grid (n = ceil(inner)), and the vertices on each edge are
+// snapped to that edge's own ceil(outer) segments, so a neighbour with another inner level still
+// meets it vertex for vertex. Cells beyond n write degenerate triangles.
 #include "terrain.wgsl"
 
 struct Params {
@@ -13,7 +14,8 @@ struct Params {
 @group(0) @binding(0) var<uniform> params: Params;
 @group(0) @binding(1) var heightmap: texture_2d<f32>;
 @group(0) @binding(2) var<storage, read_write> vertices: array<vec4<f32>>;  // (u, v, world y, 1)
-@group(0) @binding(3) var<storage, read_write> levels: array<vec4<f32>>;    // per pid: outer[4]; (inner, n, 0, 0)
+// per pid: outer[4]; (inner, n, 0, 0)
+@group(0) @binding(3) var<storage, read_write> levels: array<vec4<f32>>;
 #include "heightmap_decode.wgsl"
 
 fn corner_world(uv: vec2<f32>) -> vec3<f32> {
@@ -48,10 +50,13 @@ fn cs_main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let w3 = corner_world(c[3]);
     let eye = params.eye.xyz;
     // OpenGL's quad edges: 0 is u = u0, 1 is v = v0, 2 is u = u1, 3 is v = v1.
-    let outer = vec4<f32>(tess_level(w0, w3, eye, params.lod.xyz), tess_level(w0, w1, eye, params.lod.xyz),
-                          tess_level(w1, w2, eye, params.lod.xyz), tess_level(w3, w2, eye, params.lod.xyz));
+    let outer = vec4<f32>(tess_level(w0, w3, eye, params.lod.xyz),
+                          tess_level(w0, w1, eye, params.lod.xyz),
+                          tess_level(w1, w2, eye, params.lod.xyz),
+                          tess_level(w3, w2, eye, params.lod.xyz));
     let inner = max(max(outer.x, outer.y), max(outer.z, outer.w));
-    // Clamped, so that whatever tess_level returns (even NaN) the pass stays inside the pid's budget.
+    // Clamped, so that whatever tess_level returns (even NaN) the pass
+    // stays inside the pid's budget.
     let n = clamp(u32(ceil(inner)), 1u, budget);
     let m = clamp(vec4<u32>(ceil(outer)), vec4<u32>(1u), vec4<u32>(n));
     if (cell == 0u) {
