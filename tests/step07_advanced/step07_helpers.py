@@ -5,10 +5,13 @@ references (a ray-sphere PBR renderer and a normal-mapped quad), all in float64 
 
 from __future__ import annotations
 
+import atexit
 import functools
 import importlib
+import shutil
+import tempfile
 from pathlib import Path
-from types import ModuleType
+from types import ModuleType, SimpleNamespace
 
 import numpy as np
 
@@ -29,6 +32,31 @@ REFERENCES = Path(__file__).resolve().parent / "references"
 SIZE = (112, 84)
 EYE = np.array([0.0, 0.0, 3.2])
 FOV = 45.0
+
+
+SOLUTIONS = Path(__file__).resolve().parents[2] / "step07_advanced" / "solutions"
+_with_reference: dict[tuple[str, tuple[str, ...]], SimpleNamespace] = {}
+
+
+def with_reference_files(impl: ModuleType, stems: tuple[str, ...]) -> SimpleNamespace:
+    """``impl`` with the reference solution's ``<stem>.glsl`` / ``<stem>.wgsl`` for ``stems``: a shader that
+    includes two exercises' files grades one of them alone (else an unfinished other exercise would cost this
+    one its points). A copy of ``impl``'s shader files in a temporary folder, made once per run; it stands
+    for ``impl`` wherever only its folder is read (``impl.__file__``)."""
+    folder = Path(impl.__file__).resolve().parent
+    key = (str(folder), tuple(stems))
+    if key not in _with_reference:
+        target = Path(tempfile.mkdtemp(prefix="gandalf-impl-"))
+        atexit.register(shutil.rmtree, target, True)
+        for path in folder.iterdir():
+            if path.suffix in (".glsl", ".wgsl"):
+                shutil.copy2(path, target / path.name)
+        for stem in stems:
+            for language in ("glsl", "wgsl"):
+                shutil.copy2(SOLUTIONS / f"{stem}.{language}", target / f"{stem}.{language}")
+        (target / "__init__.py").write_text("")
+        _with_reference[key] = SimpleNamespace(__file__=str(target / "__init__.py"), __name__=impl.__name__)
+    return _with_reference[key]
 
 
 @functools.cache

@@ -6,6 +6,8 @@
   irradiance map one colour; no lights) against a per-pixel numpy reference of the split sum, diffuse
   ``diffuse_albedo(base, metallic, F) · E`` plus specular ``L · (F0 · A + B)``, with
   ``F = fresnel_schlick_roughness(n·v, F0, roughness)`` and (A, B) read bilinearly from the same 8-bit table.
+  The model's shader also includes ``normal_map.*`` (another exercise): the test gives it the reference's, so
+  an unfinished normal map costs nothing here (the batch grader's sample class found that it did).
   Tolerance (8-bit steps, pixels 2 inside the silhouette): mean ≤ 1.0, 99th percentile ≤ 3; the reference
   solution measures at most 0.22 and 1 (largest error 2) in both APIs.
 * The engine side: explicit cube-map mip levels reach the GPU level by level in both APIs (each level a
@@ -20,7 +22,7 @@ import importlib
 
 import numpy as np
 import pytest
-from step07_helpers import EYE, FOV, brdf_lut_texture, inner, pixel_errors, to_srgb8
+from step07_helpers import EYE, FOV, brdf_lut_texture, inner, pixel_errors, to_srgb8, with_reference_files
 
 from gandalf_core import Application, Scene, TransformComponent, testing
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
@@ -148,7 +150,8 @@ def test_image_based_light_matches_the_split_sum(impl, backend, metallic, roughn
     scene = sphere_scene(color, metallic, roughness, solid_cube(IRRADIANCE8, mipmaps=False),
                          solid_cube(PREFILTERED8, 8, levels=[np.full((6, s, s, 4), (*PREFILTERED8, 255), np.uint8)
                                                              for s in (4, 2, 1)]), 4)
-    image = render(backend, impl, scene)
+    # The model's shader also includes normal_map.*, another exercise: the reference's, so this one is graded alone.
+    image = render(backend, with_reference_files(impl, ("normal_map",)), scene)
     expected, hit = reference_ibl_sphere(color, metallic, roughness)
     mean, p99 = pixel_errors(image, expected, inner(hit))
     assert mean <= 1.0 and p99 <= 3.0, (
