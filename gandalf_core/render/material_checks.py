@@ -13,32 +13,28 @@ from collections.abc import Iterable
 from ..resources import ResourceError
 
 
-def check_parameters(material: str, shader: str, source: str, params: Iterable[str], fields: dict[str, bool],
-                     prefix: str = "", legacy_prefix: str = "") -> None:
+def check_parameters(material: str, shader: str, source: str, params: Iterable[str], fields: dict[str, bool]) -> None:
     """``params``: the material's parameter names (its colour is always given, and a shader need not read it);
-    ``fields``: the shader's value names (without ``prefix``) -> whether the shader states a default for it (then
-    the material may leave it out). A parameter given with ``prefix`` or ``legacy_prefix`` (GLSL's old ``u_``) in
-    front of a field's name gets an error saying to leave the prefix out."""
+    ``fields``: the fields of the shader's Material block -> whether the shader states a default for it (then the
+    material may leave it out). A parameter given with GLSL's old ``u_`` prefix in front of a field's name gets an
+    error saying to leave the prefix out, in both APIs."""
     params = list(params)
     given = [*params, "color"]
     label = f"material '{material}'"
     for key in params:
         if key in fields:
             continue
-        if legacy_prefix and key.startswith(legacy_prefix) and key[len(legacy_prefix):] in fields:
-            raise ResourceError(label, f"params['{key}']", f"give it without the '{legacy_prefix}' prefix: "
-                                f"'{key[len(legacy_prefix):]}' (the field of shader '{shader}''s Material block)")
-        if prefix and key.startswith(prefix) and key[len(prefix):] in fields:
-            raise ResourceError(label, f"params['{key}']", f"give it without the '{prefix}' prefix: "
-                                f"'{key[len(prefix):]}' (the shader's {prefix}{key[len(prefix):]})")
+        if key.startswith("u_") and key[2:] in fields:
+            raise ResourceError(label, f"params['{key}']", f"give it without the 'u_' prefix: "
+                                f"'{key[2:]}' (the field of shader '{shader}''s Material block)")
         close = difflib.get_close_matches(key, list(fields), n=3, cutoff=0.6)
         hint = f"; did you mean {', '.join(repr(c) for c in close)}?" if close else ""
         raise ResourceError(label, f"params['{key}']",
-                            f"shader '{shader}' ({source}) has no value '{prefix}{key}' "
+                            f"shader '{shader}' ({source}) has no value '{key}' "
                             f"(it has: {', '.join(sorted(fields)) or 'none'}){hint}")
     missing = [name for name, has_default in fields.items() if name not in given and not has_default]
     if missing:
         raise ResourceError(label, "params", f"shader '{shader}' ({source}) reads "
-                            f"{', '.join(repr(prefix + m) for m in sorted(missing))}, which the material never "
+                            f"{', '.join(repr(m) for m in sorted(missing))}, which the material never "
                             "sets (it would read 0): give a value in params (or the colour), or a default in "
                             "the shader")

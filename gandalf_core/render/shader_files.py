@@ -5,7 +5,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 from pathlib import Path
 
-from ..resources import ShaderSource
+from ..resources import ResourceError, ShaderSource
+from ..resources.shader_source import SHADER_EXTENSIONS
 
 SNIPPETS_DIR = Path(__file__).resolve().parent / "shaders"
 
@@ -24,6 +25,13 @@ def load_shader(
         return source
     dirs = [*include_dirs, SNIPPETS_DIR]
     if isinstance(source, Path) or (isinstance(source, str) and "\n" not in source and Path(source).suffix):
+        path = Path(source)
+        language = SHADER_EXTENSIONS.get(path.suffix, (None, None))[0]
+        if lang is not None and language is not None and language != lang:
+            api = {"glsl": "OpenGL", "wgsl": "WebGPU"}[lang]
+            raise ResourceError(f"shader '{path}'", "path",
+                                f"is {language.upper()} (by its extension {path.suffix!r}), but the {api} renderer "
+                                f"compiles {lang.upper()}: give it the {lang.upper()} file")
         return ShaderSource.from_file(source, stage=stage, include_dirs=dirs)
     if lang is None:
         raise ValueError("shader text needs lang='glsl' or 'wgsl'")

@@ -1,7 +1,8 @@
 """Checks of textures when they are built or bound, the same in both backends, each error naming the texture:
 
 * a texture larger than the device allows (OpenGL would draw it black, WebGPU fail with a bare validation error);
-* a cube map in a material's 2-D slot, or the reverse (the error also names the material, shader and slot).
+* a cube map in a material's 2-D slot, or the reverse (the error also names the material, shader and slot);
+* a frame (render target) larger than the device allows.
 """
 
 from __future__ import annotations
@@ -34,3 +35,11 @@ def check_texture_size(name: str, data: Any, limit: int, what: str) -> None:
     if max(width, height) > limit:
         raise ResourceError(f"texture '{name}'", "size", f"{width}x{height} is larger than this device's {what} "
                             f"({limit}): scale the image down")
+
+
+def check_target_size(width: int, height: int, limit: int) -> None:
+    """Raise when a frame of ``width`` x ``height`` exceeds the device's largest render target side ``limit``."""
+    for field, value in (("width", width), ("height", height)):
+        if value > limit:
+            raise ValueError(f"frame {field} {value} is larger than this device's largest render target ({limit} "
+                             f"pixels a side): ask for a smaller {field}")

@@ -303,13 +303,11 @@ def test_the_builtin_materials_are_the_same_bytes_in_both_apis_and_match_the_dri
         assert pair["opengl"] == pair["webgpu"], f"{name}: the Material bytes differ between the APIs"
 
 
-def test_older_loose_uniforms_of_the_wrong_size_name_material_shader_and_field():
-    """Shaders without a Material block still take loose ``u_<name>`` uniforms; a wrong size is a clear error."""
+def test_loose_material_uniforms_are_refused_naming_shader_files_and_uniforms():
+    """A material's values go in its Material block: a program declaring loose ``u_<name>`` uniforms (the older
+    way, which read 0 when a material forgot them) is refused when it is built, naming its files and uniforms."""
     frag = ("#version 330 core\nin vec3 v_world;\nuniform vec4 u_color;\nuniform vec3 u_tint;\nout vec4 f_color;\n"
             "void main() { f_color = u_color * vec4(u_tint, 1.0) + vec4(v_world, 0.0) * 0.0; }\n")
-    with Application("opengl", 16, 12, headless=True) as app:
+    needle = r"shader 'probe' \(probe\.vert, probe\.frag\): declares loose material uniforms \(u_color, u_tint\)"
+    with Application("opengl", 16, 12, headless=True) as app, pytest.raises(ShaderCompileError, match=needle):
         build_shader(app, frag=frag)
-        app.renderer.materials.build("ok", MaterialData("probe", params={"tint": (1, 1, 1)}))
-        with pytest.raises(ResourceError, match=r"material 'M': params\['tint'\]: shader 'probe' \(probe\.vert, "
-                                                r"probe\.frag\) declares u_tint with 3 value\(s\), got 2"):
-            app.renderer.materials.build("M", MaterialData("probe", params={"tint": (1, 1)}))

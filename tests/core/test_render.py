@@ -363,9 +363,11 @@ layout(location = 0) in vec3 a_position;
 void main() { gl_Position = u_projection * u_view * instance_model() * vec4(a_position, 1.0); }
 """
 FLAT_FRAG = """#version 330 core
-uniform vec4 u_color; uniform vec4 u_tint; uniform mat4 u_m;
+layout(std140) uniform Material { vec4 color; vec4 tint; mat4 m; } material;
 out vec4 f_color;
-void main() { f_color = vec4(u_color.rgb * u_tint.rgb + vec3(0.0, 0.0, u_m[1].x), u_color.a); }
+void main() {
+    f_color = vec4(material.color.rgb * material.tint.rgb + vec3(0.0, 0.0, material.m[1].x), material.color.a);
+}
 """
 
 
@@ -421,22 +423,22 @@ def test_depth_test_off_still_writes_depth_in_both_backends(backend):
 
 def test_matrix_params_reach_the_shader_alike(backend):
     m = np.eye(4)
-    m[0, 1] = 1.0  # row 0, column 1: GLSL's u_m[1].x and WGSL's material.m[1].x
+    m[0, 1] = 1.0  # row 0, column 1: material.m[1].x in both languages
     material = {"color": (1, 0, 0), "params": {"tint": (1, 1, 1, 1), "m": m.ravel()}}
     pixel = centre(backend, quads_scene(("a", -1.0, material)))
     assert pixel[:3].tolist() == [255, 0, 255]
 
 
 @pytest.mark.parametrize(("params", "needle"), [
-    ({"m": np.zeros(16)}, r"material 'a': params: shader 'flat' .* reads '(u_)?tint', which the material never "
+    ({"m": np.zeros(16)}, r"material 'a': params: shader 'flat' .* reads 'tint', which the material never "
                           r"sets \(it would read 0\)"),
     ({"tint": (1, 1, 1, 1), "m": np.zeros(16), "tnit": 1.0},
-     r"material 'a': params\['tnit'\]: shader 'flat' .* has no value '(u_)?tnit'.*did you mean 'tint'"),
+     r"material 'a': params\['tnit'\]: shader 'flat' .* has no value 'tnit'.*did you mean 'tint'"),
     ({"u_tint": (1, 1, 1, 1), "m": np.zeros(16)}, None),
 ])
 def test_material_values_are_matched_to_the_shader_by_name_or_refused(backend, params, needle):
     """A value the shader reads but the material never sets, a misspelt parameter, or (OpenGL) a name given with
-    its u_ prefix: each an error naming the material, the shader and the field, never a silent 0 or a dropped
+    GLSL's old u_ prefix: each an error naming the material, the shader and the field, never a silent 0 or a dropped
     value."""
     from gandalf_core.resources import ResourceError
 
@@ -445,9 +447,8 @@ def test_material_values_are_matched_to_the_shader_by_name_or_refused(backend, p
     scene.assets.material("a", MaterialData("flat", color=(1, 0, 0), params=params))
     scene.create_entity(TransformComponent((0, 0, -3)), MeshComponent("quad"), MaterialComponent("a"))
     add_camera(scene, eye=(0, 0, 2), far=50.0)
-    if needle is None:  # the u_ prefix: OpenGL says to leave it out; WebGPU's struct has no such field
-        needle = (r"params\['u_tint'\]: give it without the 'u_' prefix: 'tint'" if backend == "opengl"
-                  else r"params\['u_tint'\]: shader 'flat' .* has no value 'u_tint'")
+    if needle is None:  # the u_ prefix: both APIs say to leave it out
+        needle = r"params\['u_tint'\]: give it without the 'u_' prefix: 'tint'"
     with flat_app(backend) as app, pytest.raises(ResourceError, match=needle):
         app.add_scene(scene)
         app.step()

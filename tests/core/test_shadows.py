@@ -48,14 +48,14 @@ SHADOWED_FRAG = """#version 330 core
 #include "shadow.glsl"
 in vec3 v_world;
 in vec3 v_normal;
-uniform vec4 u_color;
+layout(std140) uniform Material { vec4 color; } material;
 out vec4 f_color;
 void main() {
     vec3 n = normalize(v_normal);
-    vec3 c = u_ambient.rgb * u_color.rgb;
+    vec3 c = u_ambient.rgb * material.color.rgb;
     for (int i = 0; i < u_light_count.x; ++i) {
         float lit = i == int(u_shadow.w) ? shadow_factor(v_world, n) : 1.0;
-        c += lit * u_color.rgb * u_light_color[i].rgb * max(dot(n, normalize(u_light_position[i].xyz)), 0.0);
+        c += lit * material.color.rgb * u_light_color[i].rgb * max(dot(n, normalize(u_light_position[i].xyz)), 0.0);
     }
     f_color = vec4(c, 1.0);
 }
@@ -346,7 +346,7 @@ def test_the_light_box_maps_onto_the_whole_clip_volume(depth_range):
 
 def test_the_shadow_map_keeps_its_own_texture_unit_in_opengl():
     """u_shadow_map (declared first, through shadow.glsl) is no material texture: the material's start at 0."""
-    frag = SHADOWED_FRAG.replace("uniform vec4 u_color;", "uniform vec4 u_color;\nuniform sampler2D u_detail;")
+    frag = SHADOWED_FRAG.replace("} material;", "} material;\nuniform sampler2D u_detail;")
     with Application("opengl", 8, 8, headless=True) as app:
         shader = app.renderer.shaders.build("textured", SHADOWED_VERT, frag)
         assert shader.samplers == ["u_detail"]
@@ -358,7 +358,7 @@ def test_textures_built_during_a_frame_do_not_replace_the_shadow_map():
     from gandalf_core.components import MaterialComponent, MeshComponent, TransformComponent
     from gandalf_core.resources import MaterialData, solid
 
-    frag = SHADOWED_FRAG.replace("uniform vec4 u_color;", "uniform vec4 u_color;\nuniform sampler2D u_tex;").replace(
+    frag = SHADOWED_FRAG.replace("} material;", "} material;\nuniform sampler2D u_tex;").replace(
         "f_color = vec4(c, 1.0);", "f_color = vec4(c * texture(u_tex, vec2(0.5)).rgb, 1.0);")
     scene = shadow_scene()
     scene.assets.texture("white", solid((1.0, 1.0, 1.0), 4))

@@ -34,7 +34,6 @@ from ..texture_checks import check_texture_kinds, check_texture_size
 
 GL_SRGB8_ALPHA8 = 0x8C43
 # GL_FLOAT_MAT2, _MAT3, _MAT4 -> size
-_GL_MATRIX_SIZES = {0x8B5A: 2, 0x8B5B: 3, 0x8B5C: 4}
 # The engine's uniform blocks and their binding points (resources/blocks.py states the convention for both APIs).
 UNIFORM_BLOCKS = BLOCK_BINDINGS
 # The engine's samplers and their reserved texture units (materials use the units from 0 up).
@@ -154,9 +153,6 @@ class GLShader:
     storage_blocks: list[str] = field(default_factory=list)  # shader storage blocks in declaration order
     active_storage: dict[str, int] = field(default_factory=dict)  # block -> binding, of the blocks still in use
     cube_samplers: dict[str, bool] = field(default_factory=dict)  # sampler -> samples a cube map
-    #: Loose material values the program declares (``u_<name>`` uniforms, not samplers) -> stated a default
-    #: (``= ...``): the older way, for shaders without a Material block.
-    material_uniforms: dict[str, bool] = field(default_factory=dict)
     source: str = ""  # the stage files, for messages
     #: The std140 layout of the program's ``uniform Material { ... } material;`` block, or None.
     material_block: BlockLayout | None = None
@@ -252,11 +248,13 @@ class ShaderLib(ResourceLib[GLShader]):
         files = ", ".join(src.filename for src in stages.values())
         if material_block is not None:
             _check_block_against_driver(name, files, program, material_block)
-        if material_block is not None and values:
-            raise ShaderCompileError(f"shader '{name}' ({files}): declares both a Material block and loose material "
-                                     f"uniforms ({', '.join('u_' + v for v in values)}); move them into the block")
+        if values:
+            raise ShaderCompileError(f"shader '{name}' ({files}): declares loose material uniforms "
+                                     f"({', '.join('u_' + v for v in values)}); a material's values go in one "
+                                     "'layout(std140) uniform Material { ... } material;' block, the same fields as "
+                                     "WGSL's Material struct")
         shader = GLShader(name, program, attributes, samplers, uniforms, patch_vertices, storage_blocks, active_storage,
-                          {s: "Cube" in kinds.get(s, "") for s in samplers}, values, files, material_block)
+                          {s: "Cube" in kinds.get(s, "") for s in samplers}, files, material_block)
         self._items[name] = shader
         self._data[name] = stages
         return shader
@@ -307,8 +305,8 @@ _MATERIAL_UNIFORM = re.compile(r"\buniform\s+(?!sampler|isampler|usampler)[A-Za-
 
 
 def _declared_material_uniforms(glsl: str) -> dict[str, bool]:
-    """The material values a GLSL stage declares: ``uniform <type> u_<name>`` (not samplers, not blocks) ->
-    whether it states a default (``= value``), comments stripped."""
+    """Loose ``uniform <type> u_<name>`` declarations of a GLSL stage (not samplers, not blocks) -> whether it
+    states a default (``= value``), comments stripped: refused in a material's program (values go in its block)."""
     text = re.sub(r"/\*.*?\*/", " ", glsl, flags=re.S)
     text = re.sub(r"//[^\n]*", " ", text)
     return {m.group(1): m.group(2) is not None for m in _MATERIAL_UNIFORM.finditer(text)}
@@ -413,8 +411,7 @@ class GLMaterial(MaterialValues):
 
     The values fill the program's std140 ``Material`` block by field name (its own uniform buffer, bound to
     binding point ``BLOCK_BINDINGS["Material"]`` when drawn): the same bytes as WebGPU's ``Material`` struct. A
-    matrix given as 9 or 16 row-major floats is written column by column. (A program without the block still takes
-    loose ``u_<name>`` uniforms, the older way.)
+    matrix given as 9 or 16 row-major floats is written column by column.
     """
 
     def __init__(self, name: str, data: MaterialData, shader: GLShader, textures: list[Any],
@@ -444,7 +441,6 @@ class GLMaterial(MaterialValues):
         self.set_values(data.uniform_values())
 
     def _upload(self) -> None:
-        self._uniforms = []
         block = self.shader.material_block
         if block is not None:
             try:
@@ -457,28 +453,10 @@ class GLMaterial(MaterialValues):
                 self.block_buffer = self.shader.program.ctx.buffer(self.block_bytes)
             else:
                 self.block_buffer.write(self.block_bytes)
-            return
-        program = self.shader.program
-        for key, value in self.values.items():
-            uniform_name = f"u_{key}"
-            if uniform_name not in self.shader.uniforms:
-                continue
-            uniform = program[uniform_name]
-            expected = uniform.dimension * uniform.array_length
-            if value.size != expected:
-                raise ResourceError(f"material '{self.name}'", f"params['{key}']",
-                                    f"shader '{self.shader.name}' ({self.shader.source}) declares {uniform_name} with "
-                                    f"{expected} value(s), got {value.size}")
-            if uniform.gl_type in _GL_MATRIX_SIZES:
-                n = _GL_MATRIX_SIZES[uniform.gl_type]
-                value = value.reshape(n, n).T
-            self._uniforms.append((uniform, tuple(value.ravel()) if value.size > 1 else float(value)))
 
     def apply(self) -> None:
         if self.block_buffer is not None:
             self.block_buffer.bind_to_uniform_block(BLOCK_BINDINGS[MATERIAL_BLOCK])
-        for uniform, value in self._uniforms:
-            uniform.value = value
         for unit, texture in enumerate(self.textures):
             texture.use(location=unit)
         for binding, buffer in enumerate(self.buffers):
@@ -503,11 +481,9 @@ class MaterialLib(ResourceLib[GLMaterial]):
         buffers = [self.buffers.get(buf, referrer) for buf in data.buffers]
         check_texture_kinds(name, shader.name, [(s, shader.cube_samplers.get(s, False)) for s in shader.samplers],
                             [(t, self.textures.data_of(t)) for t in data.textures])
-        if shader.material_block is not None:
-            fields = {f.name: f.has_default for f in shader.material_block.fields}
-            check_parameters(name, shader.name, shader.source, data.params, fields, legacy_prefix="u_")
-        else:
-            check_parameters(name, shader.name, shader.source, data.params, shader.material_uniforms, prefix="u_")
+        block = shader.material_block
+        fields = {f.name: f.has_default for f in block.fields} if block is not None else {}
+        check_parameters(name, shader.name, shader.source, data.params, fields)
         return GLMaterial(name, data, shader, textures, buffers)
 
     def _release(self, item: GLMaterial) -> None:

@@ -31,6 +31,7 @@ from ..frame import (
 )
 from ..patches import check_patch_draw
 from ..shader_files import SNIPPETS_DIR
+from ..texture_checks import check_target_size
 from . import raw_gl
 from .libs import (
     ENGINE_SAMPLERS,
@@ -115,6 +116,9 @@ class OpenGLRenderer(Renderer):
     # --8<-- [start:targets]
     def _create_targets(self) -> None:
         size = (self.width, self.height)
+        limit = min(int(self.ctx.info["GL_MAX_TEXTURE_SIZE"]), int(self.ctx.info["GL_MAX_RENDERBUFFER_SIZE"]),
+                    *(int(v) for v in self.ctx.info["GL_MAX_VIEWPORT_DIMS"]))
+        check_target_size(*size, limit)
         # An sRGB colour target: shaders work in linear light and GL encodes on write, as WebGPU's
         # rgba8unorm-srgb does, so both backends store the same bytes.
         self._color = self.ctx.texture(size, 4, internal_format=GL_SRGB8_ALPHA8)

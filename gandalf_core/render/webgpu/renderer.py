@@ -33,6 +33,7 @@ from ..frame import (
 )
 from ..patches import check_patch_draw
 from ..shader_files import SNIPPETS_DIR
+from ..texture_checks import check_target_size
 from .device import request_device
 from .libs import BufferLib, MaterialLib, MeshLib, ShaderLib, TextureLib, WGPUMaterial, WGPUMesh, WGPUShader
 
@@ -129,6 +130,7 @@ class WebGPURenderer(Renderer):
 
     # --8<-- [start:targets]
     def _create_targets(self) -> None:
+        check_target_size(self.width, self.height, int(self.device.limits["max-texture-dimension-2d"]))
         usage = wgpu.TextureUsage
         self._color = self.device.create_texture(
             size=(self.width, self.height, 1), format=COLOR_FORMAT,

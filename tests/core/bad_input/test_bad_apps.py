@@ -86,11 +86,6 @@ def closed_twice(backend: str):
     return a.closed
 
 
-TOO_BIG = "the render target's size is not checked against the device's limit: OpenGL fails with moderngl's " \
-          "'framebuffer is not complete', WebGPU with a raw validation error; fix in render (the renderers' " \
-          "target creation): compare width/height with GL_MAX_TEXTURE_SIZE / the device's max_texture_dimension_2d " \
-          "and raise a ValueError naming the width or height and the limit"
-
 CASES = [
     error("unknown-backend", lambda b: app("vulkan"), UnknownBackendError, "'vulkan'", "opengl, webgpu"),
     error("width-zero", lambda b: app(b, width=0), ValueError, "Application", "width", "got 0"),
@@ -98,7 +93,8 @@ CASES = [
     error("width-fraction", lambda b: app(b, width=2.5), ValueError, "width", "whole number", "2.5"),
     error("width-text", lambda b: app(b, width="8"), ValueError, "width", "'8'"),
     error("width-bool", lambda b: app(b, width=True), ValueError, "width"),
-    error("width-beyond-device-limit", lambda b: app(b, width=100_000), ValueError, "width", "100000", xfail=TOO_BIG),
+    error("width-beyond-device-limit", lambda b: app(b, width=100_000), ValueError, "width", "100000",
+          "largest render target"),
     error("fixed-dt-zero", lambda b: app(b, fixed_dt=0), ValueError, "fixed_dt", "got 0"),
     error("fixed-dt-text", lambda b: app(b, fixed_dt="fast"), ValueError, "fixed_dt", "'fast'"),
     error("fixed-dt-nan", lambda b: app(b, fixed_dt=math.nan), ValueError, "fixed_dt"),

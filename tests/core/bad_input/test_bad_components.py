@@ -162,7 +162,7 @@ OTHERS = [
     error("clear-color-none", lambda: ClearColorComponent(None), FieldError, "ClearColorComponent.color"),
     result("clear-color-clipped", lambda: ClearColorComponent((2.0, 0.5, 0.0)).color,
            lambda c: np.array_equal(c, [1.0, 0.5, 0.0, 1.0])),
-    # Camera fields by type (the degenerate projections are in test_cameras.py)
+    # Camera fields by type (the degenerate projections are in test_bad_cameras.py)
     error("camera-fov-string", lambda: CameraComponent("wide"), FieldError, "CameraComponent.fov", "'wide'"),
     error("camera-near-string", lambda: CameraComponent(near="close"), FieldError, "CameraComponent.near"),
     error("camera-far-none", lambda: CameraComponent(far=None), FieldError, "CameraComponent.far"),

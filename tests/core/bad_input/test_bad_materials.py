@@ -47,9 +47,11 @@ layout(location = 0) in vec3 a_position;
 void main() { gl_Position = u_projection * u_view * instance_model() * vec4(a_position, 1.0); }
 """
 FLAT_FRAG = """#version 330 core
-uniform vec4 u_color; uniform vec4 u_tint; uniform mat4 u_m;
+layout(std140) uniform Material { vec4 color; vec4 tint; mat4 m; } material;
 out vec4 f_color;
-void main() { f_color = vec4(u_color.rgb * u_tint.rgb + vec3(0.0, 0.0, u_m[1].x), 1.0); }
+void main() {
+    f_color = vec4(material.color.rgb * material.tint.rgb + vec3(0.0, 0.0, material.m[1].x), 1.0);
+}
 """
 GOOD = {"tint": (1.0, 1.0, 1.0, 1.0), "m": np.eye(4).ravel()}
 
