@@ -7,7 +7,7 @@ texture, with a gizmo). The modes run in the same process, alternating in rounds
 hits all alike; every frame ends with a 1-pixel read-back so the GPU has finished it. One JSON line per backend:
 milliseconds per frame of each mode, the milliseconds the editor adds and its share of the frame
 (``cost_percent = added / frame with the editor``; the paper's figure is 20-25 %), and the share of frames that ran
-the panels (``panel_frames_percent``: with no input the panels run every 1/30 s and the other frames composite
+the panels (``panel_frames_percent``: with no input the panels run every 1/20 s and the other frames composite
 the cached GUI layer; see the editor page).
 
 Run by hand, never in CI::

@@ -85,7 +85,7 @@ class Editor(EditorActions):
         self._entity_count, self._entity_count_key = 0, -1
         self._shader_sources: dict[str, tuple[Any, ...]] = {}
         #: Seconds (app clock) between the panels' runs while the GUI is idle; 0 runs them every frame.
-        self.gui_interval = 1.0 / 30.0
+        self.gui_interval = 1.0 / 20.0
         #: Frames that ran the panels, and frames that drew the last GUI frame again (see ``_gui_due``).
         self.gui_frames = self.skipped_gui_frames = 0
         self._busy_frames = 0
