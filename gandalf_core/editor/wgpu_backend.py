@@ -7,10 +7,11 @@ To store the same bytes as OpenGL:
 * on frames that run the panels, the GUI is drawn into a transparent ``rgba8unorm`` layer with wgpu's ImGui
   pipeline (gamma 1: the bytes are treated as the colours; a live image leaves a hole, see
   :mod:`gandalf_core.editor.gui_layer`);
-* every frame, the GUI's window rectangles of the frame are copied into a plain ``rgba8unorm`` texture (formats
-  that differ only in sRGB-ness may be copied; the bytes are kept as they are), the live images and then the
-  layer (premultiplied) are drawn over them there, and a pass writes the rectangles back, decoding each byte
-  exactly to linear light, which the sRGB target encodes back to the same byte.
+* every frame, a live image is drawn straight into the frame (its bytes decoded to linear light, which the sRGB
+  target encodes back to the same bytes); then one copy takes the frame's bytes under the GUI into a plain
+  ``rgba8unorm`` texture (formats that differ only in sRGB-ness may be copied; the bytes are kept as they are),
+  and one pass writes, in each window's rectangle, ``layer + frame · (1 - layer.a)`` computed on those bytes (as
+  OpenGL's blending does it), decoded to linear light for the sRGB target to encode to that byte.
 
 The rest of the frame is never touched.
 """
@@ -21,46 +22,73 @@ from typing import Any
 
 import wgpu
 from imgui_bundle import imgui
-from wgpu.utils.imgui.imgui_backend import ImguiWgpuBackend
+from wgpu.utils.imgui.imgui_backend import FRAGMENT_SHADER_SRC, VERTEX_SHADER_SRC, ImguiWgpuBackend
 
 from .gui_layer import clip_box, command_vertices, gui_rects
 
 GUI_FORMAT = "rgba8unorm"
 
-_COMPOSITE_WGSL = """
-@group(0) @binding(0) var layer: texture_2d<f32>;
-
-@vertex
-fn vs_main(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
-    let p = vec2<f32>(f32((i << 1u) & 2u), f32(i & 2u));
-    return vec4<f32>(p * 2.0 - 1.0, 0.0, 1.0);
-}
-
-@fragment
-fn fs_main(@builtin(position) pos: vec4<f32>) -> @location(0) vec4<f32> {
-    return textureLoad(layer, vec2<i32>(pos.xy), 0);  // premultiplied colour and coverage
-}
-"""
-
-_BLIT_WGSL = """
-@group(0) @binding(0) var gui: texture_2d<f32>;
-
-@vertex
-fn vs_main(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
-    let p = vec2<f32>(f32((i << 1u) & 2u), f32(i & 2u));
-    return vec4<f32>(p * 2.0 - 1.0, 0.0, 1.0);
-}
-
+_SRGB_TO_LINEAR = """
 fn srgb_to_linear(c: vec3<f32>) -> vec3<f32> {
     return select(pow((c + 0.055) / 1.055, vec3<f32>(2.4)), c / 12.92, c <= vec3<f32>(0.04045));
 }
+"""
+
+# The layer over a copy of the frame's bytes, in byte space as OpenGL's blending does it, written back decoded to
+# linear light (the sRGB target encodes it to the byte again): one pass, no blending unit.
+_COMPOSITE_WGSL = _SRGB_TO_LINEAR + """
+@group(0) @binding(0) var frame_bytes: texture_2d<f32>;
+@group(0) @binding(1) var layer: texture_2d<f32>;
+
+@vertex
+fn vs_main(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
+    let p = vec2<f32>(f32((i << 1u) & 2u), f32(i & 2u));
+    return vec4<f32>(p * 2.0 - 1.0, 0.0, 1.0);
+}
 
 @fragment
 fn fs_main(@builtin(position) pos: vec4<f32>) -> @location(0) vec4<f32> {
-    let c = textureLoad(gui, vec2<i32>(pos.xy), 0);
+    let f = textureLoad(frame_bytes, vec2<i32>(pos.xy), 0);
+    let l = textureLoad(layer, vec2<i32>(pos.xy), 0);  // premultiplied colour and coverage
+    let c = l.rgb + f.rgb * (1.0 - l.a);
+    return vec4<f32>(srgb_to_linear(c), l.a + f.a * (1.0 - l.a));
+}
+"""
+
+# A live image (bytes in a plain texture) drawn straight into the sRGB frame: decoded here, encoded back there.
+_LIVE_WGSL = _SRGB_TO_LINEAR + """
+struct Uniforms {
+    mvp: mat4x4<f32>,
+    gamma: f32,
+};
+struct Varyings {
+    @builtin(position) position: vec4<f32>,
+    @location(0) uv: vec2<f32>,
+};
+
+@group(0) @binding(0) var<uniform> uniforms: Uniforms;
+@group(0) @binding(1) var s: sampler;
+@group(1) @binding(0) var t: texture_2d<f32>;
+
+@vertex
+fn vs_main(@location(0) position: vec2<f32>, @location(1) uv: vec2<f32>) -> Varyings {
+    var out: Varyings;
+    out.position = uniforms.mvp * vec4<f32>(position, 0.0, 1.0);
+    out.uv = uv;
+    return out;
+}
+
+@fragment
+fn fs_main(in: Varyings) -> @location(0) vec4<f32> {
+    let c = textureSample(t, s, in.uv);
     return vec4<f32>(srgb_to_linear(c.rgb), c.a);
 }
 """
+
+_IMGUI_VERTEX = {"array_stride": imgui.VERTEX_SIZE, "step_mode": "vertex", "attributes": [
+    {"format": "float32x2", "offset": 0, "shader_location": 0},
+    {"format": "float32x2", "offset": 8, "shader_location": 1},
+    {"format": "unorm8x4", "offset": 16, "shader_location": 2}]}
 
 
 class WGPUGuiRenderer:
@@ -69,54 +97,46 @@ class WGPUGuiRenderer:
     def __init__(self, device: Any, target_format: str) -> None:
         self.device = device
         self.backend = ImguiWgpuBackend(device, GUI_FORMAT)
-        module = device.create_shader_module(code=_BLIT_WGSL, label="editor blit")
-        self.blit = device.create_render_pipeline(
+        module = device.create_shader_module(code=_COMPOSITE_WGSL, label="editor composite")
+        self.composite_pipeline = device.create_render_pipeline(
             layout="auto",
             vertex={"module": module, "entry_point": "vs_main"},
             fragment={"module": module, "entry_point": "fs_main", "targets": [{"format": target_format}]},
             primitive={"topology": "triangle-list"},
-            label="editor blit",
-        )
-        module = device.create_shader_module(code=_COMPOSITE_WGSL, label="editor composite")
-        premultiplied = {"src_factor": "one", "dst_factor": "one-minus-src-alpha", "operation": "add"}
-        self.composite_pipeline = device.create_render_pipeline(
-            layout="auto",
-            vertex={"module": module, "entry_point": "vs_main"},
-            fragment={"module": module, "entry_point": "fs_main", "targets": [
-                {"format": GUI_FORMAT, "blend": {"color": premultiplied, "alpha": premultiplied}}]},
-            primitive={"topology": "triangle-list"},
             label="editor composite",
         )
-        self.hole_pipeline = self._hole_pipeline()
+        self.hole_pipeline = self._imgui_pipeline(VERTEX_SHADER_SRC, FRAGMENT_SHADER_SRC, GUI_FORMAT, "zero")
+        live = device.create_shader_module(code=_LIVE_WGSL, label="editor live image")
+        self.live_pipeline = self._imgui_pipeline(live, live, target_format, None)
         self._size: tuple[int, int] | None = None
         self._texture: Any = None
         self._layer: Any = None
-        self._bind_group: Any = None
         self._layer_group: Any = None
         self._texture_groups: dict[int, tuple[Any, Any]] = {}
         self.rects: list[tuple[int, int, int, int]] = []
         self._live: list[tuple[int, tuple[int, int, int, int], int, int]] = []
         self._live_buffer: Any = None
 
-    def _hole_pipeline(self) -> Any:
-        """wgpu's ImGui pipeline with a blend that writes transparent black: a live image's hole in the layer."""
-        from wgpu.utils.imgui.imgui_backend import FRAGMENT_SHADER_SRC, VERTEX_SHADER_SRC
-
+    def _imgui_pipeline(self, vertex: Any, fragment: Any, target_format: str, blend: str | None) -> Any:
+        """A pipeline with the layout of wgpu's ImGui pipeline (its bind groups fit): ``blend="zero"`` writes
+        transparent black (a live image's hole in the layer), None writes the fragment as it is."""
         backend, device = self.backend, self.device
-        zero = {"src_factor": "zero", "dst_factor": "zero", "operation": "add"}
+        if isinstance(vertex, str):
+            vertex, fragment = device.create_shader_module(code=vertex), device.create_shader_module(code=fragment)
+        entry = "main" if vertex is not fragment else "vs_main"
         layout = device.create_pipeline_layout(bind_group_layouts=[
             backend._render_pipeline.get_bind_group_layout(0), backend._texture_bind_group_layout])
+        target: dict[str, Any] = {"format": target_format}
+        if blend == "zero":
+            zero = {"src_factor": "zero", "dst_factor": "zero", "operation": "add"}
+            target["blend"] = {"color": zero, "alpha": zero}
         return device.create_render_pipeline(
             layout=layout,
-            vertex={"module": device.create_shader_module(code=VERTEX_SHADER_SRC), "entry_point": "main",
-                    "buffers": [{"array_stride": imgui.VERTEX_SIZE, "step_mode": "vertex", "attributes": [
-                        {"format": "float32x2", "offset": 0, "shader_location": 0},
-                        {"format": "float32x2", "offset": 8, "shader_location": 1},
-                        {"format": "unorm8x4", "offset": 16, "shader_location": 2}]}]},
+            vertex={"module": vertex, "entry_point": entry, "buffers": [_IMGUI_VERTEX]},
             primitive={"topology": "triangle-list", "cull_mode": "none"},
-            fragment={"module": device.create_shader_module(code=FRAGMENT_SHADER_SRC), "entry_point": "main",
-                      "targets": [{"format": GUI_FORMAT, "blend": {"color": zero, "alpha": zero}}]},
-            label="editor hole",
+            fragment={"module": fragment, "entry_point": "main" if vertex is not fragment else "fs_main",
+                      "targets": [target]},
+            label="editor hole" if blend == "zero" else "editor live image",
         )
 
     def texture_ref(self, view: Any) -> tuple[Any, Any]:
@@ -138,7 +158,7 @@ class WGPUGuiRenderer:
         usage = wgpu.TextureUsage
         self._texture = self.device.create_texture(
             size=(width, height, 1), format=GUI_FORMAT,
-            usage=usage.RENDER_ATTACHMENT | usage.COPY_DST | usage.TEXTURE_BINDING, label="editor gui",
+            usage=usage.COPY_DST | usage.TEXTURE_BINDING, label="editor frame bytes",
         )
         self._layer = self.device.create_texture(
             size=(width, height, 1), format=GUI_FORMAT, usage=usage.RENDER_ATTACHMENT | usage.TEXTURE_BINDING,
@@ -146,12 +166,9 @@ class WGPUGuiRenderer:
         )
         self._view = self._texture.create_view()
         self._layer_view = self._layer.create_view()
-        self._bind_group = self.device.create_bind_group(
-            layout=self.blit.get_bind_group_layout(0), entries=[{"binding": 0, "resource": self._view}]
-        )
         self._layer_group = self.device.create_bind_group(
             layout=self.composite_pipeline.get_bind_group_layout(0),
-            entries=[{"binding": 0, "resource": self._layer_view}],
+            entries=[{"binding": 0, "resource": self._view}, {"binding": 1, "resource": self._layer_view}],
         )
         self._size = (width, height)
 
@@ -229,40 +246,38 @@ class WGPUGuiRenderer:
         frame = color_view.texture
         if not self.rects or self._size != (frame.size[0], frame.size[1]):
             return
-        # Only the GUI's windows make the round trip: the rest of the frame is never touched.
-        for x, y, w, h in self.rects:
-            encoder.copy_texture_to_texture(
-                {"texture": frame, "mip_level": 0, "origin": (x, y, 0)},
-                {"texture": self._texture, "mip_level": 0, "origin": (x, y, 0)},
-                (w, h, 1),
-            )
-        gui_pass = encoder.begin_render_pass(color_attachments=[
-            {"view": self._view, "load_op": "load", "store_op": "store"}
-        ])
         live = [entry for entry in self._live if entry[0] in self.backend._texture_views]
-        if live:
-            gui_pass.set_pipeline(self.backend._render_pipeline)  # alpha 1: the image's bytes replace the frame's
-            gui_pass.set_bind_group(0, self.backend._bind_group)
-            gui_pass.set_vertex_buffer(0, self._live_buffer)
+        if live:  # straight into the frame, before its bytes are copied
+            live_pass = encoder.begin_render_pass(color_attachments=[
+                {"view": color_view, "load_op": "load", "store_op": "store"}
+            ])
+            live_pass.set_pipeline(self.live_pipeline)
+            live_pass.set_bind_group(0, self.backend._bind_group)
+            live_pass.set_vertex_buffer(0, self._live_buffer)
             for tex_id, (x0, y0, x1, y1), first, count in live:
-                gui_pass.set_bind_group(1, self._texture_group(tex_id))
-                gui_pass.set_scissor_rect(x0, y0, x1 - x0, y1 - y0)
-                gui_pass.draw(count, 1, first, 0)
+                live_pass.set_bind_group(1, self._texture_group(tex_id))
+                live_pass.set_scissor_rect(x0, y0, x1 - x0, y1 - y0)
+                live_pass.draw(count, 1, first, 0)
+            live_pass.end()
+        # The frame's bytes under the GUI, in one copy of the box around its windows.
+        x0 = min(r[0] for r in self.rects)
+        y0 = min(r[1] for r in self.rects)
+        x1 = max(r[0] + r[2] for r in self.rects)
+        y1 = max(r[1] + r[3] for r in self.rects)
+        encoder.copy_texture_to_texture(
+            {"texture": frame, "mip_level": 0, "origin": (x0, y0, 0)},
+            {"texture": self._texture, "mip_level": 0, "origin": (x0, y0, 0)},
+            (x1 - x0, y1 - y0, 1),
+        )
+        gui_pass = encoder.begin_render_pass(color_attachments=[
+            {"view": color_view, "load_op": "load", "store_op": "store"}
+        ])
         gui_pass.set_pipeline(self.composite_pipeline)
         gui_pass.set_bind_group(0, self._layer_group)
         for x, y, w, h in self.rects:
             gui_pass.set_scissor_rect(x, y, w, h)
             gui_pass.draw(3)
         gui_pass.end()
-        blit_pass = encoder.begin_render_pass(color_attachments=[
-            {"view": color_view, "load_op": "load", "store_op": "store"}
-        ])
-        blit_pass.set_pipeline(self.blit)
-        blit_pass.set_bind_group(0, self._bind_group)
-        for x, y, w, h in self.rects:
-            blit_pass.set_scissor_rect(x, y, w, h)
-            blit_pass.draw(3)
-        blit_pass.end()
 
     def release(self) -> None:
         """Free the GUI target and layer, ImGui's textures and the backend's buffers."""
