@@ -370,3 +370,26 @@ def test_a_scene_that_sets_a_panel_hidden_keeps_it_hidden_across_frames(app) -> 
     app.run(frames=2)
     assert not any(k.startswith("systems/") for k in editor.item_rects)
     assert isinstance(app.scene.get_component(named(app.scene, "cube0"), LinkComponent), LinkComponent)
+
+
+def test_idle_frames_draw_the_cached_gui_and_input_runs_the_panels(app) -> None:
+    """An idle frame composites the GUI layer of the last panel run: the same picture as running the panels."""
+    editor = enable_editor(app)
+    editor.selected = named(app.scene, "cube1")
+    app.run(frames=3)
+    editor.gui_interval = 0.0  # every frame runs the panels
+    app.run(frames=2)
+    full = app.capture()
+    editor.gui_interval = 1.0e9  # only input or a change runs them
+    ran, skipped = editor.gui_frames, editor.skipped_gui_frames
+    app.run(frames=4)
+    assert editor.gui_frames == ran and editor.skipped_gui_frames == skipped + 4
+    np.testing.assert_array_equal(app.capture(), full)  # the scene is still: exactly the same frame
+    app.input.move_mouse(5.0, 5.0)
+    app.step()
+    assert editor.gui_frames == ran + 1, "input runs the panels"
+    app.run(frames=3)
+    editor.rename_entity(named(app.scene, "cube0"), "renamed")
+    before = editor.gui_frames
+    app.step()
+    assert editor.gui_frames == before + 1, "an edit runs the panels"
