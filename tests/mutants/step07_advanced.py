@@ -7,7 +7,8 @@ the exercise each one breaks. The terrain, filter and parallax test files build 
 (function bodies in a frame, weight-table parameters, replacements in the solution's text): the same builders run
 here and each mutant becomes a whole-file replacement of the copied solution, so the mutation runner grades exactly
 the shader text those files' own mutant tests check (terrain_height gets two more here). The showcase's two older
-exercises (``normal_map``, ``particle_step``) have their mutants written here.
+exercises (``normal_map``, ``particle_step``) have their mutants written here, and so do 15 more BRDF mutants
+(fresnel, ggx_distribution, smith_geometry, metallic_roughness and ggx_specular had fewer than five each).
 """
 
 from __future__ import annotations
@@ -177,3 +178,62 @@ for description, (function, glsl, wgsl) in _parallax["MUTANTS"].items():
     shader_mutant(MUTANTS, STEP, "parallax", _slug(description), f"{function}: {description}",
                   [_whole_file("parallax.glsl", _parallax_file("glsl", glsl)),
                    _whole_file("parallax.wgsl", _parallax_file("wgsl", wgsl_edits))])
+
+# --- more BRDF mutants (the test file's 15 gave fresnel, ggx_distribution, smith_geometry, metallic_roughness and
+# ggx_specular fewer than five each): edits of the solution, one rule broken each -----------------------------------
+BG, BW = "brdf.glsl", "brdf.wgsl"
+
+
+def _both(glsl_old: str, glsl_new: str, wgsl_old: str | None = None, wgsl_new: str | None = None) -> list:
+    """The same edit in both languages (WGSL spelled out where it differs)."""
+    return [(BG, glsl_old, glsl_new), (BW, glsl_old if wgsl_old is None else wgsl_old,
+                                       glsl_new if wgsl_new is None else wgsl_new)]
+
+
+BRDF_MORE = [
+    ("fresnel", "brdf-f-fourth-power", "Schlick with the 4th power of (1 - cos) instead of the 5th",
+     _both("return f0 + (1.0 - f0) * (m2 * m2 * m);", "return f0 + (1.0 - f0) * (m2 * m2);")),
+    ("fresnel", "brdf-f-no-one-minus-f0", "F0 + (1 - cos)^5, forgetting the (1 - F0) factor",
+     _both("return f0 + (1.0 - f0) * (m2 * m2 * m);", "return f0 + (m2 * m2 * m);")),
+    ("fresnel", "brdf-f-cos-not-complemented", "the 5th power of cos instead of (1 - cos)",
+     _both("float m = 1.0 - clamp(cos_theta, 0.0, 1.0);\n    float m2 = m * m;\n    return f0 + (1.0 - f0)",
+           "float m = clamp(cos_theta, 0.0, 1.0);\n    float m2 = m * m;\n    return f0 + (1.0 - f0)",
+           "let m = 1.0 - clamp(cos_theta, 0.0, 1.0);\n    let m2 = m * m;\n    return f0 + (1.0 - f0)",
+           "let m = clamp(cos_theta, 0.0, 1.0);\n    let m2 = m * m;\n    return f0 + (1.0 - f0)")),
+    ("fresnel", "brdf-f-roughness-no-max", "the IBL Fresnel's limit 1 - roughness without max(.., F0)",
+     _both("max(vec3(1.0 - clamp(roughness, 0.0, 1.0)), f0)", "vec3(1.0 - clamp(roughness, 0.0, 1.0))",
+           "max(vec3<f32>(1.0 - clamp(roughness, 0.0, 1.0)), f0)", "vec3<f32>(1.0 - clamp(roughness, 0.0, 1.0))")),
+    ("ggx_distribution", "brdf-d-cos-not-squared", "D with n·h where (n·h)² belongs",
+     _both("float d = c * c * (a2 - 1.0) + 1.0;", "float d = c * (a2 - 1.0) + 1.0;",
+           "let d = c * c * (a2 - 1.0) + 1.0;", "let d = c * (a2 - 1.0) + 1.0;")),
+    ("ggx_distribution", "brdf-d-denominator-not-squared", "D = a² / (pi d) instead of a² / (pi d²)",
+     _both("return a2 / (BRDF_PI * d * d);", "return a2 / (BRDF_PI * d);")),
+    ("ggx_distribution", "brdf-d-min-roughness-zero", "roughness clamped to [0, 1], not [0.045, 1]",
+     _both("float r = clamp(roughness, BRDF_MIN_ROUGHNESS, 1.0);", "float r = clamp(roughness, 0.0, 1.0);",
+           "let r = clamp(roughness, BRDF_MIN_ROUGHNESS, 1.0);", "let r = clamp(roughness, 0.0, 1.0);")),
+    ("smith_geometry", "brdf-g-view-only", "G1 of the view direction only (the light's factor left out)",
+     _both("return v / (v * (1.0 - k) + k) * (l / (l * (1.0 - k) + k));", "return v / (v * (1.0 - k) + k);")),
+    ("smith_geometry", "brdf-g-no-one-minus-k", "G1 = n·x / (n·x + k)",
+     _both("return v / (v * (1.0 - k) + k) * (l / (l * (1.0 - k) + k));", "return v / (v + k) * (l / (l + k));")),
+    ("smith_geometry", "brdf-k-direct-no-plus-one", "k_direct = roughness² / 8 (Karis' + 1 left out)",
+     _both("return (r + 1.0) * (r + 1.0) / 8.0;", "return r * r / 8.0;")),
+    ("metallic_roughness", "brdf-f0-mix-swapped", "mix(base, 0.04, metallic): metals get F0 = 0.04",
+     _both("return mix(vec3(0.04), base, clamp(metallic, 0.0, 1.0));",
+           "return mix(base, vec3(0.04), clamp(metallic, 0.0, 1.0));",
+           "return mix(vec3<f32>(0.04), base, clamp(metallic, 0.0, 1.0));",
+           "return mix(base, vec3<f32>(0.04), clamp(metallic, 0.0, 1.0));")),
+    ("metallic_roughness", "brdf-diffuse-metallic-not-complemented", "diffuse scaled by metallic, not 1 - metallic",
+     _both("return base * (1.0 - clamp(metallic, 0.0, 1.0)) * (1.0 - fresnel);",
+           "return base * clamp(metallic, 0.0, 1.0) * (1.0 - fresnel);")),
+    ("metallic_roughness", "brdf-diffuse-over-pi", "the albedo divided by pi (the lighting divides again)",
+     _both("return base * (1.0 - clamp(metallic, 0.0, 1.0)) * (1.0 - fresnel);",
+           "return base * (1.0 - clamp(metallic, 0.0, 1.0)) * (1.0 - fresnel) / BRDF_PI;")),
+    ("ggx_specular", "brdf-specular-d-of-n-dot-l", "D of n·l instead of n·h",
+     _both("float d = distribution_ggx(dot(n, h), roughness);", "float d = distribution_ggx(n_dot_l, roughness);",
+           "let d = distribution_ggx(dot(n, h), roughness);", "let d = distribution_ggx(n_dot_l, roughness);")),
+    ("ggx_specular", "brdf-specular-k-ibl", "the direct light's G with the IBL k",
+     _both("geometry_smith(n_dot_v, n_dot_l, k_direct(roughness));",
+           "geometry_smith(n_dot_v, n_dot_l, k_ibl(roughness));")),
+]
+for exercise, name, description, edits in BRDF_MORE:
+    shader_mutant(MUTANTS, STEP, exercise, name, description, edits)
