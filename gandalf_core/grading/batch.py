@@ -120,6 +120,9 @@ def write_report(graded: Graded, path: Path) -> None:
     lines = [f"# {graded.student}", ""]
     if graded.error:
         lines += [f"**Grading problem:** {graded.error}", ""]
+    for nodeid, message in result.get("collection_errors", {}).items():
+        lines += [f"**Grading problem:** the test module `{nodeid}` failed to import ({message}); its tests are "
+                  "missing from this score (a problem of the course, not of the submission).", ""]
     if result:
         lines += [
             f"Score: **{result['earned']:.2f} / {result['possible']:.2f}** ({result['score']:.0%}); "
@@ -176,6 +179,7 @@ def write_gradebook(graded: list[Graded], out: Path) -> tuple[Path, Path]:
                     "steps_handed_in": g.steps,
                     "exercises": {f"{x['step']}:{x['exercise']}": x["earned"] for x in g.result.get("exercises", [])},
                     "failed_tests": sum(1 for t in g.result.get("tests", []) if not t["passed"]),
+                    "collection_errors": sorted(g.result.get("collection_errors", {})),
                     "seconds": round(g.seconds, 2),
                     "error": g.error,
                 }

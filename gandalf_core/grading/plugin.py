@@ -47,6 +47,8 @@ _graded: dict[str, dict[str, Any]] = {}
 # nodeid -> {"passed_call": bool, "failed": bool, "message": str, "duration": float}
 _outcomes: dict[str, dict[str, Any]] = {}
 _overlays: dict[str, ModuleType] = {}
+# Test modules that failed to import (a course bug: their graded tests are missing from the grade), nodeid -> message.
+_collection_errors: dict[str, str] = {}
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
@@ -150,6 +152,7 @@ def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line("markers", "exercise(name, points=1): a graded test of exercise `name`")
     _graded.clear()
     _outcomes.clear()
+    _collection_errors.clear()
     config._gandalf_collect_dir = None  # type: ignore[attr-defined]
     if not _is_worker(config) and config.pluginmanager.hasplugin("xdist"):
         config._gandalf_collect_dir = tempfile.mkdtemp(prefix="gandalf-grade-")  # type: ignore[attr-defined]
@@ -224,6 +227,13 @@ def _message(report: pytest.TestReport) -> str:
     else:
         text = str(longrepr).strip().splitlines()[-1] if str(longrepr).strip() else ""
     return text if len(text) <= _MESSAGE_LIMIT else text[: _MESSAGE_LIMIT - 1] + "…"
+
+
+def pytest_collectreport(report: pytest.CollectReport) -> None:
+    """A test module that fails to import: its graded tests cannot be counted, so the grade says so."""
+    if report.failed:
+        text = str(report.longrepr).strip().splitlines()
+        _collection_errors[report.nodeid] = (text[-1] if text else "failed to collect")[:_MESSAGE_LIMIT]
 
 
 def pytest_runtest_logreport(report: pytest.TestReport) -> None:
@@ -341,6 +351,7 @@ def summary() -> dict[str, Any]:
         "score": (earned / possible) if possible else 0.0,
         "graded_tests": len(tests),
         "graded_tests_passed": sum(1 for e in tests if e["passed"]),
+        "collection_errors": dict(sorted(_collection_errors.items())),
         "exercises": exercises,
         "tests": tests,
     }
@@ -408,6 +419,8 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
             f" ({int(x['passed'])}/{int(x['tests'])} tests)"
         )
     tr.write_line(f"{'TOTAL':<51} {result['earned']:>5.1f} / {result['possible']:<5.1f} ({result['score']:.0%})")
+    for nodeid, message in result["collection_errors"].items():
+        tr.write_line(f"NOT GRADED: {nodeid} failed to import, its tests are missing from the total ({message})")
     path = config.getoption("--grade-json")
     if path:
         Path(path).write_text(json.dumps({"mode": which, **result}, indent=2))

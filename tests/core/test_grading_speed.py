@@ -1,7 +1,8 @@
 """What keeps a grading process fast without changing what it checks, and the sample class's exercise table.
 
 * Every grading process (the front end, the batch grader's, the mutation check's) leaves out hypothesis's pytest
-  plugin, and a test module that fails to import does not stop the other steps from being graded.
+  plugin, and a test module that fails to import does not stop the other steps from being graded: the grade
+  names it (``collection_errors``, a NOT GRADED line), with and without a worker.
 * Bytecode goes to a cache outside the checkout and the submissions (``PYTHONPYCACHEPREFIX``), never next to a
   source, and ``GANDALF_PYCACHE=off`` turns it off (then nothing is written at all).
 * ``scripts/make_sample_submissions.py``'s table of the files each exercise's tests read names every graded
@@ -11,6 +12,7 @@
 from __future__ import annotations
 
 import importlib.util
+import json
 import os
 import re
 import subprocess
@@ -75,3 +77,35 @@ def test_the_sample_table_names_every_graded_exercise_and_existing_files():
                 assert f in present or {f"{f}.glsl", f"{f}.wgsl"} <= present, f"{step}:{exercise}: no file {f}"
     steps = sorted(p.parent.parent.name for p in ROOT.glob("step*/exercises/__init__.py"))
     assert sorted(script.EXERCISE_FILES) == steps
+
+
+def test_a_module_that_fails_to_import_is_named_and_the_rest_is_graded(tmp_path):
+    """``--continue-on-collection-errors``: the other modules' graded tests count, and the grade names the one that
+    could not be imported (with and without a worker)."""
+    files = {
+        "brokenstep/__init__.py": "",
+        "brokenstep/solutions/__init__.py": "def one():\n    return 1\n",
+        "brokenstep/exercises/__init__.py": "def one():\n    return 1\n",
+        "grading_tests/brokenstep/conftest.py": "from gandalf_core.grading.plugin import impl_fixture\n\n"
+                                                "impl = impl_fixture('brokenstep')\n",
+        "grading_tests/brokenstep/test_good.py": "import pytest\n\n\n@pytest.mark.exercise('one')\n"
+                                                 "def test_one(impl):\n    assert impl.one() == 1\n",
+        "grading_tests/brokenstep/test_bad.py": "import no_such_module_for_this_test\n",
+    }
+    for name, text in files.items():
+        (tmp_path / name).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / name).write_text(text)
+    env = {k: v for k, v in os.environ.items() if k != "GANDALF_IMPL"}
+    env["PYTHONPATH"] = os.pathsep.join([str(tmp_path), str(ROOT)])
+    for jobs in ("0", "1"):
+        out = tmp_path / f"grade{jobs}.json"
+        proc = subprocess.run(
+            [sys.executable, "-m", "gandalf_core.grading", str(tmp_path / "grading_tests" / "brokenstep"), "--json",
+             str(out), "--jobs", jobs], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=120)
+        assert out.exists(), proc.stdout[-2000:] + proc.stderr[-2000:]
+        result = json.loads(out.read_text())
+        assert result["earned"] == 1.0 and result["graded_tests_passed"] == 1, (jobs, result)
+        bad = "grading_tests/brokenstep/test_bad.py"
+        errors = result["collection_errors"]
+        assert list(errors) == [bad] and "no_such_module_for_this_test" in errors[bad], errors
+        assert f"NOT GRADED: {bad} failed to import" in proc.stdout
