@@ -78,6 +78,8 @@ class Editor(EditorActions):
         self.recent: list[str] = []
         #: Whether the pointer is over the gizmo / the gizmo is being dragged (this frame).
         self.gizmo_over = self.gizmo_using = False
+        #: The gizmo handle under the pointer ("move_x", "rotate_screen", ... or "none").
+        self.gizmo_hovered = "none"
         #: Seconds the last GUI frame took (ImGui's frame, the panels, drawing it).
         self.gui_seconds = 0.0
         self._payloads: dict[int, tuple[str, Any]] = {}

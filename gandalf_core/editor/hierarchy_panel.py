@@ -131,6 +131,7 @@ class HierarchyPanelSystem(PanelSystem):
             self.act(editor.duplicate_entity, entity)
         if imgui.menu_item_simple("Rename"):
             self._rename, self._open_rename = (entity, label), True
+        self.remember("hierarchy:menu/rename")
         if imgui.menu_item_simple("Make root", "", False, self.scene.parent_of(entity) is not None):
             self.act(editor.reparent, entity, None)
         if imgui.menu_item_simple("Destroy"):
@@ -143,6 +144,8 @@ class HierarchyPanelSystem(PanelSystem):
         if self._rename is None or not imgui.begin_popup("Rename entity"):
             return
         entity, name = self._rename
+        if imgui.is_window_appearing():
+            imgui.set_keyboard_focus_here()
         entered, name = imgui.input_text("name", name, imgui.InputTextFlags_.enter_returns_true)
         self._rename = (entity, name)
         if imgui.button("OK") or entered:

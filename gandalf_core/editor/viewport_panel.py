@@ -155,6 +155,7 @@ class ViewportPanelSystem(PanelSystem):
         moved = _GZ.manipulate(_matrix16(view), _matrix16(projection), OPERATIONS[self.operation],
                                MODES[self.mode], matrix)
         editor.gizmo_over, editor.gizmo_using = bool(_GZ.is_over()), bool(_GZ.is_using())
+        editor.gizmo_hovered = _GZ.get_hovered_move_type().name.removeprefix("mt_")  # "move_x", "none", ...
         if moved:
             new_world = np.array(matrix.values, dtype=np.float64).reshape(4, 4).T
             self.act(editor.set_world_matrix, entity, new_world, merge=True)

@@ -94,9 +94,9 @@ def test_viewport_textures_agree_between_the_apis() -> None:
     assert psnr(pictures["opengl"], pictures["webgpu"]) >= 35.0
 
 
-def gizmo_handle(app, editor, target) -> tuple[float, float]:
+def gizmo_handle(app, editor, target, world_axes: bool = False) -> tuple[float, float]:
     """A point on the translate gizmo's X arrow: walk from the entity's screen position along the projected X axis
-    until ImGuizmo says the pointer is over the gizmo (found by hovering, as a user finds it)."""
+    until ImGuizmo says the pointer is over its X arrow (found by hovering, as a user finds it)."""
     scene = app.scene
     render = scene.get_system(RenderSystem)
     _e, camera, cam_transform = render.primary_camera()
@@ -110,30 +110,39 @@ def gizmo_handle(app, editor, target) -> tuple[float, float]:
         return np.array([x0 + (c[0] / c[3] + 1) * w / 2, y0 + (1 - c[1] / c[3]) * h / 2])
 
     origin = screen(world[:3, 3])
-    axis = screen(world[:3, 3] + world[:3, 0] / np.linalg.norm(world[:3, 0])) - origin
+    direction = np.array([1.0, 0.0, 0.0]) if world_axes else world[:3, 0] / np.linalg.norm(world[:3, 0])
+    axis = screen(world[:3, 3] + direction) - origin
     axis /= np.linalg.norm(axis)
-    for distance in range(10, 120, 3):
+    for distance in [d * sign for d in range(10, 120, 3) for sign in (1, -1)]:  # ImGuizmo may flip an axis
         p = origin + distance * axis
         app.input.move_mouse(*p)
         app.step()
         app.step()
-        if editor.gizmo_over:
+        if editor.gizmo_hovered == "move_x":  # the X arrow, not the screen-plane handle at the centre
             return float(p[0]), float(p[1])
     raise AssertionError("no gizmo handle found along the X axis")
 
 
-def test_gizmo_drag_moves_the_selected_entity_in_one_undo_step(app) -> None:
+@pytest.mark.parametrize("mode", ["local", "world"])
+def test_gizmo_drag_moves_the_selected_entity_in_one_undo_step(app, mode: str) -> None:
     editor = enable_editor(app)
     target = named(app.scene, "cube1")
     editor.selected = target
-    app.run(frames=3)
+    app.run(frames=2)
+    click(app, *center(editor.item_rects[f"viewport/{mode}"]))
+    assert editor.viewport.mode == mode
     start = app.scene.get_component(target, TransformComponent).translation.copy()
     before_picture = editor.viewport.target.read_pixels()
-    hx, hy = gizmo_handle(app, editor, target)
+    hx, hy = gizmo_handle(app, editor, target, world_axes=mode == "world")
     drag(app, (hx, hy), (hx + 60, hy), steps=6)
     moved = app.scene.get_component(target, TransformComponent).translation.copy()
     assert np.linalg.norm(moved - start) > 0.2, f"the gizmo moved nothing: {start} -> {moved}"
     assert not np.any(np.isnan(moved))
+    step = moved - start
+    along = np.array([1.0, 0.0, 0.0]) if mode == "world" else \
+        app.scene.get_component(target, TransformComponent).world[:3, 0] / 0.8  # the X axis of the cube (scale 0.8)
+    np.testing.assert_allclose(step / np.linalg.norm(step), along * np.sign(step @ along), atol=0.02,
+                               err_msg=f"the {mode} X arrow moves along that axis only")
     assert np.any(editor.viewport.target.read_pixels() != before_picture, axis=2).sum() > 100
     assert len(editor.commands.done) == 1, [c.label for c in editor.commands.done]
     editor.undo()
@@ -177,6 +186,29 @@ def test_dragging_a_row_onto_another_reparents_it_and_onto_free_space_makes_a_ro
     assert app.scene.parent_of(camera) is None
     editor.undo()
     assert app.scene.parent_of(camera) == cube
+
+
+def test_renaming_from_the_row_context_menu(app) -> None:
+    editor = enable_editor(app)
+    app.run(frames=2)
+    cube = named(app.scene, "cube2")
+    x, y = center(editor.item_rects[f"hierarchy/{cube}"])
+    app.input.move_mouse(x, y)
+    app.step()
+    app.input.button(1, "press")
+    app.step()
+    app.input.button(1, "release")
+    app.run(frames=2)
+    click(app, *center(editor.item_rects["hierarchy:menu/rename"]))
+    app.run(frames=2)  # the popup opens with the name field focused
+    for key in ("END", "BACKSPACE", "X", "ENTER"):
+        app.input.key(key, "press")
+        app.step()
+        app.input.key(key, "release")
+        app.step()
+    assert app.scene.get_component(cube, InfoComponent).name == "cubex"
+    editor.undo()
+    assert app.scene.get_component(cube, InfoComponent).name == "cube2"
 
 
 def test_unnamed_entities_get_readable_rows(app) -> None:
