@@ -176,6 +176,7 @@ class GLGuiRenderer:
         fbo.viewport = (0, 0, width, height)
         live_bytes: list[bytes] = []
         first = 0
+        bound: Any = None  # the texture bound last: bound again only when it changes
         try:
             for commands in draw_data.cmd_lists:
                 vtx_bytes = commands.vtx_buffer.size() * imgui.VERTEX_SIZE
@@ -199,7 +200,9 @@ class GLGuiRenderer:
                         first += command.elem_count
                         ctx.disable(moderngl.BLEND)
                         self.program["u_hole"].value = True
-                    texture.use(location=0)
+                    if texture is not bound:
+                        texture.use(location=0)
+                        bound = texture
                     vao.render(moderngl.TRIANGLES, vertices=command.elem_count, first=command.idx_offset)
                     if hole:
                         self.program["u_hole"].value = False

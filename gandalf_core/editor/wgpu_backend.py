@@ -204,7 +204,7 @@ class WGPUGuiRenderer:
             layer_pass.set_vertex_buffer(0, backend._vertex_buffer)
             layer_pass.set_index_buffer(backend._index_buffer, "uint32" if imgui.INDEX_SIZE == 4 else "uint16")
             layer_pass.set_bind_group(0, backend._bind_group)
-            pipeline = None
+            pipeline = bound_texture = scissor = None  # state set only when it changes: each call costs
             vtx_base = idx_base = first = 0
             for commands in draw_data.cmd_lists:
                 for command in commands.cmd_buffer:
@@ -221,9 +221,13 @@ class WGPUGuiRenderer:
                         live_bytes.append(command_vertices(commands, command))
                         self._live.append((tex_id, box, first, command.elem_count))
                         first += command.elem_count
-                    layer_pass.set_bind_group(1, self._texture_group(tex_id))
-                    x0, y0, x1, y1 = box
-                    layer_pass.set_scissor_rect(x0, y0, x1 - x0, y1 - y0)
+                    if tex_id != bound_texture:
+                        layer_pass.set_bind_group(1, self._texture_group(tex_id))
+                        bound_texture = tex_id
+                    if box != scissor:
+                        x0, y0, x1, y1 = box
+                        layer_pass.set_scissor_rect(x0, y0, x1 - x0, y1 - y0)
+                        scissor = box
                     layer_pass.draw_indexed(command.elem_count, 1, command.idx_offset + idx_base,
                                             command.vtx_offset + vtx_base, 0)
                 vtx_base += commands.vtx_buffer.size()
