@@ -2,9 +2,9 @@
 
 Rows are named by their InfoComponent, or (unnamed) by what they are and a short id. A click selects; dragging a
 row onto another makes it that row's child, onto the space below the tree makes it a root (keeping its place in the
-world). The buttons on top and each row's context menu (right click) create, duplicate, rename and destroy; a mesh
-dragged from the content browser onto the panel is placed in the scene. The root list is cached and rebuilt only
-when entities, components or parents change.
+world). The buttons on top, Delete and Ctrl+D, and each row's context menu (right click) create, duplicate, rename
+and destroy; a mesh dragged from the content browser onto the panel is placed in the scene. The root list is
+cached and rebuilt only when entities, components or parents change.
 """
 
 from __future__ import annotations
@@ -71,6 +71,12 @@ class HierarchyPanelSystem(PanelSystem):
             self.act(editor.destroy_entity, selected)
         self.remember("hierarchy:delete")
         imgui.end_disabled()
+        io = imgui.get_io()
+        if selected is not None and imgui.is_window_focused() and not io.want_text_input:
+            if imgui.is_key_pressed(imgui.Key.delete, False):  # Delete: destroy, Ctrl+D: duplicate
+                self.act(editor.destroy_entity, selected)
+            elif io.key_ctrl and imgui.is_key_pressed(imgui.Key.d, False):
+                self.act(editor.duplicate_entity, selected)
         imgui.separator()
         roots = self.roots()
         if self._flat:  # every row is a leaf of the same height: draw only the visible ones

@@ -173,6 +173,11 @@ def test_hierarchy_buttons_create_duplicate_and_delete(app) -> None:
     click(app, *center(editor.item_rects["hierarchy:delete"]))
     assert len(app.scene) == count + 1
     assert [c.label.split()[0] for c in editor.commands.done] == ["create", "duplicate", "destroy"]
+    click(app, *center(editor.item_rects[f"hierarchy/{created}"]))  # select (and focus the panel)
+    keys(app, "LEFT_CONTROL", "D")
+    assert len(app.scene) == count + 2
+    keys(app, "DELETE")
+    assert len(app.scene) == count + 1 and created in app.scene
 
 
 def test_dragging_a_row_onto_another_reparents_it_and_onto_free_space_makes_a_root(app) -> None:
