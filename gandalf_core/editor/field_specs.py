@@ -146,11 +146,9 @@ def addable_components(scene: Any, entity: Any) -> list[tuple[str, Any]]:
         factories.append((MeshComponent, lambda: MeshComponent(first["meshes"])))
     if first["materials"]:
         factories.append((MaterialComponent, lambda: MaterialComponent(first["materials"])))
-    try:
-        from ..usd.registry import _REGISTRY
+    from ..usd.registry import registered_components
 
-        factories += [(reg.cls, reg.cls) for reg in _REGISTRY.values()]
-    except ImportError:  # pragma: no cover
-        pass
+    # The steps' registered components that can be built without arguments.
+    factories += [(reg.cls, reg.cls) for reg in registered_components() if reg.default_constructible]
     have = {type(c) for c in scene.components_of(entity)}
     return [(cls.__name__, make) for cls, make in factories if cls not in have and cls is not LinkComponent]

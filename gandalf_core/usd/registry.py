@@ -279,12 +279,3 @@ def registered_components() -> list[Registration]:
     """Every registered component class (for tools, e.g. an editor's *Add component* list)."""
     _core()
     return list(_COMPONENTS.values())
-
-
-def __getattr__(name: str) -> Any:
-    # The editor's Add-component list reads ``_REGISTRY`` (the table's name before systems were registered too):
-    # the component classes it can build without arguments.
-    if name == "_REGISTRY":
-        _core()
-        return {k: r for k, r in _COMPONENTS.items() if r.default_constructible}
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
