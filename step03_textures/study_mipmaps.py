@@ -26,13 +26,13 @@ Runs headless and prints progress.
 from __future__ import annotations
 
 import argparse
-import json
-import platform
 import statistics
 import time
 from pathlib import Path
 
 import numpy as np
+
+from gandalf_core.studies import pyplot, run_info, write_study
 
 STEM = "step03_study_mipmaps"
 SAMPLERS = {"nearest": ("nearest", False, 1), "linear": ("linear", False, 1), "nearest + mipmaps": ("nearest", True, 1),
@@ -166,7 +166,7 @@ def run_study(backends, size, ss: int, frames: int, repeats: int) -> dict:
             "reference": f"float64 numpy, {ss}x{ss} rays per pixel box-filtering the texels in linear light",
             "time": f"median of {repeats} runs of the mean of {frames} frames (1-pixel read-back per frame)",
             "anisotropic": "not offered by TextureData: not measured",
-            "host": platform.platform(), "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())}
+            **run_info()}
 
 
 def markdown(result: dict) -> str:
@@ -179,11 +179,7 @@ def markdown(result: dict) -> str:
 
 
 def plot(result: dict, path: Path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(8.4, 4.2), dpi=100)
     markers = {"opengl": "o", "webgpu": "s"}
     colours = dict(zip(SAMPLERS, ("tab:red", "tab:orange", "tab:blue", "tab:green", "tab:purple", "tab:brown")))
@@ -220,13 +216,7 @@ def main(argv: list[str] | None = None) -> int:
         parser.error("--size, --ss, --frames and --repeats must be at least 1")
     print(f"mipmap study: {len(SAMPLERS)} samplers, {', '.join(args.backends)}, {size[0]}x{size[1]}", flush=True)
     result = run_study(args.backends, (int(size[0]), int(size[1])), ss, frames, repeats)
-    args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / f"{STEM}.json").write_text(json.dumps(result, indent=1))
-    table = markdown(result)
-    (args.out / f"{STEM}.md").write_text(table)
-    plot(result, args.out / f"{STEM}.png")
-    print(table)
-    print(f"wrote {args.out / STEM}.json, .md, .png", flush=True)
+    write_study(args.out, STEM, result, markdown(result), plot)
     return 0
 
 

@@ -27,14 +27,14 @@ the bounds) to ``--out``. Runs headless and prints progress.
 from __future__ import annotations
 
 import argparse
-import json
 import math
-import platform
 import statistics
 import time
 from pathlib import Path
 
 import numpy as np
+
+from gandalf_core.studies import pyplot, run_info, write_study
 
 STEM = "step04_study_depth"
 #: (label, near, far, reverse_z)
@@ -188,7 +188,7 @@ def run_study(backends, mappings, per_decade: int, resolution: float, frames: in
     return {"rows": rows, "timing": timing, "size": list(SIZE), "resolution_octaves": resolution,
             "reference": "the float32 depth-buffer step at d as a distance, or float32's step of d if larger",
             "time": f"median of {repeats} runs of the mean of {frames} frames (two planes, 1-pixel read-back)",
-            "host": platform.platform(), "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())}
+            **run_info()}
 
 
 def markdown(result: dict) -> str:
@@ -216,11 +216,7 @@ def markdown(result: dict) -> str:
 
 
 def plot(result: dict, path: Path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(7.0, 4.6), dpi=100)
     colours = dict(zip(dict.fromkeys(r["mapping"] for r in result["rows"]),
                        ("tab:red", "tab:orange", "tab:blue", "tab:green", "tab:purple")))
@@ -264,13 +260,7 @@ def main(argv: list[str] | None = None) -> int:
     print(f"depth study: {len(mappings)} mappings, {', '.join(args.backends)}, {per_decade} distances a decade",
           flush=True)
     result = run_study(args.backends, mappings, per_decade, resolution, args.frames, args.repeats)
-    args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / f"{STEM}.json").write_text(json.dumps(result, indent=1))
-    table = markdown(result)
-    (args.out / f"{STEM}.md").write_text(table)
-    plot(result, args.out / f"{STEM}.png")
-    print(table)
-    print(f"wrote {args.out / STEM}.json, .md, .png", flush=True)
+    write_study(args.out, STEM, result, markdown(result), plot)
     return 0
 
 

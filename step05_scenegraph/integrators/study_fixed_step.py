@@ -22,14 +22,14 @@ Writes ``step05_study_fixed_step.json``, ``.md`` (the table) and ``.png`` (error
 from __future__ import annotations
 
 import argparse
-import json
-import platform
 import statistics
 import time
 import warnings
 from pathlib import Path
 
 import numpy as np
+
+from gandalf_core.studies import pyplot, run_info, write_study
 
 from ..custom_systems.fixed_step import FixedStep
 from ..solutions.integrators import semi_implicit_euler_step
@@ -109,7 +109,7 @@ def run_study(dts, max_steps_list, repeats: int, duration: float = DURATION) -> 
             "frame_stream": "60 Hz +-25 % jitter, a 0.1 s hitch once a second (seeded)",
             "reference": "exact float64 projectile at each frame's wall-clock time",
             "time": f"median of {repeats} runs (stepping + interpolation only), CPU time per simulated second",
-            "host": platform.platform(), "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())}
+            **run_info()}
 
 
 def markdown(result: dict) -> str:
@@ -122,11 +122,7 @@ def markdown(result: dict) -> str:
 
 
 def plot(result: dict, path: Path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.4, 4.2), dpi=100)
     for max_steps in dict.fromkeys(r["max_steps"] for r in result["rows"]):
         mine = [r for r in result["rows"] if r["max_steps"] == max_steps]
@@ -159,13 +155,7 @@ def main(argv: list[str] | None = None) -> int:
     print(f"fixed-step study: {len(dts)} time steps x {len(max_steps)} max_steps, {repeats} timed runs each",
           flush=True)
     result = run_study(dts, max_steps, repeats)
-    args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / f"{STEM}.json").write_text(json.dumps(result, indent=1))
-    table = markdown(result)
-    (args.out / f"{STEM}.md").write_text(table)
-    plot(result, args.out / f"{STEM}.png")
-    print(table)
-    print(f"wrote {args.out / STEM}.json, .md, .png", flush=True)
+    write_study(args.out, STEM, result, markdown(result), plot)
     return 0
 
 

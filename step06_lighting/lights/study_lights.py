@@ -22,13 +22,13 @@ error of dropping the weakest lights) to ``--out``. Runs headless and prints pro
 from __future__ import annotations
 
 import argparse
-import json
-import platform
 import statistics
 import time
 from pathlib import Path
 
 import numpy as np
+
+from gandalf_core.studies import pyplot, run_info, write_study
 
 STEM = "step06_study_lights"
 COUNTS = (0, 1, 2, 4, 8, 16, 32, 64)
@@ -121,7 +121,7 @@ def run_study(backends, counts, size, frames: int, repeats: int) -> dict:
     return {"rows": rows, "size": list(size), "total_lights": TOTAL,
             "reference": "the same scene with all 64 lights, same API",
             "time": f"median of {repeats} runs of the mean of {frames} frames (1-pixel read-back per frame)",
-            "host": platform.platform(), "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())}
+            **run_info()}
 
 
 def markdown(result: dict) -> str:
@@ -134,11 +134,7 @@ def markdown(result: dict) -> str:
 
 
 def plot(result: dict, path: Path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     fig, axes = plt.subplots(1, 2, figsize=(10.0, 4.0), dpi=100)
     for backend in dict.fromkeys(r["backend"] for r in result["rows"]):
         mine = [r for r in result["rows"] if r["backend"] == backend]
@@ -184,13 +180,7 @@ def main(argv: list[str] | None = None) -> int:
     print(f"light-count study: {counts} of {TOTAL} lights, {', '.join(args.backends)}, {size[0]}x{size[1]}",
           flush=True)
     result = run_study(args.backends, counts, size, frames, repeats)
-    args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / f"{STEM}.json").write_text(json.dumps(result, indent=1))
-    table = markdown(result)
-    (args.out / f"{STEM}.md").write_text(table)
-    plot(result, args.out / f"{STEM}.png")
-    print(table)
-    print(f"wrote {args.out / STEM}.json, .md, .png", flush=True)
+    write_study(args.out, STEM, result, markdown(result), plot)
     return 0
 
 

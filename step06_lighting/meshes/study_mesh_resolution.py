@@ -23,14 +23,14 @@ Writes ``step06_study_mesh_resolution.json``, ``.md`` (the table) and ``.png`` (
 from __future__ import annotations
 
 import argparse
-import json
 import math
-import platform
 import statistics
 import time
 from pathlib import Path
 
 import numpy as np
+
+from gandalf_core.studies import pyplot, run_info, write_study
 
 STEM = "step06_study_mesh_resolution"
 SPHERES = ((6, 3), (8, 4), (12, 6), (16, 8), (24, 12), (32, 16), (64, 32), (128, 64), (256, 128))
@@ -156,7 +156,7 @@ def run_study(backends, spheres, size, instances: int, frames: int, repeats: int
             "reference": "float64 ray-traced exact sphere, same Blinn-Phong, 8-bit sRGB",
             "time": f"median of {repeats} runs of the mean of {frames} frames ({instances} spheres, 1-pixel read-back "
                     "per frame)",
-            "host": platform.platform(), "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())}
+            **run_info()}
 
 
 def markdown(result: dict) -> str:
@@ -169,11 +169,7 @@ def markdown(result: dict) -> str:
 
 
 def plot(result: dict, path: Path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     fig, axes = plt.subplots(1, 2, figsize=(10.0, 4.0), dpi=100)
     for backend in dict.fromkeys(r["backend"] for r in result["rows"]):
         mine = [r for r in result["rows"] if r["backend"] == backend]
@@ -215,13 +211,7 @@ def main(argv: list[str] | None = None) -> int:
     print(f"mesh-resolution study: {len(spheres)} spheres, {', '.join(args.backends)}, {size[0]}x{size[1]}",
           flush=True)
     result = run_study(args.backends, spheres, size, args.instances, frames, repeats)
-    args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / f"{STEM}.json").write_text(json.dumps(result, indent=1))
-    table = markdown(result)
-    (args.out / f"{STEM}.md").write_text(table)
-    plot(result, args.out / f"{STEM}.png")
-    print(table)
-    print(f"wrote {args.out / STEM}.json, .md, .png", flush=True)
+    write_study(args.out, STEM, result, markdown(result), plot)
     return 0
 
 

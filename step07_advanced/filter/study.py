@@ -21,13 +21,13 @@ takes minutes on a software rasteriser); pass ``--max-taps 0`` for no limit. Wri
 from __future__ import annotations
 
 import argparse
-import json
-import platform
 import statistics
 import time
 from pathlib import Path
 
 import numpy as np
+
+from gandalf_core.studies import pyplot, run_info, write_study
 
 from . import reference
 from .kernels import OPERATIONS
@@ -103,11 +103,11 @@ def run_study(backends: list[str], sizes: tuple[int, ...], radii: tuple[int, ...
                         rows.append(row)
         finally:
             flt.release()
-    return {"rows": rows, "devices": devices, "host": platform.platform(), "methods": list(METHODS),
+    return {"rows": rows, "devices": devices, "methods": list(METHODS),
             "reference": "float64 numpy separable Gaussian (sigma = radius / 2), clamp-to-edge; errors in 8-bit steps",
             "time": f"median of the repeats of {batch} dispatch(es) of the whole filter + one wait (GL finish / "
                     f"WebGPU 4-byte read-back), per dispatch",
-            "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())}
+            **run_info()}
 
 
 def markdown(result: dict) -> str:
@@ -130,11 +130,7 @@ def markdown(result: dict) -> str:
 
 
 def plot(result: dict, path: Path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     backends = list(dict.fromkeys(r["backend"] for r in result["rows"]))
     sizes = sorted({r["size"] for r in result["rows"]})
     fig, axes = plt.subplots(1, len(backends), figsize=(6.2 * len(backends), 4.4), squeeze=False, sharey=True)
@@ -176,17 +172,10 @@ def main(argv: list[str] | None = None) -> int:
     assert set(METHODS) <= set(OPERATIONS)
     sizes, radii = (QUICK_SIZES, QUICK_RADII) if args.quick else (SIZES, RADII)
     repeats = args.repeats or (3 if args.quick else 5)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
     if args.repeats is not None and args.repeats < 1 or args.batch < 1:
         parser.error("--repeats and --batch must be >= 1")
     result = run_study(args.backends, sizes, radii, repeats, args.max_taps, args.batch)
-    (out / "filter_study.json").write_text(json.dumps(result, indent=1))
-    table = markdown(result)
-    (out / "filter_study.md").write_text(table)
-    plot(result, out / "filter_study.png")
-    print(table)
-    print(f"wrote {out / 'filter_study.json'}, {out / 'filter_study.md'}, {out / 'filter_study.png'}")
+    write_study(Path(args.out), "filter_study", result, markdown(result), plot)
     return 0
 
 

@@ -22,13 +22,13 @@ second) to ``--out``. Runs headless and prints progress.
 from __future__ import annotations
 
 import argparse
-import json
-import platform
 import statistics
 import time
 from pathlib import Path
 
 import numpy as np
+
+from gandalf_core.studies import pyplot, run_info, write_study
 
 from .particles import SimParams, particle_step_np
 
@@ -172,7 +172,7 @@ def run_study(backends, dts, particles: int, duration: float, repeats: int) -> d
     return {"rows": rows, "devices": devices, "particles": particles, "duration_s": duration,
             "reference": "exact float64 projectile x0 + v0 t + g t^2/2 at t = steps * dt",
             "time": f"median of {repeats} runs of one simulated second (1/dt steps + one read-back)",
-            "host": platform.platform(), "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())}
+            **run_info()}
 
 
 def markdown(result: dict) -> str:
@@ -186,11 +186,7 @@ def markdown(result: dict) -> str:
 
 
 def plot(result: dict, path: Path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.4, 4.2), dpi=100)
     for backend in dict.fromkeys(r["backend"] for r in result["rows"]):
         mine = [r for r in result["rows"] if r["backend"] == backend]
@@ -226,13 +222,7 @@ def main(argv: list[str] | None = None) -> int:
     print(f"particle study: {particles} projectiles for {DURATION} s, dt from 1/{1 / dts[0]:.0f} to "
           f"1/{1 / dts[-1]:.0f} s, backends {', '.join(args.backends)}", flush=True)
     result = run_study(args.backends, dts, particles, DURATION, repeats)
-    args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / f"{STEM}.json").write_text(json.dumps(result, indent=1))
-    table = markdown(result)
-    (args.out / f"{STEM}.md").write_text(table)
-    plot(result, args.out / f"{STEM}.png")
-    print(table)
-    print(f"wrote {args.out / STEM}.json, .md, .png", flush=True)
+    write_study(args.out, STEM, result, markdown(result), plot)
     return 0
 
 

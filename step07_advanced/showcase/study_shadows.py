@@ -31,14 +31,14 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-import json
-import platform
 import statistics
 import time
 from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
+
+from gandalf_core.studies import pyplot, run_info, write_study
 
 STEM = "step07_study_shadows"
 SHADER_DIR = Path(__file__).resolve().parent / "shaders"
@@ -190,7 +190,7 @@ def run_study(backends, sweeps, size, frames: int, repeats: int) -> dict:
             "reference_shadowed_share": float(shadowed[floor].mean()), "defaults": DEFAULTS,
             "reference": "float64 numpy ray-traced shadow of the boxes at each floor pixel centre",
             "time": f"median of {repeats} runs of the mean of {frames} frames (1-pixel read-back per frame)",
-            "host": platform.platform(), "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())}
+            **run_info()}
 
 
 def markdown(result: dict) -> str:
@@ -204,11 +204,7 @@ def markdown(result: dict) -> str:
 
 
 def plot(result: dict, path: Path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     knobs = list(dict.fromkeys(r["knob"] for r in result["rows"]))
     fig, axes = plt.subplots(1, len(knobs), figsize=(4.2 * len(knobs), 3.8), dpi=100, squeeze=False)
     label = {"map_size": lambda r: f"{r['map_size']}", "pcf_radius": lambda r: f"{r['taps']}",
@@ -261,13 +257,7 @@ def main(argv: list[str] | None = None) -> int:
     sweeps = QUICK_SWEEPS if args.quick else SWEEPS
     print(f"shadow study: {len(cases(sweeps))} settings, {', '.join(args.backends)}, {size[0]}x{size[1]}", flush=True)
     result = run_study(args.backends, sweeps, size, frames, repeats)
-    args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / f"{STEM}.json").write_text(json.dumps(result, indent=1))
-    table = markdown(result)
-    (args.out / f"{STEM}.md").write_text(table)
-    plot(result, args.out / f"{STEM}.png")
-    print(table)
-    print(f"wrote {args.out / STEM}.json, .md, .png", flush=True)
+    write_study(args.out, STEM, result, markdown(result), plot)
     return 0
 
 

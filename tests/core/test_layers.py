@@ -22,7 +22,7 @@ LAYERS = {
     "app": 4,
     "editor": 5, "usd": 5,
     # tools on top of everything
-    "grading": 6, "testing": 6, "tour": 6, "__init__": 6,
+    "grading": 6, "testing": 6, "tour": 6, "studies": 6, "__init__": 6,
 }
 #: (importing layer, imported layer): the lazy import behind ``Application(editor=True)``.
 ALLOWED_UPWARD = {("app", "editor")}
