@@ -522,3 +522,27 @@ def test_orthographic_maps_box_corners_to_the_ndc_box(name, reverse):
     expected = np.array([[x, y, z] for x in (-1.0, 1.0) for y in (-1.0, 1.0) for z in (d_near, d_far)])
     # Affine with entries ~1e-4..1e4: 1e-12 absolute.
     np.testing.assert_allclose(ndc(m, corners), expected, atol=1e-12)
+
+
+@pytest.mark.parametrize("n", [1, 3, 8, 9, 40])
+def test_trs_batch_gives_the_same_matrices_for_few_and_many_entities(n):
+    """Up to 8 matrices TRSBatch computes in plain floats, above that in numpy: both give the same bits as
+    building the matrices one by one (non-unit quaternions, mirrored and tiny/huge scales included)."""
+    from gandalf_core.math import TRSBatch, trs
+
+    rng = np.random.default_rng(n)
+    t = rng.normal(size=(n, 3)) * 1e3
+    q = rng.normal(size=(n, 4)) * 3.0
+    s = rng.normal(size=(n, 3)) * np.array([1e-6, 1.0, 1e6])
+    batched = TRSBatch()(t, q, s, out=np.empty((n, 4, 4)))
+    one_by_one = np.array([trs(t[i], q[i] / np.linalg.norm(q[i]), s[i]) for i in range(n)])
+    np.testing.assert_allclose(batched, one_by_one, rtol=1e-12, atol=1e-12 * np.abs(one_by_one).max())
+    np.testing.assert_array_equal(batched, TRSBatch()(t, q, s))  # the general numpy path, bit for bit
+
+
+def test_trs_batch_refuses_a_zero_quaternion_among_few():
+    from gandalf_core.math import TRSBatch
+
+    q = np.array([[1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 0.0, 0.0]])
+    with pytest.raises(ValueError, match="zero quaternion"):
+        TRSBatch()(np.zeros((2, 3)), q, np.ones((2, 3)), out=np.empty((2, 4, 4)))
