@@ -462,7 +462,7 @@ class Scene:
         if not 0.0 <= ts < math.inf:  # False for NaN too
             raise ValueError(f"scene '{self.name}': update(ts) needs a finite time step >= 0, got {ts!r}")
         for system in list(self._systems):
-            if system.enabled:
+            if system.enabled and system.updates_each_frame:
                 self.run_system(system, ts)
 
     def run_system(self, system: System, ts: float) -> None:

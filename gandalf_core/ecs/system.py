@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import uuid
 from collections.abc import Iterable, Sequence
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, ClassVar
 
 from .component import Component
 from .errors import NotAComponentError
@@ -27,6 +27,10 @@ if TYPE_CHECKING:
 
 class System:
     """Base class of systems. Subclasses override the hooks they need."""
+
+    #: False for a system that acts only in :meth:`on_gui_update` (the editor's panels): ``Scene.update`` then
+    #: skips it, so a frame pays nothing for it.
+    updates_each_frame: ClassVar[bool] = True
 
     def __init__(self, component_types: Sequence[type[Component]] = (), *, name: str | None = None) -> None:
         types = tuple(component_types)

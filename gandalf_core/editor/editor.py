@@ -95,11 +95,14 @@ class Editor(EditorActions):
         self.frame_dt = 1.0 / 60.0
         self._prev_now: float | None = None
         self._state_key: Any = None
+        self._gui_held = False
+        self._panels_cache: tuple[Scene, int, list[EditorPanelComponent]] | None = None
         self._installed: dict[int, tuple[Scene, list[uuid.UUID], list[System]]] = {}
         self._imgui = imgui
         self._context = imgui.create_context()
         imgui.set_current_context(self._context)
         imgui.get_io().set_ini_filename("")  # no imgui.ini next to the student's files
+        editor_style(imgui.get_style())
         renderer = app.renderer
         if renderer.backend == "opengl":
             from .gl_backend import GLGuiRenderer
@@ -108,7 +111,8 @@ class Editor(EditorActions):
         else:
             from .wgpu_backend import WGPUGuiRenderer
 
-            self._gui = WGPUGuiRenderer(renderer.device, renderer.color_view.texture.format)
+            self._gui = WGPUGuiRenderer(renderer.device, renderer.color_view.texture.format,
+                                        renderer.depth_view.texture.format)
         self._last_time = app.clock.time
         #: Wall-clock seconds per frame (smoothed), for the stats panel; the GUI's own time step follows
         #: the app's clock, which may be a fixed step.
@@ -169,11 +173,7 @@ class Editor(EditorActions):
         self.install(scene)
 
     # --- the GUI frame ------------------------------------------------------------------------------
-    def _overlay(self, renderer: Any, encoder: Any = None) -> None:
-        imgui = self._imgui
-        imgui.set_current_context(self._context)
-        io = imgui.get_io()
-        io.display_size = imgui.ImVec2(renderer.width, renderer.height)
+    def _overlay(self, renderer: Any, render_pass: Any = None) -> None:
         wall = time.perf_counter()
         if self._last_wall is not None:
             elapsed = wall - self._last_wall
@@ -184,38 +184,42 @@ class Editor(EditorActions):
             self.frame_dt = now - self._prev_now
         self._prev_now = now
         if self._gui_due(now):
+            imgui = self._imgui
+            imgui.set_current_context(self._context)
+            io = imgui.get_io()
+            io.display_size = imgui.ImVec2(renderer.width, renderer.height)
             self._gui_frame(io, now)
             self._gui.draw_layer(imgui.get_draw_data(), renderer.width, renderer.height)
         else:
             self.skipped_gui_frames += 1
         # Every frame: the GUI layer (and the live images) over this frame, whose scene has moved.
-        if encoder is None:
+        if render_pass is None:
             self._gui.composite(renderer.framebuffer)
         else:
-            self._gui.composite(encoder, renderer.color_view)
+            self._gui.composite(render_pass, renderer.width, renderer.height)
         self.gui_seconds = time.perf_counter() - wall
 
     def _gui_due(self, now: float) -> bool:
-        """Whether this frame runs the panels (an ImGui frame) or only draws the last one's draw lists again.
+        """Whether this frame runs the panels (an ImGui frame) or only draws the last one's GUI layer again.
 
         The panels run on every frame with input (and the two after it), while a widget is held or the gizmo
         dragged, whenever the editor's state changed (an edit, the selection, entities, the log, a panel moved
         or hidden), and at least every :attr:`gui_interval` seconds of the app's clock; in between an idle GUI
-        costs only its drawing.
+        costs only its compositing. What ImGui knows (a held widget, text input) is read at the end of each GUI
+        frame: it cannot change without one.
         """
-        if self.gui_interval <= 0.0 or imgui_draw_data_missing(self._imgui):
+        if self.gui_interval <= 0.0 or self.gui_frames == 0 or self._gui_held:
             return True
         if self.app.input.events:
             self._busy_frames = 3
         if self._busy_frames > 0:
             self._busy_frames -= 1
             return True
-        if self._imgui.is_any_item_active() or self.gizmo_using or self._imgui.get_io().want_text_input:
-            return True
         scene = self.app.scene
+        renderer = self.app.renderer
         key = (self.commands.version, self.selected, id(scene), scene.membership_version, scene.hierarchy_version,
-               self.log.version, self.status, self.app.renderer.width, self.app.renderer.height,
-               tuple((p.visible, p.position, p.size) for p in self._panel_components(scene)))
+               self.log.version, self.status, renderer.width, renderer.height,
+               tuple([(p.visible, p.position, p.size) for p in self._panel_components(scene)]))
         if key != self._state_key:
             self._state_key = key
             return True
@@ -226,7 +230,12 @@ class Editor(EditorActions):
         self._state_key = None
 
     def _panel_components(self, scene: Scene) -> list[EditorPanelComponent]:
-        return [scene.get_component(e, EditorPanelComponent) for e in self.panels(scene) if e in scene]
+        """The panel entities' components in ``scene``, looked up again only when its entities change."""
+        cached = self._panels_cache
+        if cached is None or cached[0] is not scene or cached[1] != scene.membership_version:
+            panels = [scene.get_component(e, EditorPanelComponent) for e in self.panels(scene) if e in scene]
+            cached = self._panels_cache = (scene, scene.membership_version, panels)
+        return cached[2]
 
     def _gui_frame(self, io: Any, now: float) -> None:
         imgui = self._imgui
@@ -247,6 +256,8 @@ class Editor(EditorActions):
         finally:
             imgui.render()
         self.gui_frames += 1
+        # A widget held or text being typed: the next frame runs the panels too (see _gui_due).
+        self._gui_held = bool(imgui.is_any_item_active() or io.want_text_input or self.gizmo_using)
 
     @property
     def wants_mouse(self) -> bool:
@@ -508,10 +519,15 @@ class Editor(EditorActions):
             del _EDITORS[app]
 
 
-def imgui_draw_data_missing(imgui: Any) -> bool:
-    """True before the first ImGui frame (there is nothing to draw again yet)."""
-    data = imgui.get_draw_data()
-    return data is None or not data.valid
+def editor_style(style: Any) -> None:
+    """The editor's ImGui style: ImGui's own, with windows, menus and popups opaque. The GUI layer is blended over
+    the scene in linear light (see :mod:`gandalf_core.editor.gui_layer`), which would let a translucent window
+    show much more of a bright scene than ImGui's byte-space blending does; opaque, it shows ImGui's own bytes."""
+    from imgui_bundle import imgui
+
+    for colour in (imgui.Col_.window_bg, imgui.Col_.popup_bg, imgui.Col_.menu_bar_bg):
+        value = style.color_(colour)
+        style.set_color_(colour, imgui.ImVec4(value.x, value.y, value.z, 1.0))
 
 
 def enable_editor(app: Any) -> Editor:

@@ -1,11 +1,12 @@
 """Draws ImGui's draw data with moderngl: into a cached GUI layer, composited over the OpenGL renderer's frame.
 
 ImGui colours are sRGB values and ImGui blends them as they are. The frame is an sRGB target with
-GL_FRAMEBUFFER_SRGB enabled, which would encode the GUI's colours a second time; the layer and the composite
-therefore run with GL_FRAMEBUFFER_SRGB disabled (bytes in = bytes out) and the flag is restored afterwards.
-The blend state matches the WebGPU backend exactly (colour: src-alpha / one-minus-src-alpha, alpha: one /
-one-minus-src-alpha into the layer; one / one-minus-src-alpha for the premultiplied composite), so both backends
-store the same bytes. See :mod:`gandalf_core.editor.gui_layer` for the layer and its holes for live images.
+GL_FRAMEBUFFER_SRGB enabled, which would encode the GUI's colours a second time; the layer is therefore drawn
+with GL_FRAMEBUFFER_SRGB disabled (bytes in = bytes out) with the WebGPU backend's blend state (colour:
+src-alpha / one-minus-src-alpha, alpha: one / one-minus-src-alpha), so both backends store the same bytes in it.
+The composite runs with the renderer's state (GL_FRAMEBUFFER_SRGB on): the layer decoded to linear light, blended
+"over" the frame (one / one-minus-src-alpha), encoded by the target; live images are drawn as bytes, with the flag
+off. See :mod:`gandalf_core.editor.gui_layer` for the layer and its holes for live images.
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ import moderngl
 import numpy as np
 from imgui_bundle import imgui
 
-from .gui_layer import clip_box, command_vertices, gui_rects
+from .gui_layer import clip_box, command_vertices, gui_rects, rect_vertices
 
 GL_FRAMEBUFFER_SRGB = 0x8DB9
 
@@ -51,9 +52,9 @@ void main() {
 
 _COMPOSITE_VERTEX = """
 #version 330
+in vec2 in_position;  // a corner of a window rectangle, in clip space
 void main() {
-    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-    gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+    gl_Position = vec4(in_position, 0.0, 1.0);
 }
 """
 
@@ -61,8 +62,13 @@ _COMPOSITE_FRAGMENT = """
 #version 330
 uniform sampler2D u_layer;
 out vec4 f_color;
+vec3 srgb_to_linear(vec3 c) {
+    return mix(pow((c + 0.055) / 1.055, vec3(2.4)), c / 12.92, lessThanEqual(c, vec3(0.04045)));
+}
 void main() {
-    f_color = texelFetch(u_layer, ivec2(gl_FragCoord.xy), 0);  // premultiplied colour and coverage
+    vec4 l = texelFetch(u_layer, ivec2(gl_FragCoord.xy), 0);  // premultiplied sRGB bytes and coverage
+    vec3 colour = l.a > 0.0 ? l.rgb / l.a : vec3(0.0);
+    f_color = vec4(srgb_to_linear(colour) * l.a, l.a);
 }
 """
 
@@ -77,7 +83,9 @@ class GLGuiRenderer:
         self.program["u_hole"].value = False
         self.composite_program = ctx.program(vertex_shader=_COMPOSITE_VERTEX, fragment_shader=_COMPOSITE_FRAGMENT)
         self.composite_program["u_layer"].value = 0
-        self._fullscreen = ctx.vertex_array(self.composite_program, [])
+        self._rect_vbo: moderngl.Buffer | None = None
+        self._rect_vao: moderngl.VertexArray | None = None
+        self._rect_vertices = 0
         self._layer: moderngl.Texture | None = None
         self._layer_fbo: moderngl.Framebuffer | None = None
         self.rects: list[tuple[int, int, int, int]] = []
@@ -159,13 +167,15 @@ class GLGuiRenderer:
                 if tex.status != imgui.ImTextureStatus.ok:
                     self._update_texture(tex)
         ctx = self.ctx
+        frame_fbo = ctx.fbo  # the frame's: bound again at the end, for composite()
         fbo = self._target(width, height)
-        fbo.use()  # composite() binds the frame's framebuffer again
+        fbo.use()
         ctx.disable_direct(GL_FRAMEBUFFER_SRGB)
         fbo.clear(0.0, 0.0, 0.0, 0.0)
         self.rects, self._live = [], []
         if draw_data.cmd_lists_count == 0:
             ctx.enable_direct(GL_FRAMEBUFFER_SRGB)
+            frame_fbo.use()
             return
         sx, sy = draw_data.display_size
         self.program["u_scale"].value = (2.0 / sx, -2.0 / sy)
@@ -211,9 +221,23 @@ class GLGuiRenderer:
             fbo.scissor = None
             ctx.disable(moderngl.BLEND)
             ctx.enable_direct(GL_FRAMEBUFFER_SRGB)
+            frame_fbo.use()
         self.rects = gui_rects(draw_data, width, height)
+        self._write_rects(rect_vertices(self.rects, width, height))
         if live_bytes:
             self._write_live(b"".join(live_bytes))
+
+    def _write_rects(self, data: bytes) -> None:
+        self._rect_vertices = len(data) // 8
+        if not data:
+            return
+        if self._rect_vbo is None or self._rect_vbo.size < len(data):
+            if self._rect_vbo is not None:
+                self._rect_vao.release()
+                self._rect_vbo.release()
+            self._rect_vbo = self.ctx.buffer(reserve=max(len(data), 1024), dynamic=True)
+            self._rect_vao = self.ctx.vertex_array(self.composite_program, [(self._rect_vbo, "2f", "in_position")])
+        self._rect_vbo.write(data)
 
     def _write_live(self, data: bytes) -> None:
         if self._live_vbo is None or self._live_vbo.size < len(data):
@@ -227,36 +251,33 @@ class GLGuiRenderer:
 
     # --- every frame: the layer over the frame -------------------------------------------------------
     def composite(self, fbo: moderngl.Framebuffer) -> None:
-        """Draw the live images, then the GUI layer, over what ``fbo`` holds, in the GUI's rectangles."""
+        """Draw the live images, then the GUI layer, over what ``fbo`` (bound, GL_FRAMEBUFFER_SRGB on) holds."""
         if not self.rects or self._layer is None:
             return
         ctx = self.ctx
         width, height = fbo.size
         if (width, height) != self._layer.size:
             return  # resized since the last GUI frame: the next one draws the layer at the new size
-        fbo.use()
-        ctx.disable_direct(GL_FRAMEBUFFER_SRGB)
         ctx.disable(moderngl.DEPTH_TEST | moderngl.CULL_FACE | moderngl.BLEND)
-        fbo.viewport = (0, 0, width, height)
-        try:
-            for tex_id, (x0, y0, x1, y1), first, count in self._live:
-                texture = self.user_textures.get(tex_id)
-                if texture is None:
-                    continue
-                fbo.scissor = (x0, height - y1, x1 - x0, y1 - y0)
-                texture.use(location=0)
-                self._live_vao.render(moderngl.TRIANGLES, vertices=count, first=first)
-            ctx.enable(moderngl.BLEND)
-            ctx.blend_equation = moderngl.FUNC_ADD
-            ctx.blend_func = (moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA, moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA)
-            self._layer.use(location=0)
-            for x, y, w, h in self.rects:
-                fbo.scissor = (x, height - y - h, w, h)
-                self._fullscreen.render(moderngl.TRIANGLES, vertices=3)
-        finally:
-            fbo.scissor = None
-            ctx.disable(moderngl.BLEND)
-            ctx.enable_direct(GL_FRAMEBUFFER_SRGB)
+        if self._live:  # as bytes (under the layer, whose holes show them)
+            ctx.disable_direct(GL_FRAMEBUFFER_SRGB)
+            try:
+                for tex_id, (x0, y0, x1, y1), first, count in self._live:
+                    texture = self.user_textures.get(tex_id)
+                    if texture is None:
+                        continue
+                    fbo.scissor = (x0, height - y1, x1 - x0, y1 - y0)
+                    texture.use(location=0)
+                    self._live_vao.render(moderngl.TRIANGLES, vertices=count, first=first)
+            finally:
+                fbo.scissor = None
+                ctx.enable_direct(GL_FRAMEBUFFER_SRGB)
+        ctx.enable(moderngl.BLEND)
+        ctx.blend_equation = moderngl.FUNC_ADD
+        ctx.blend_func = (moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA, moderngl.ONE, moderngl.ONE_MINUS_SRC_ALPHA)
+        self._layer.use(location=0)
+        self._rect_vao.render(moderngl.TRIANGLES, vertices=self._rect_vertices)
+        ctx.disable(moderngl.BLEND)
 
     def _release_buffers(self) -> None:
         for obj in (self._vao, self._vbo, self._ibo):
@@ -267,7 +288,7 @@ class GLGuiRenderer:
     def release(self) -> None:
         """Free the programs, the buffers, the layer and every texture ImGui asked for."""
         self._release_buffers()
-        for obj in (self._live_vao, self._live_vbo, self._layer_fbo, self._layer, self._fullscreen):
+        for obj in (self._live_vao, self._live_vbo, self._rect_vao, self._rect_vbo, self._layer_fbo, self._layer):
             if obj is not None:
                 obj.release()
         self.composite_program.release()

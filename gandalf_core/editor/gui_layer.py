@@ -1,10 +1,16 @@
 """What both GUI backends share for the cached GUI layer.
 
-The GUI is drawn into a transparent *layer* texture only on frames that run the panels; every frame composites
-that layer over the finished frame (premultiplied: ``frame = layer + frame · (1 - layer.a)``, the same as drawing
-the GUI over it, to within a rounding of 1 level) in each window's rectangle. A texture a panel shows live (the
-viewport's) would be frozen in the layer, so the layer gets a transparent hole where it is drawn and the image
-itself is drawn into the frame every frame, before the layer: what the GUI draws over it (the gizmo) stays on top.
+The GUI is drawn into a transparent *layer* texture only on frames that run the panels, exactly as ImGui means it
+(its sRGB bytes blended as bytes, premultiplied). Every frame then draws that layer over the finished frame, last
+in the frame's own drawing (no pass or copy of its own), as two triangles per window rectangle: the layer's colour
+is decoded to linear light and blended "over" the frame by the blending unit (``one, one-minus-src-alpha``), and
+the sRGB target encodes the result. Where the GUI is opaque (the windows: their background is made opaque, see
+:func:`gandalf_core.editor.editor.editor_style`) this gives exactly the GUI's bytes; only its anti-aliased rims
+are mixed with the scene in linear light instead of ImGui's byte space (both backends alike).
+
+A texture a panel shows live (the viewport's) would be frozen in the layer, so the layer gets a transparent hole
+where it is drawn and the image itself is drawn into the frame every frame, before the layer: what the GUI draws
+over it (the gizmo) stays on top.
 """
 
 from __future__ import annotations
@@ -65,6 +71,18 @@ def merge_boxes(boxes: list[tuple[int, int, int, int]], slack: float = 0.05) -> 
             if merged:
                 break
     return boxes
+
+
+def rect_vertices(rects: list[tuple[int, int, int, int]], width: int, height: int) -> bytes:
+    """The pixel rectangles ``rects`` (x, y, w, h; origin top-left) as two triangles each, in clip space
+    (float32 x, y): the composite draws them in one call, with no scissor per rectangle. Their edges fall on
+    pixel edges, so exactly the rectangles' pixels are drawn."""
+    quads = np.empty((len(rects), 6, 2), dtype=np.float32)
+    for i, (x, y, w, h) in enumerate(rects):
+        x0, x1 = 2.0 * x / width - 1.0, 2.0 * (x + w) / width - 1.0
+        y0, y1 = 1.0 - 2.0 * y / height, 1.0 - 2.0 * (y + h) / height  # clip space: y up
+        quads[i] = ((x0, y0), (x1, y0), (x0, y1), (x0, y1), (x1, y0), (x1, y1))
+    return quads.tobytes()
 
 
 def clip_box(command: Any, width: int, height: int) -> tuple[int, int, int, int] | None:

@@ -39,13 +39,11 @@ class PanelSystem(System):
 
     kind = ""
     window_flags = imgui.WindowFlags_.no_collapse
+    updates_each_frame = False  # panels change nothing in the simulation step; they act in on_gui_update
 
     def __init__(self, editor: Editor) -> None:
         super().__init__([EditorPanelComponent], name=f"Editor{self.kind.capitalize()}System")
         self.editor = editor
-
-    def on_update_system(self, ts: float) -> None:
-        """Panels change nothing in the simulation step; they act in :meth:`on_gui_update`."""
 
     def on_gui_update(self) -> None:
         for entity, (panel,) in zip(self.entities, self.components):

@@ -33,6 +33,7 @@ class ViewportPanelSystem(PanelSystem):
     """Renders the scene into the panel's texture and handles the gizmo."""
 
     kind = "viewport"
+    updates_each_frame = True  # it renders the scene into its texture in the frame's update
 
     @property
     def window_flags(self) -> int:  # type: ignore[override]

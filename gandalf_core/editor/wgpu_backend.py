@@ -1,17 +1,14 @@
 """Draws ImGui's draw data with wgpu: into a cached GUI layer, composited over the WebGPU renderer's frame.
 
-ImGui blends its sRGB colours as they are. An sRGB render target would blend in linear light instead,
-so the GUI would look different from the OpenGL backend (which draws with GL_FRAMEBUFFER_SRGB off).
-To store the same bytes as OpenGL:
+ImGui blends its sRGB colours as they are. An sRGB render target would blend in linear light instead, so the
+GUI would look different from the OpenGL backend (which draws with GL_FRAMEBUFFER_SRGB off). So:
 
 * on frames that run the panels, the GUI is drawn into a transparent ``rgba8unorm`` layer with wgpu's ImGui
-  pipeline (gamma 1: the bytes are treated as the colours; a live image leaves a hole, see
-  :mod:`gandalf_core.editor.gui_layer`);
-* every frame, a live image is drawn straight into the frame (its bytes decoded to linear light, which the sRGB
-  target encodes back to the same bytes); then one copy takes the frame's bytes under the GUI into a plain
-  ``rgba8unorm`` texture (formats that differ only in sRGB-ness may be copied; the bytes are kept as they are),
-  and one pass writes, in each window's rectangle, ``layer + frame · (1 - layer.a)`` computed on those bytes (as
-  OpenGL's blending does it), decoded to linear light for the sRGB target to encode to that byte.
+  pipeline (gamma 1: the bytes are treated as the colours, blended as bytes, exactly as OpenGL does it; a live
+  image leaves a hole, see :mod:`gandalf_core.editor.gui_layer`);
+* every frame, at the end of the renderer's own pass (no pass, copy or target of its own), the live images are
+  drawn (their bytes decoded to linear light, which the sRGB target encodes back to the same bytes) and then the
+  layer over the frame in the windows' rectangles, in linear light (see :mod:`gandalf_core.editor.gui_layer`).
 
 The rest of the frame is never touched.
 """
@@ -24,7 +21,7 @@ import wgpu
 from imgui_bundle import imgui
 from wgpu.utils.imgui.imgui_backend import FRAGMENT_SHADER_SRC, VERTEX_SHADER_SRC, ImguiWgpuBackend
 
-from .gui_layer import clip_box, command_vertices, gui_rects
+from .gui_layer import clip_box, command_vertices, gui_rects, rect_vertices
 
 GUI_FORMAT = "rgba8unorm"
 
@@ -34,24 +31,21 @@ fn srgb_to_linear(c: vec3<f32>) -> vec3<f32> {
 }
 """
 
-# The layer over a copy of the frame's bytes, in byte space as OpenGL's blending does it, written back decoded to
-# linear light (the sRGB target encodes it to the byte again): one pass, no blending unit.
+# The layer (premultiplied sRGB bytes) in the windows' rectangles, two triangles each in clip space: its colour
+# decoded to linear light and premultiplied again, for the blending unit's "one, one-minus-src-alpha".
 _COMPOSITE_WGSL = _SRGB_TO_LINEAR + """
-@group(0) @binding(0) var frame_bytes: texture_2d<f32>;
-@group(0) @binding(1) var layer: texture_2d<f32>;
+@group(0) @binding(0) var layer: texture_2d<f32>;
 
 @vertex
-fn vs_main(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
-    let p = vec2<f32>(f32((i << 1u) & 2u), f32(i & 2u));
-    return vec4<f32>(p * 2.0 - 1.0, 0.0, 1.0);
+fn vs_main(@location(0) position: vec2<f32>) -> @builtin(position) vec4<f32> {
+    return vec4<f32>(position, 0.0, 1.0);
 }
 
 @fragment
 fn fs_main(@builtin(position) pos: vec4<f32>) -> @location(0) vec4<f32> {
-    let f = textureLoad(frame_bytes, vec2<i32>(pos.xy), 0);
-    let l = textureLoad(layer, vec2<i32>(pos.xy), 0);  // premultiplied colour and coverage
-    let c = l.rgb + f.rgb * (1.0 - l.a);
-    return vec4<f32>(srgb_to_linear(c), l.a + f.a * (1.0 - l.a));
+    let l = textureLoad(layer, vec2<i32>(pos.xy), 0);
+    let colour = select(vec3<f32>(0.0), l.rgb / l.a, l.a > 0.0);
+    return vec4<f32>(srgb_to_linear(colour) * l.a, l.a);
 }
 """
 
@@ -85,6 +79,8 @@ fn fs_main(in: Varyings) -> @location(0) vec4<f32> {
 }
 """
 
+_PREMULTIPLIED = {"src_factor": "one", "dst_factor": "one-minus-src-alpha", "operation": "add"}
+
 _IMGUI_VERTEX = {"array_stride": imgui.VERTEX_SIZE, "step_mode": "vertex", "attributes": [
     {"format": "float32x2", "offset": 0, "shader_location": 0},
     {"format": "float32x2", "offset": 8, "shader_location": 1},
@@ -94,32 +90,41 @@ _IMGUI_VERTEX = {"array_stride": imgui.VERTEX_SIZE, "step_mode": "vertex", "attr
 class WGPUGuiRenderer:
     """Owns the GUI's wgpu objects; call :meth:`release` to free them."""
 
-    def __init__(self, device: Any, target_format: str) -> None:
+    def __init__(self, device: Any, target_format: str, depth_format: str) -> None:
+        """``target_format`` and ``depth_format``: the renderer's pass, which the composite draws in."""
         self.device = device
         self.backend = ImguiWgpuBackend(device, GUI_FORMAT)
+        # Drawn in the renderer's pass: its attachments' formats, the depth neither tested nor written.
+        self._depth = {"format": depth_format, "depth_write_enabled": False, "depth_compare": "always"}
         module = device.create_shader_module(code=_COMPOSITE_WGSL, label="editor composite")
         self.composite_pipeline = device.create_render_pipeline(
             layout="auto",
-            vertex={"module": module, "entry_point": "vs_main"},
-            fragment={"module": module, "entry_point": "fs_main", "targets": [{"format": target_format}]},
+            vertex={"module": module, "entry_point": "vs_main", "buffers": [{
+                "array_stride": 8, "step_mode": "vertex",
+                "attributes": [{"format": "float32x2", "offset": 0, "shader_location": 0}]}]},
+            fragment={"module": module, "entry_point": "fs_main", "targets": [{
+                "format": target_format, "blend": {"color": _PREMULTIPLIED, "alpha": _PREMULTIPLIED}}]},
             primitive={"topology": "triangle-list"},
+            depth_stencil=self._depth,
             label="editor composite",
         )
         self.hole_pipeline = self._imgui_pipeline(VERTEX_SHADER_SRC, FRAGMENT_SHADER_SRC, GUI_FORMAT, "zero")
         live = device.create_shader_module(code=_LIVE_WGSL, label="editor live image")
         self.live_pipeline = self._imgui_pipeline(live, live, target_format, None)
         self._size: tuple[int, int] | None = None
-        self._texture: Any = None
         self._layer: Any = None
         self._layer_group: Any = None
         self._texture_groups: dict[int, tuple[Any, Any]] = {}
         self.rects: list[tuple[int, int, int, int]] = []
+        self._rect_buffer: Any = None
+        self._rect_vertices = 0
         self._live: list[tuple[int, tuple[int, int, int, int], int, int]] = []
         self._live_buffer: Any = None
 
     def _imgui_pipeline(self, vertex: Any, fragment: Any, target_format: str, blend: str | None) -> Any:
         """A pipeline with the layout of wgpu's ImGui pipeline (its bind groups fit): ``blend="zero"`` writes
-        transparent black (a live image's hole in the layer), None writes the fragment as it is."""
+        transparent black into the layer (a live image's hole), None writes the fragment as it is into the
+        renderer's pass (a live image)."""
         backend, device = self.backend, self.device
         if isinstance(vertex, str):
             vertex, fragment = device.create_shader_module(code=vertex), device.create_shader_module(code=fragment)
@@ -134,6 +139,7 @@ class WGPUGuiRenderer:
             layout=layout,
             vertex={"module": vertex, "entry_point": entry, "buffers": [_IMGUI_VERTEX]},
             primitive={"topology": "triangle-list", "cull_mode": "none"},
+            depth_stencil=None if blend == "zero" else self._depth,
             fragment={"module": fragment, "entry_point": "main" if vertex is not fragment else "fs_main",
                       "targets": [target]},
             label="editor hole" if blend == "zero" else "editor live image",
@@ -152,23 +158,17 @@ class WGPUGuiRenderer:
     def _target(self, width: int, height: int) -> None:
         if self._size == (width, height):
             return
-        for texture in (self._texture, self._layer):
-            if texture is not None:
-                texture.destroy()
+        if self._layer is not None:
+            self._layer.destroy()
         usage = wgpu.TextureUsage
-        self._texture = self.device.create_texture(
-            size=(width, height, 1), format=GUI_FORMAT,
-            usage=usage.COPY_DST | usage.TEXTURE_BINDING, label="editor frame bytes",
-        )
         self._layer = self.device.create_texture(
             size=(width, height, 1), format=GUI_FORMAT, usage=usage.RENDER_ATTACHMENT | usage.TEXTURE_BINDING,
             label="editor gui layer",
         )
-        self._view = self._texture.create_view()
         self._layer_view = self._layer.create_view()
         self._layer_group = self.device.create_bind_group(
             layout=self.composite_pipeline.get_bind_group_layout(0),
-            entries=[{"binding": 0, "resource": self._view}, {"binding": 1, "resource": self._layer_view}],
+            entries=[{"binding": 0, "resource": self._layer_view}],
         )
         self._size = (width, height)
 
@@ -235,6 +235,7 @@ class WGPUGuiRenderer:
         layer_pass.end()
         self.device.queue.submit([encoder.finish()])
         self.rects = gui_rects(draw_data, width, height)
+        self._write_rects(rect_vertices(self.rects, width, height))
         if live_bytes:
             data = b"".join(live_bytes)
             if self._live_buffer is None or self._live_buffer.size < len(data):
@@ -244,44 +245,37 @@ class WGPUGuiRenderer:
                     size=max(len(data), 4096), usage=wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.COPY_DST)
             self.device.queue.write_buffer(self._live_buffer, 0, data)
 
-    # --- every frame: the layer over the frame -------------------------------------------------------
-    def composite(self, encoder: Any, color_view: Any) -> None:
-        """Record the live images and the GUI layer over ``color_view`` (the frame) on ``encoder``."""
-        frame = color_view.texture
-        if not self.rects or self._size != (frame.size[0], frame.size[1]):
+    def _write_rects(self, data: bytes) -> None:
+        self._rect_vertices = len(data) // 8
+        if not data:
             return
+        if self._rect_buffer is None or self._rect_buffer.size < len(data):
+            if self._rect_buffer is not None:
+                self._rect_buffer.destroy()
+            self._rect_buffer = self.device.create_buffer(
+                size=max(len(data), 1024), usage=wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.COPY_DST)
+        self.device.queue.write_buffer(self._rect_buffer, 0, data)
+
+    # --- every frame: the layer over the frame -------------------------------------------------------
+    def composite(self, render_pass: Any, width: int, height: int) -> None:
+        """Draw the live images and the GUI layer at the end of the renderer's ``render_pass`` (a frame of
+        ``width`` x ``height``)."""
+        if not self.rects or self._size != (width, height):
+            return  # resized since the last GUI frame: the next one draws the layer at the new size
         live = [entry for entry in self._live if entry[0] in self.backend._texture_views]
-        if live:  # straight into the frame, before its bytes are copied
-            live_pass = encoder.begin_render_pass(color_attachments=[
-                {"view": color_view, "load_op": "load", "store_op": "store"}
-            ])
-            live_pass.set_pipeline(self.live_pipeline)
-            live_pass.set_bind_group(0, self.backend._bind_group)
-            live_pass.set_vertex_buffer(0, self._live_buffer)
+        if live:  # under the layer, whose holes show them
+            render_pass.set_pipeline(self.live_pipeline)
+            render_pass.set_bind_group(0, self.backend._bind_group)
+            render_pass.set_vertex_buffer(0, self._live_buffer)
             for tex_id, (x0, y0, x1, y1), first, count in live:
-                live_pass.set_bind_group(1, self._texture_group(tex_id))
-                live_pass.set_scissor_rect(x0, y0, x1 - x0, y1 - y0)
-                live_pass.draw(count, 1, first, 0)
-            live_pass.end()
-        # The frame's bytes under the GUI, in one copy of the box around its windows.
-        x0 = min(r[0] for r in self.rects)
-        y0 = min(r[1] for r in self.rects)
-        x1 = max(r[0] + r[2] for r in self.rects)
-        y1 = max(r[1] + r[3] for r in self.rects)
-        encoder.copy_texture_to_texture(
-            {"texture": frame, "mip_level": 0, "origin": (x0, y0, 0)},
-            {"texture": self._texture, "mip_level": 0, "origin": (x0, y0, 0)},
-            (x1 - x0, y1 - y0, 1),
-        )
-        gui_pass = encoder.begin_render_pass(color_attachments=[
-            {"view": color_view, "load_op": "load", "store_op": "store"}
-        ])
-        gui_pass.set_pipeline(self.composite_pipeline)
-        gui_pass.set_bind_group(0, self._layer_group)
-        for x, y, w, h in self.rects:
-            gui_pass.set_scissor_rect(x, y, w, h)
-            gui_pass.draw(3)
-        gui_pass.end()
+                render_pass.set_bind_group(1, self._texture_group(tex_id))
+                render_pass.set_scissor_rect(x0, y0, x1 - x0, y1 - y0)
+                render_pass.draw(count, 1, first, 0)
+            render_pass.set_scissor_rect(0, 0, width, height)
+        render_pass.set_pipeline(self.composite_pipeline)
+        render_pass.set_bind_group(0, self._layer_group)
+        render_pass.set_vertex_buffer(0, self._rect_buffer)
+        render_pass.draw(self._rect_vertices)
 
     def release(self) -> None:
         """Free the GUI target and layer, ImGui's textures and the backend's buffers."""
@@ -291,13 +285,13 @@ class WGPUGuiRenderer:
         backend._textures.clear()
         backend._texture_views.clear()
         self._texture_groups.clear()
-        for buffer in (backend._vertex_buffer, backend._index_buffer, backend._uniform_buffer, self._live_buffer):
+        for buffer in (backend._vertex_buffer, backend._index_buffer, backend._uniform_buffer, self._live_buffer,
+                       self._rect_buffer):
             if buffer is not None:
                 buffer.destroy()
-        for texture in (self._texture, self._layer):
-            if texture is not None:
-                texture.destroy()
-        self._texture = self._layer = None
+        if self._layer is not None:
+            self._layer.destroy()
+        self._layer = self._rect_buffer = self._live_buffer = None
         for tex in imgui.get_platform_io().textures:
             tex.set_tex_id(0)
             tex.set_status(imgui.ImTextureStatus.destroyed)

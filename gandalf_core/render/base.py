@@ -50,7 +50,8 @@ class Renderer(ABC):
         self.stats: Counter[str] = Counter()
         #: Drawn over each finished frame, in order (a GUI layer such as the editor). OpenGL calls
         #: ``overlay(renderer)`` with the frame's framebuffer bound; WebGPU calls ``overlay(renderer,
-        #: encoder)`` after the scene's render pass, to record its own pass on ``renderer.color_view``.
+        #: render_pass)`` at the end of the scene's render pass (colour ``renderer.color_view``, depth
+        #: ``renderer.depth_view``), so that an overlay draws into the frame without a pass of its own.
         self.overlays: list[Callable[..., None]] = []
 
     @property

@@ -737,3 +737,27 @@ def test_removing_a_system_that_is_not_there_names_the_scene():
     scene = Scene("level")
     with pytest.raises(ValueError, match="scene 'level' has no system .* to remove"):
         scene.remove_system(System([TransformComponent]))
+
+
+def test_a_gui_only_system_costs_no_update_but_still_steps_once_when_asked() -> None:
+    """``updates_each_frame = False`` (the editor's panels): ``update`` skips the system; ``run_system`` runs it."""
+    calls: list[str] = []
+
+    class GuiOnly(System):
+        updates_each_frame = False
+
+        def on_update_system(self, ts: float) -> None:
+            calls.append("gui-only")
+
+    class Every(System):
+        def on_update_system(self, ts: float) -> None:
+            calls.append("every")
+
+    scene = Scene("gui")
+    gui_only = scene.add_system(GuiOnly())
+    scene.add_system(Every())
+    scene.update(0.1)
+    scene.update(0.1)
+    assert calls == ["every", "every"]
+    scene.run_system(gui_only, 0.1)
+    assert calls[-1] == "gui-only"

@@ -199,9 +199,9 @@ class WebGPURenderer(Renderer):
             self._draw_batch(rpass, material.shader, mesh, attributes, batch)
         if sky is not None:
             draw_sky()
+        for overlay in self.overlays:  # last, in the same pass: no second pass over the frame
+            overlay(self, rpass)
         rpass.end()
-        for overlay in self.overlays:
-            overlay(self, encoder)
         if surface_texture is not None and not direct:
             self._present.draw(encoder, self.color_view, surface_texture.create_view())
         queue.submit([encoder.finish()])
