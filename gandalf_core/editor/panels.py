@@ -40,7 +40,7 @@ class StatsPanelSystem(PanelSystem):
         imgui.text(f"frame     {1000.0 * seconds:8.3f} ms")
         if app.window is not None:
             imgui.text(f"editor    {1000.0 * editor.gui_seconds:8.3f} ms")
-        imgui.text(f"draws     {renderer.stats['draw_calls']:8d}")
+        imgui.text(f"draws     {renderer.stats['draw_calls'] + editor.viewport.draw_calls:8d}")  # + the viewport's
         imgui.text(f"entities  {editor._entity_count:8d}")
         imgui.text(f"backend   {renderer.backend:>8}")
 

@@ -51,19 +51,22 @@ class ViewportPanelSystem(PanelSystem):
         self.wanted: tuple[int, int] | None = None
         self.operation = "translate"
         self.mode = "local"
+        #: Draw calls of the viewport's render this frame (the stats panel adds them to the frame's).
+        self.draw_calls = 0
 
     # --- the frame: render into the target ---------------------------------------------------------------
     # --8<-- [start:viewport_render]
     def on_update_system(self, ts: float) -> None:
-        shown = any(p.kind == "viewport" and p.visible for (p,) in self.components)
-        if self.wanted is None or not shown:
-            return
         from ..render import RenderSystem
         from ..render.offscreen import OffscreenTarget
 
         scene = self.scene
         renderers = [s for s in scene.systems if isinstance(s, RenderSystem)]
-        if not renderers:
+        shown = self.wanted is not None and any(p.kind == "viewport" and p.visible for (p,) in self.components)
+        # The panels cover the frame: while the viewport shows the scene, the frame itself is only cleared.
+        self._draw_scene_in_frame(renderers, not shown)
+        self.draw_calls = 0
+        if not shown or not renderers:
             return
         renderer = self.editor.app.renderer
         if self.target is None:
@@ -72,6 +75,7 @@ class ViewportPanelSystem(PanelSystem):
             self._forget_texture()
         with self.target.drawing():
             renderer.render(renderers[0].frame_data(ts), scene.assets)
+        self.draw_calls = renderer.stats["draw_calls"]  # the frame's own render counts from 0 again
     # --8<-- [end:viewport_render]
 
     def _forget_texture(self) -> None:
@@ -80,7 +84,16 @@ class ViewportPanelSystem(PanelSystem):
             self.editor.invalidate_gui()  # the last GUI frame shows the old texture: lay it out again
         self._texture_ref = self._texture_key = None
 
+    @staticmethod
+    def _draw_scene_in_frame(renderers: list[Any], draw: bool) -> None:
+        for system in renderers:
+            system.draws_scene = draw
+
     def on_destroy_system(self) -> None:
+        from ..render import RenderSystem
+
+        if self.scene is not None:
+            self._draw_scene_in_frame([s for s in self.scene.systems if isinstance(s, RenderSystem)], True)
         self._forget_texture()
         if self.target is not None:
             self.target.release()

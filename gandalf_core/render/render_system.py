@@ -50,6 +50,10 @@ class RenderSystem(System):
         self._instances: np.ndarray | None = None
         self._clear_key: bytes = b""
         self._clear_linear = np.zeros(4)
+        #: False while another view shows the scene and covers this frame (the editor's viewport panel): the
+        #: frame is then only cleared, and its overlays drawn, instead of drawing the scene a second time.
+        self.draws_scene = True
+        self._blank_frame = pack_frame(np.eye(4), np.eye(4), np.zeros(3), 0.0, 0.0)
 
     def on_create_system(self) -> None:
         scene = self.scene
@@ -188,7 +192,13 @@ class RenderSystem(System):
         return (self.version, self.scene.store(TransformComponent).layout_version)
 
     def on_update_system(self, ts: float) -> None:
-        self.renderer.render(self.frame_data(ts), self.scene.assets)
+        data = self.frame_data(ts) if self.draws_scene else self.cleared_frame()
+        self.renderer.render(data, self.scene.assets)
+
+    def cleared_frame(self) -> FrameData:
+        """A frame of the clear colour alone: no batches, lights, sky or shadows (see :attr:`draws_scene`)."""
+        return FrameData(clear_color=self.clear_color(), frame=self._blank_frame, lights=_NO_LIGHTS, batches=[],
+                         instances=None)
 
     def frame_data(self, ts: float) -> FrameData:
         """Collect this frame's uniforms and instance data."""

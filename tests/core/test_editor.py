@@ -225,7 +225,29 @@ def test_editor_entities_are_hidden_and_not_drawn(app) -> None:
     assert listed == user
     render = app.scene.get_system(RenderSystem)
     assert not set(panels) & set(render.entities)
+    middle_free(editor)  # the frame draws the scene itself again (the viewport does while it is shown)
+    app.run(frames=1)
     assert app.renderer.stats["draw_calls"] == 1  # the three cubes, one instanced draw
+
+
+def test_while_the_viewport_shows_the_scene_the_frame_under_the_panels_is_only_cleared(app) -> None:
+    """The default layout covers the frame with panels: the scene is drawn once, into the viewport."""
+    render = app.scene.get_system(RenderSystem)
+    editor = enable_editor(app)
+    app.run(frames=3)
+    assert not render.draws_scene and app.renderer.stats["draw_calls"] == 0
+    assert editor.viewport.draw_calls == 1  # the stats panel counts the viewport's draws with the frame's
+    picture = editor.viewport.target.read_pixels()
+    assert len(np.unique(picture.reshape(-1, 4), axis=0)) > 2, "the viewport still shows the scene"
+    editor.show_panel("viewport", False)
+    app.run(frames=1)
+    assert render.draws_scene and app.renderer.stats["draw_calls"] == 1
+    editor.show_panel("viewport", True)
+    app.run(frames=3)
+    assert not render.draws_scene
+    disable_editor(app)
+    app.run(frames=1)
+    assert render.draws_scene and app.renderer.stats["draw_calls"] == 1
 
 
 def test_hidden_panel_draws_nothing(app) -> None:
