@@ -2,23 +2,25 @@
 
 The scene is ``bench_scenes.py``'s scene5 (100 lit rotating cubes) with a cube selected (the inspector shows its
 fields). Modes: ``off`` (no editor); ``five`` (the menu bar and five panels: hierarchy, inspector, systems, stats,
-console; no viewport); ``all`` (every panel, the viewport included: it renders the scene a second time, into its
-texture, with a gizmo). The modes run in the same process, alternating in rounds so that drift of a shared machine
-hits all alike; every frame ends with a 1-pixel read-back so the GPU has finished it. One JSON line per backend:
-milliseconds per frame of each mode, the milliseconds the editor adds and its share of the frame
-(``cost_percent = added / frame with the editor``; the paper's figure is 20-25 %), and the share of frames that ran
-the panels (``panel_frames_percent``: with no input the panels run every 1/20 s and the other frames composite
-the cached GUI layer; see the editor page).
+console; no viewport); ``all`` (every panel, the viewport included: it renders the scene into its texture, with a
+gizmo, and the frame under the panels is only cleared). The modes run in the same process in many short rounds,
+each mode first, second and third in turn, so that the drift of a shared machine and of the GPU's clocks hits all
+alike; every frame ends with a 1-pixel read-back so the GPU has finished it. One JSON line per backend:
+milliseconds per frame of each mode (the median frame, over every round, and the mean frame, which also holds the
+rare long frames of a shared machine), the milliseconds the editor adds and its share of the frame
+(``cost_percent = added / frame with the editor``; the paper's figure is 20-25 %), and the share of frames that ran the panels (``panel_frames_percent``: with no input the panels run
+every 1/20 s and the other frames composite the cached GUI layer; see the editor page).
 
 Run by hand, never in CI::
 
-    python benchmarks/bench_editor.py                        # both backends, 1280x720, 300 frames
+    python benchmarks/bench_editor.py                        # both backends, 1280x720, 21 rounds x 100 frames
     python benchmarks/bench_editor.py --size 640x480 --frames 200 --backends opengl
 """
 
 from __future__ import annotations
 
 import argparse
+import gc
 import json
 import statistics
 import sys
@@ -49,14 +51,17 @@ def make_app(backend: str, width: int, height: int) -> Any:
     return app
 
 
-def timed_frames(app: Any, frames: int) -> float:
-    """Seconds for ``frames`` frames, each waited for with a 1-pixel read-back."""
+def timed_frames(app: Any, frames: int) -> list[float]:
+    """Seconds of each of ``frames`` frames, each waited for with a 1-pixel read-back."""
     r = app.renderer
-    start = time.perf_counter()
+    seconds = []
+    clock = time.perf_counter
     for _ in range(frames):
+        start = clock()
         app.step()
         r.read_pixel(r.width // 2, r.height // 2)
-    return time.perf_counter() - start
+        seconds.append(clock() - start)
+    return seconds
 
 
 #: The panels of the "five" mode (the menu bar is on in every mode).
@@ -70,30 +75,34 @@ def measure(backend: str, width: int, height: int, frames: int, rounds: int) -> 
     app = make_app(backend, width, height)
     app.run(frames=20)  # build pipelines and resources before timing
     cube = next(e for e, _ in app.scene.view(MeshComponent))
-    times: dict[str, list[float]] = {"off": [], "five": [], "all": []}
+    modes = ("off", "five", "all")
+    times: dict[str, list[float]] = {mode: [] for mode in modes}
     panel_frames: dict[str, list[float]] = {"five": [], "all": []}  # share of frames that ran the panels
-    for _ in range(rounds):
-        times["off"].append(timed_frames(app, frames))
-        for mode in ("five", "all"):
-            editor = enable_editor(app)
-            editor.selected = cube
-            for kind in PANEL_KINDS:
-                editor.show_panel(kind, mode == "all" or kind in FIVE or kind == "menu")
-            app.run(frames=10)  # the GUI's font atlas, buffers and the viewport's target, before timing
-            ran = editor.gui_frames
-            times[mode].append(timed_frames(app, frames))
-            panel_frames[mode].append((editor.gui_frames - ran) / frames)
-            disable_editor(app)
+    for round_ in range(rounds):
+        for mode in modes[round_ % 3:] + modes[:round_ % 3]:  # each mode first, second and third in turn
+            editor = None
+            if mode != "off":
+                editor = enable_editor(app)
+                editor.selected = cube
+                for kind in PANEL_KINDS:
+                    editor.show_panel(kind, mode == "all" or kind in FIVE or kind == "menu")
+                app.run(frames=10)  # the GUI's font atlas, buffers and the viewport's target, before timing
+                ran = editor.gui_frames
+            gc.collect()  # what the last mode left behind is not collected inside a timed round
+            times[mode].extend(timed_frames(app, frames))
+            if editor is not None:
+                panel_frames[mode].append((editor.gui_frames - ran) / frames)
+                disable_editor(app)
     result: dict[str, Any] = {"backend": backend, "renderer": renderer_name(app), "size": f"{width}x{height}",
-                              "frames": frames}
+                              "frames": frames, "rounds": rounds}
     for mode, seconds in times.items():
-        best = min(seconds)  # the least disturbed round
-        result[f"ms_{mode}"] = round(1000.0 * best / frames, 3)
-        result[f"ms_{mode}_median"] = round(1000.0 * statistics.median(seconds) / frames, 3)
+        result[f"ms_{mode}"] = round(1000.0 * statistics.median(seconds), 3)
+        result[f"ms_{mode}_mean"] = round(1000.0 * statistics.fmean(seconds), 3)
     for mode in ("five", "all"):
-        added = result[f"ms_{mode}"] - result["ms_off"]
-        result[f"added_ms_{mode}"] = round(added, 3)
-        result[f"cost_percent_{mode}"] = round(100.0 * added / result[f"ms_{mode}"], 1)
+        for stat in ("", "_mean"):
+            added = result[f"ms_{mode}{stat}"] - result[f"ms_off{stat}"]
+            result[f"added_ms_{mode}{stat}"] = round(added, 3)
+            result[f"cost_percent_{mode}{stat}"] = round(100.0 * added / result[f"ms_{mode}{stat}"], 1)
         result[f"panel_frames_percent_{mode}"] = round(100.0 * statistics.mean(panel_frames[mode]), 1)
     app.close()
     return result
@@ -103,8 +112,8 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--backends", default="opengl,webgpu")
     parser.add_argument("--size", default="1280x720", help="WIDTHxHEIGHT")
-    parser.add_argument("--frames", type=int, default=300)
-    parser.add_argument("--rounds", type=int, default=7)
+    parser.add_argument("--frames", type=int, default=100, help="frames per mode and round")
+    parser.add_argument("--rounds", type=int, default=21)
     args = parser.parse_args(argv)
     width, height = (int(v) for v in args.size.lower().split("x"))
     for backend in args.backends.split(","):
