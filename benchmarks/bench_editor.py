@@ -6,10 +6,12 @@ console; no viewport); ``all`` (every panel, the viewport included: it renders t
 gizmo, and the frame under the panels is only cleared). The modes run in the same process in many short rounds,
 each mode first, second and third in turn, so that the drift of a shared machine and of the GPU's clocks hits all
 alike; every frame ends with a 1-pixel read-back so the GPU has finished it. One JSON line per backend:
-milliseconds per frame of each mode (the median frame, over every round, and the mean frame, which also holds the
-rare long frames of a shared machine), the milliseconds the editor adds and its share of the frame
-(``cost_percent = added / frame with the editor``; the paper's figure is 20-25 %), and the share of frames that ran the panels (``panel_frames_percent``: with no input the panels run
-every 1/20 s and the other frames composite the cached GUI layer; see the editor page).
+milliseconds per frame of each mode: the median frame over every round (with no input, a frame that composites the
+cached GUI layer) and the mean frame (which also carries the few frames that run the panels, every 1/20 s, and
+a shared machine's rare long frames); the milliseconds the editor adds and its share of the frame
+(``cost_percent = added / frame with the editor``, from the medians; ``cost_percent_five_mean`` from the means;
+the paper's figure is 20-25 %); and the share of frames that ran the panels (``panel_frames_percent``; see the
+editor page).
 
 Run by hand, never in CI::
 

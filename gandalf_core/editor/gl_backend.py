@@ -11,14 +11,13 @@ off. See :mod:`gandalf_core.editor.gui_layer` for the layer and its holes for li
 
 from __future__ import annotations
 
-import ctypes
 from typing import Any
 
 import moderngl
 import numpy as np
 from imgui_bundle import imgui
 
-from .gui_layer import clip_box, command_vertices, gui_rects, rect_vertices
+from .gui_layer import clip_box, command_vertices, gui_rects, merged_draw_lists, rect_vertices
 
 GL_FRAMEBUFFER_SRGB = 0x8DB9
 
@@ -146,7 +145,7 @@ class GLGuiRenderer:
             self._ibo = self.ctx.buffer(reserve=1 << max(16, (index_bytes - 1).bit_length()), dynamic=True)
             self._vao = self.ctx.vertex_array(
                 self.program, [(self._vbo, "2f 2f 4f1", "in_position", "in_uv", "in_color")],
-                self._ibo, index_element_size=imgui.INDEX_SIZE,
+                self._ibo, index_element_size=4,  # merged_draw_lists' uint32 indices
             )
         return self._vao
 
@@ -187,13 +186,14 @@ class GLGuiRenderer:
         live_bytes: list[bytes] = []
         first = 0
         bound: Any = None  # the texture bound last: bound again only when it changes
+        vertex_bytes, index_array, starts = merged_draw_lists(draw_data)
+        vao = self._buffers(max(len(vertex_bytes), 1), max(index_array.nbytes, 1))
+        self._vbo.orphan()  # fresh storage: the driver need not wait for the GPU to finish with the old
+        self._vbo.write(vertex_bytes)
+        self._ibo.orphan()
+        self._ibo.write(index_array.tobytes())
         try:
-            for commands in draw_data.cmd_lists:
-                vtx_bytes = commands.vtx_buffer.size() * imgui.VERTEX_SIZE
-                idx_bytes = commands.idx_buffer.size() * imgui.INDEX_SIZE
-                vao = self._buffers(vtx_bytes, idx_bytes)
-                self._vbo.write(ctypes.string_at(commands.vtx_buffer.data_address(), vtx_bytes))
-                self._ibo.write(ctypes.string_at(commands.idx_buffer.data_address(), idx_bytes))
+            for commands, start in zip(draw_data.cmd_lists, starts):
                 for command in commands.cmd_buffer:
                     box = clip_box(command, width, height)
                     if box is None:
@@ -213,7 +213,7 @@ class GLGuiRenderer:
                     if texture is not bound:
                         texture.use(location=0)
                         bound = texture
-                    vao.render(moderngl.TRIANGLES, vertices=command.elem_count, first=command.idx_offset)
+                    vao.render(moderngl.TRIANGLES, vertices=command.elem_count, first=start + command.idx_offset)
                     if hole:
                         self.program["u_hole"].value = False
                         ctx.enable(moderngl.BLEND)

@@ -93,6 +93,30 @@ def clip_box(command: Any, width: int, height: int) -> tuple[int, int, int, int]
     return (x0, y0, x1, y1) if x1 > x0 and y1 > y0 else None
 
 
+def merged_draw_lists(draw_data: Any) -> tuple[bytes, np.ndarray, list[int]]:
+    """Every draw list's vertices in one buffer and its indices in one uint32 array, rebased onto it (a command's
+    ``vtx_offset`` folded in), and where each list's indices start: one upload per GUI frame instead of one per
+    window (writing a buffer the GPU may still be reading can make the driver wait)."""
+    vertices: list[bytes] = []
+    indices: list[np.ndarray] = []
+    starts: list[int] = []
+    base = first = 0
+    for commands in draw_data.cmd_lists:
+        count, index_count = commands.vtx_buffer.size(), commands.idx_buffer.size()
+        vertices.append(ctypes.string_at(commands.vtx_buffer.data_address(), count * imgui.VERTEX_SIZE))
+        raw = ctypes.string_at(commands.idx_buffer.data_address(), index_count * imgui.INDEX_SIZE)
+        rebased = np.frombuffer(raw, dtype=_INDEX).astype(np.uint32) + np.uint32(base)
+        for command in commands.cmd_buffer:
+            if command.vtx_offset:
+                rebased[command.idx_offset:command.idx_offset + command.elem_count] += np.uint32(command.vtx_offset)
+        indices.append(rebased)
+        starts.append(first)
+        base += count
+        first += index_count
+    merged = np.concatenate(indices) if indices else np.zeros(0, dtype=np.uint32)
+    return b"".join(vertices), merged, starts
+
+
 def command_vertices(commands: Any, command: Any) -> bytes:
     """The vertices of one draw command as a plain triangle list (ImGui's vertex layout), for drawing it again."""
     indices = np.frombuffer(ctypes.string_at(commands.idx_buffer.data_address() + command.idx_offset * imgui.INDEX_SIZE,
