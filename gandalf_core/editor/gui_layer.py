@@ -27,20 +27,22 @@ _INDEX = np.uint32 if imgui.INDEX_SIZE == 4 else np.uint16
 def gui_rects(draw_data: Any, width: int, height: int) -> list[tuple[int, int, int, int]]:
     """(x, y, w, h) pixel rectangles that hold the GUI: per draw list (a window), the box around its vertices,
     inside its commands' clip rectangles. Boxes inside another box are left out (drawn once)."""
+    lists = [commands for commands in draw_data.cmd_lists if commands.vtx_buffer.size() > 0]
+    if not lists:
+        return []
+    counts = [commands.vtx_buffer.size() for commands in lists]
+    raw = b"".join(ctypes.string_at(commands.vtx_buffer.data_address(), count * imgui.VERTEX_SIZE)
+                   for commands, count in zip(lists, counts))
+    xy = np.frombuffer(raw, dtype=np.float32).reshape(-1, imgui.VERTEX_SIZE // 4)[:, :2]
+    starts = np.cumsum([0, *counts[:-1]])
+    lo, hi = np.minimum.reduceat(xy, starts, axis=0), np.maximum.reduceat(xy, starts, axis=0)  # per list, at once
     boxes: list[tuple[int, int, int, int]] = []
-    for commands in draw_data.cmd_lists:
-        count = commands.vtx_buffer.size()
-        if count == 0:
+    for commands, (vx0, vy0), (vx1, vy1) in zip(lists, lo.tolist(), hi.tolist()):
+        clips = [tuple(command.clip_rect) for command in commands.cmd_buffer]
+        if not clips:
             continue
-        x0, y0, x1, y1 = float(width), float(height), 0.0, 0.0
-        for command in commands.cmd_buffer:
-            cx0, cy0, cx1, cy1 = command.clip_rect
-            x0, y0, x1, y1 = min(x0, cx0), min(y0, cy0), max(x1, cx1), max(y1, cy1)
-        raw = ctypes.string_at(commands.vtx_buffer.data_address(), count * imgui.VERTEX_SIZE)
-        xy = np.frombuffer(raw, dtype=np.float32).reshape(count, imgui.VERTEX_SIZE // 4)[:, :2]
-        lo, hi = xy.min(axis=0), xy.max(axis=0)
-        x0, y0 = max(x0, float(lo[0])), max(y0, float(lo[1]))
-        x1, y1 = min(x1, float(hi[0])), min(y1, float(hi[1]))
+        x0, y0 = max(min(c[0] for c in clips), vx0), max(min(c[1] for c in clips), vy0)
+        x1, y1 = min(max(c[2] for c in clips), vx1), min(max(c[3] for c in clips), vy1)
         ix0, iy0 = max(int(x0), 0), max(int(y0), 0)
         ix1, iy1 = min(int(x1 + 0.999) + 1, width), min(int(y1 + 0.999) + 1, height)  # + 1: anti-aliased edges
         if ix1 > ix0 and iy1 > iy0:
@@ -54,7 +56,8 @@ def _area(b: tuple[int, int, int, int]) -> int:
 
 def merge_boxes(boxes: list[tuple[int, int, int, int]], slack: float = 0.05) -> list[tuple[int, int, int, int]]:
     """Fewer boxes covering the same pixels: two boxes become their union when that adds at most ``slack`` of it
-    (panels side by side, a box inside another). Each box left costs a copy and two draws per frame."""
+    (panels side by side, a box inside another). Each box left is two more triangles per frame; boxes that still
+    overlap composite their common pixels twice (the same bytes where the GUI is opaque)."""
     boxes = list(dict.fromkeys(boxes))
     merged = True
     while merged and len(boxes) > 1:
