@@ -186,6 +186,7 @@ class GLGuiRenderer:
         live_bytes: list[bytes] = []
         first = 0
         bound: Any = None  # the texture bound last: bound again only when it changes
+        scissor: tuple[int, int, int, int] | None = None  # likewise the scissor box
         vertex_bytes, index_array, starts = merged_draw_lists(draw_data)
         vao = self._buffers(max(len(vertex_bytes), 1), max(index_array.nbytes, 1))
         self._vbo.orphan()  # fresh storage: the driver need not wait for the GPU to finish with the old
@@ -198,8 +199,9 @@ class GLGuiRenderer:
                     box = clip_box(command, width, height)
                     if box is None:
                         continue
-                    x0, y0, x1, y1 = box
-                    fbo.scissor = (x0, height - y1, x1 - x0, y1 - y0)  # GL's origin is bottom-left
+                    if box != scissor:  # most commands of a window share its clip rectangle
+                        x0, y0, x1, y1 = scissor = box
+                        fbo.scissor = (x0, height - y1, x1 - x0, y1 - y0)  # GL's origin is bottom-left
                     tex_id = command.tex_ref.get_tex_id()
                     texture = self.textures.get(tex_id)
                     hole = texture is None
