@@ -319,27 +319,48 @@ def test_instance_rows_read_as_a_slice_or_gathered_agree():
     assert pack_instances(world, slice(10, 40)).dtype == np.float32
 
 
-def test_overlays_draw_over_the_finished_frame(backend):
-    """The hook a GUI layer uses: called once per frame after the scene, in both backends."""
-    calls = []
+RED_WGSL = """
+@vertex fn vs_main(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
+    let p = vec2<f32>(f32((i << 1u) & 2u), f32(i & 2u));
+    return vec4<f32>(p * 2.0 - 1.0, 0.0, 1.0);
+}
+@fragment fn fs_main() -> @location(0) vec4<f32> { return vec4<f32>(1.0, 0.0, 0.0, 1.0); }
+"""
 
-    def overlay(renderer, *encoder):
+
+def test_overlays_draw_over_the_finished_frame(backend):
+    """The hook a GUI layer uses: called once per frame after the scene (WebGPU: last in the scene's own pass, whose
+    colour and depth formats its pipelines use), in both backends."""
+    calls = []
+    pipeline = []
+
+    def overlay(renderer, *render_pass):
         calls.append(renderer.backend)
         if renderer.backend == "opengl":
             renderer.framebuffer.clear(1.0, 0.0, 0.0, 1.0, viewport=(0, 0, 4, 4))
-        else:
-            (enc,) = encoder
-            rpass = enc.begin_render_pass(color_attachments=[{
-                "view": renderer.color_view, "load_op": "clear", "clear_value": (1, 0, 0, 1), "store_op": "store"}])
-            rpass.end()
+            return
+        (rpass,) = render_pass
+        if not pipeline:
+            module = renderer.device.create_shader_module(code=RED_WGSL)
+            pipeline.append(renderer.device.create_render_pipeline(
+                layout="auto", vertex={"module": module, "entry_point": "vs_main"},
+                fragment={"module": module, "entry_point": "fs_main",
+                          "targets": [{"format": renderer.color_view.texture.format}]},
+                primitive={"topology": "triangle-list"},
+                depth_stencil={"format": renderer.depth_view.texture.format, "depth_write_enabled": False,
+                               "depth_compare": "always"}))
+        rpass.set_pipeline(pipeline[0])
+        rpass.set_scissor_rect(0, renderer.height - 4, 4, 4)  # the bottom-left corner, as OpenGL's
+        rpass.draw(3)
 
     with make_app(backend) as app:
         app.add_scene(cubes_scene(3))
         app.renderer.overlays.append(overlay)
         app.run(frames=2)
         assert calls == [backend, backend]
-        # OpenGL cleared a corner (its origin is bottom-left), WebGPU the whole target.
-        assert np.array_equal(app.capture()[-1, 0], [255, 0, 0, 255])
+        picture = app.capture()
+        assert np.array_equal(picture[-1, 0], [255, 0, 0, 255])  # the corner the overlay drew
+        assert not np.array_equal(picture[-5, 0], [255, 0, 0, 255])  # and only that corner
 
 
 # --- blending, depth and material values: the same in both backends -------------------------------------
