@@ -66,7 +66,7 @@ vec3 srgb_to_linear(vec3 c) {
 }
 void main() {
     vec4 l = texelFetch(u_layer, ivec2(gl_FragCoord.xy), 0);  // premultiplied sRGB bytes and coverage
-    vec3 colour = l.a > 0.0 ? l.rgb / l.a : vec3(0.0);
+    vec3 colour = l.a > 0.0 ? min(l.rgb / l.a, vec3(1.0)) : vec3(0.0);  // 8-bit rims: <= 1
     f_color = vec4(srgb_to_linear(colour) * l.a, l.a);
 }
 """

@@ -44,7 +44,7 @@ fn vs_main(@location(0) position: vec2<f32>) -> @builtin(position) vec4<f32> {
 @fragment
 fn fs_main(@builtin(position) pos: vec4<f32>) -> @location(0) vec4<f32> {
     let l = textureLoad(layer, vec2<i32>(pos.xy), 0);
-    let colour = select(vec3<f32>(0.0), l.rgb / l.a, l.a > 0.0);
+    let colour = select(vec3<f32>(0.0), min(l.rgb / l.a, vec3<f32>(1.0)), l.a > 0.0);  // 8-bit rims: <= 1
     return vec4<f32>(srgb_to_linear(colour) * l.a, l.a);
 }
 """
