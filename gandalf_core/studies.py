@@ -1,6 +1,7 @@
 """What every error-against-run-time study shares: its run's metadata, matplotlib without a display, and its outputs.
 
-A study script measures its own cases; this module writes what it found the same way for all of them:
+A study script measures its own cases (timing its frames with :func:`frame_runs_ms` / :func:`frame_ms`); this
+module writes what it found the same way for all of them:
 ``DIR/<stem>.json`` (the result), ``DIR/<stem>.md`` (its table, included by the step's page) and ``DIR/<stem>.png``
 (its plot), then prints the table.
 """
@@ -9,6 +10,7 @@ from __future__ import annotations
 
 import json
 import platform
+import statistics
 import time
 from collections.abc import Callable
 from pathlib import Path
@@ -18,6 +20,24 @@ from typing import Any
 def run_info() -> dict[str, str]:
     """Where and when a study ran, for its JSON."""
     return {"host": platform.platform(), "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())}
+
+
+def frame_runs_ms(app: Any, frames: int, repeats: int) -> list[float]:
+    """Mean milliseconds per frame of each of ``repeats`` runs of ``frames`` frames of ``app``, every frame waited
+    for with a 1-pixel read-back (so the GPU's work is in the time)."""
+    runs = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        for _ in range(frames):
+            app.step()
+            app.renderer.read_pixel(0, 0)
+        runs.append(1000.0 * (time.perf_counter() - start) / frames)
+    return runs
+
+
+def frame_ms(app: Any, frames: int, repeats: int) -> float:
+    """The median of :func:`frame_runs_ms`: a study's frame time."""
+    return statistics.median(frame_runs_ms(app, frames, repeats))
 
 
 def pyplot() -> Any:

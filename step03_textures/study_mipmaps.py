@@ -26,13 +26,11 @@ Runs headless and prints progress.
 from __future__ import annotations
 
 import argparse
-import statistics
-import time
 from pathlib import Path
 
 import numpy as np
 
-from gandalf_core.studies import pyplot, run_info, write_study
+from gandalf_core.studies import frame_ms, pyplot, run_info, write_study
 
 STEM = "step03_study_mipmaps"
 SAMPLERS = {"nearest": ("nearest", False, 1), "linear": ("linear", False, 1), "nearest + mipmaps": ("nearest", True, 1),
@@ -133,14 +131,7 @@ def measure(backend: str, sampler: str, size: tuple[int, int], frames: int, repe
         app.add_scene(floor_scene(sampler))
         app.run(frames=2)
         picture = app.capture()
-        runs = []
-        for _ in range(repeats):
-            start = time.perf_counter()
-            for _ in range(frames):
-                app.step()
-                app.renderer.read_pixel(0, 0)
-            runs.append((time.perf_counter() - start) / frames)
-        return picture, 1000.0 * statistics.median(runs)
+        return picture, frame_ms(app, frames, repeats)
 
 
 def errors(picture: np.ndarray, expected: np.ndarray) -> dict:

@@ -28,13 +28,11 @@ from __future__ import annotations
 
 import argparse
 import math
-import statistics
-import time
 from pathlib import Path
 
 import numpy as np
 
-from gandalf_core.studies import pyplot, run_info, write_study
+from gandalf_core.studies import frame_ms, pyplot, run_info, write_study
 
 STEM = "step04_study_depth"
 #: (label, near, far, reverse_z)
@@ -136,14 +134,7 @@ class DepthRig:
         return False
 
     def frame_ms(self, frames: int, repeats: int) -> float:
-        runs = []
-        for _ in range(repeats):
-            start = time.perf_counter()
-            for _ in range(frames):
-                self.app.step()
-                self.app.renderer.read_pixel(0, 0)
-            runs.append((time.perf_counter() - start) / frames)
-        return 1000.0 * statistics.median(runs)
+        return frame_ms(self.app, frames, repeats)
 
     def close(self) -> None:
         self.app.close()

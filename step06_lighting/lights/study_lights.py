@@ -22,13 +22,11 @@ error of dropping the weakest lights) to ``--out``. Runs headless and prints pro
 from __future__ import annotations
 
 import argparse
-import statistics
-import time
 from pathlib import Path
 
 import numpy as np
 
-from gandalf_core.studies import pyplot, run_info, write_study
+from gandalf_core.studies import frame_ms, pyplot, run_info, write_study
 
 STEM = "step06_study_lights"
 COUNTS = (0, 1, 2, 4, 8, 16, 32, 64)
@@ -88,14 +86,7 @@ def measure(backend: str, count: int, lights: list[dict], size: tuple[int, int],
         app.add_scene(lights_scene(count, lights))
         app.run(frames=3)
         picture = app.capture()
-        runs = []
-        for _ in range(repeats):
-            start = time.perf_counter()
-            for _ in range(frames):
-                app.step()
-                app.renderer.read_pixel(0, 0)
-            runs.append((time.perf_counter() - start) / frames)
-        return picture, 1000.0 * statistics.median(runs)
+        return picture, frame_ms(app, frames, repeats)
 
 
 def picture_error(picture: np.ndarray, reference: np.ndarray) -> tuple[float, float]:

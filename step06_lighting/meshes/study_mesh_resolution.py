@@ -24,13 +24,11 @@ from __future__ import annotations
 
 import argparse
 import math
-import statistics
-import time
 from pathlib import Path
 
 import numpy as np
 
-from gandalf_core.studies import pyplot, run_info, write_study
+from gandalf_core.studies import frame_ms, pyplot, run_info, write_study
 
 STEM = "step06_study_mesh_resolution"
 SPHERES = ((6, 3), (8, 4), (12, 6), (16, 8), (24, 12), (32, 16), (64, 32), (128, 64), (256, 128))
@@ -126,14 +124,7 @@ def frame_time(backend: str, mesh, size: tuple[int, int], instances: int, frames
         app.add_scene(sphere_scene(mesh, instances))
         app.run(frames=3)
         app.renderer.read_pixel(0, 0)
-        runs = []
-        for _ in range(repeats):
-            start = time.perf_counter()
-            for _ in range(frames):
-                app.step()
-                app.renderer.read_pixel(0, 0)
-            runs.append((time.perf_counter() - start) / frames)
-        return 1000.0 * statistics.median(runs)
+        return frame_ms(app, frames, repeats)
 
 
 def run_study(backends, spheres, size, instances: int, frames: int, repeats: int) -> dict:

@@ -24,10 +24,11 @@ import argparse
 import json
 import platform
 import statistics
-import time
 from pathlib import Path
 
 import numpy as np
+
+from gandalf_core.studies import frame_runs_ms
 
 #: (segments, rings) of the UV spheres: 960, 3968, 16128, 65024 and 199808 triangles.
 SPHERES = ((32, 16), (64, 32), (128, 64), (256, 128), (448, 224))
@@ -85,14 +86,8 @@ def measure(route_name: str, impl, mesh, size: tuple[int, int], frames: int, rep
                     explode_component.speed = 1.0
         app.run(frames=3)  # warm-up
         app.renderer.read_pixel(0, 0)
-        runs = []
-        for _ in range(repeats):
-            start = time.perf_counter()
-            for _ in range(frames):
-                app.step()
-                app.renderer.read_pixel(0, 0)
-            runs.append((time.perf_counter() - start) / frames)
-        return {"frame_ms": 1000.0 * statistics.median(runs), "runs_ms": [1000.0 * r for r in runs],
+        runs = frame_runs_ms(app, frames, repeats)
+        return {"frame_ms": statistics.median(runs), "runs_ms": runs,
                 "picture": picture, "view_projection": projection @ view}
 
 

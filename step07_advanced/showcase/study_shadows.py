@@ -31,14 +31,12 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-import statistics
-import time
 from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
 
-from gandalf_core.studies import pyplot, run_info, write_study
+from gandalf_core.studies import frame_ms, pyplot, run_info, write_study
 
 STEM = "step07_study_shadows"
 SHADER_DIR = Path(__file__).resolve().parent / "shaders"
@@ -151,14 +149,7 @@ def measure(backend: str, case: dict, size: tuple[int, int], frames: int, repeat
         app.add_scene(shadow_scene(case["pcf_radius"], case["bias"]))
         app.run(frames=2)
         picture = app.capture()
-        runs = []
-        for _ in range(repeats):
-            start = time.perf_counter()
-            for _ in range(frames):
-                app.step()
-                app.renderer.read_pixel(0, 0)
-            runs.append((time.perf_counter() - start) / frames)
-        return picture, 1000.0 * statistics.median(runs)
+        return picture, frame_ms(app, frames, repeats)
 
 
 def cases(sweeps: dict) -> list[dict]:
