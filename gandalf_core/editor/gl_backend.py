@@ -231,25 +231,25 @@ class GLGuiRenderer:
 
     def _write_rects(self, data: bytes) -> None:
         self._rect_vertices = len(data) // 8
-        if not data:
-            return
-        if self._rect_vbo is None or self._rect_vbo.size < len(data):
-            if self._rect_vbo is not None:
-                self._rect_vao.release()
-                self._rect_vbo.release()
-            self._rect_vbo = self.ctx.buffer(reserve=max(len(data), 1024), dynamic=True)
-            self._rect_vao = self.ctx.vertex_array(self.composite_program, [(self._rect_vbo, "2f", "in_position")])
-        self._rect_vbo.write(data)
+        if data:
+            self._rect_vbo, self._rect_vao = self._upload(self._rect_vbo, self._rect_vao, data, self.composite_program,
+                                                          ("2f", "in_position"))
 
     def _write_live(self, data: bytes) -> None:
-        if self._live_vbo is None or self._live_vbo.size < len(data):
-            if self._live_vbo is not None:
-                self._live_vao.release()
-                self._live_vbo.release()
-            self._live_vbo = self.ctx.buffer(reserve=max(len(data), 4096), dynamic=True)
-            self._live_vao = self.ctx.vertex_array(
-                self.program, [(self._live_vbo, "2f 2f 4f1", "in_position", "in_uv", "in_color")])
-        self._live_vbo.write(data)
+        self._live_vbo, self._live_vao = self._upload(self._live_vbo, self._live_vao, data, self.program,
+                                                      ("2f 2f 4f1", "in_position", "in_uv", "in_color"))
+
+    def _upload(self, vbo: moderngl.Buffer | None, vao: moderngl.VertexArray | None, data: bytes,
+                program: moderngl.Program, layout: tuple[str, ...]) -> tuple[moderngl.Buffer, moderngl.VertexArray]:
+        """``data`` written into ``vbo``, or into a new buffer (and vertex array over it) when it does not fit."""
+        if vbo is None or vbo.size < len(data):
+            if vbo is not None:
+                vao.release()
+                vbo.release()
+            vbo = self.ctx.buffer(reserve=max(len(data), 4096), dynamic=True)
+            vao = self.ctx.vertex_array(program, [(vbo, *layout)])
+        vbo.write(data)
+        return vbo, vao
 
     # --- every frame: the layer over the frame -------------------------------------------------------
     def composite(self, fbo: moderngl.Framebuffer) -> None:

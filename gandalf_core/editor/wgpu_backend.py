@@ -237,24 +237,22 @@ class WGPUGuiRenderer:
         self.rects = gui_rects(draw_data, width, height)
         self._write_rects(rect_vertices(self.rects, width, height))
         if live_bytes:
-            data = b"".join(live_bytes)
-            if self._live_buffer is None or self._live_buffer.size < len(data):
-                if self._live_buffer is not None:
-                    self._live_buffer.destroy()
-                self._live_buffer = self.device.create_buffer(
-                    size=max(len(data), 4096), usage=wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.COPY_DST)
-            self.device.queue.write_buffer(self._live_buffer, 0, data)
+            self._live_buffer = self._upload(self._live_buffer, b"".join(live_bytes))
 
     def _write_rects(self, data: bytes) -> None:
         self._rect_vertices = len(data) // 8
-        if not data:
-            return
-        if self._rect_buffer is None or self._rect_buffer.size < len(data):
-            if self._rect_buffer is not None:
-                self._rect_buffer.destroy()
-            self._rect_buffer = self.device.create_buffer(
-                size=max(len(data), 1024), usage=wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.COPY_DST)
-        self.device.queue.write_buffer(self._rect_buffer, 0, data)
+        if data:
+            self._rect_buffer = self._upload(self._rect_buffer, data)
+
+    def _upload(self, buffer: Any, data: bytes) -> Any:
+        """``data`` written into the vertex buffer ``buffer``, or into a new one when it does not fit."""
+        if buffer is None or buffer.size < len(data):
+            if buffer is not None:
+                buffer.destroy()
+            buffer = self.device.create_buffer(
+                size=max(len(data), 4096), usage=wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.COPY_DST)
+        self.device.queue.write_buffer(buffer, 0, data)
+        return buffer
 
     # --- every frame: the layer over the frame -------------------------------------------------------
     def composite(self, render_pass: Any, width: int, height: int) -> None:
