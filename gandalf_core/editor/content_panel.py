@@ -11,8 +11,7 @@ from __future__ import annotations
 from imgui_bundle import imgui
 
 from .components import EditorPanelComponent
-from .inspector_panel import TEXTURE_PAYLOAD
-from .panel_base import PanelSystem
+from .panel_base import TEXTURE_PAYLOAD, PanelSystem
 
 MESH_PAYLOAD = "GANDALF_MESH"
 
@@ -47,12 +46,7 @@ class ContentPanelSystem(PanelSystem):
                 data = assets.materials[name]
                 imgui.selectable(f"{name}  ({data.shader})", False)
                 self.remember(f"content/material/{name}")
-                if imgui.begin_drag_drop_target():
-                    payload = imgui.accept_drag_drop_payload_py_id(TEXTURE_PAYLOAD)
-                    if payload is not None:
-                        _kind, texture = editor.payload(payload.data_id)
-                        self.act(editor.set_material_texture, name, texture, 0)
-                    imgui.end_drag_drop_target()
+                self.texture_drop_target(name, 0)
             imgui.tree_pop()
         shaders = editor.app.renderer.shaders
         if imgui.tree_node_ex(f"Shaders ({len(shaders)})", imgui.TreeNodeFlags_.default_open):

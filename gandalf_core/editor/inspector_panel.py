@@ -22,8 +22,6 @@ from .entities import display_name
 from .field_specs import FieldSpec, addable_components, field_specs
 from .panel_base import PanelSystem
 
-TEXTURE_PAYLOAD = "GANDALF_TEXTURE"
-
 
 def _edited(current: np.ndarray, widget: Any) -> np.ndarray:
     """The widget's values where the user changed them, the float64 values elsewhere (ImGui works in float32,
@@ -165,10 +163,5 @@ class InspectorPanelSystem(PanelSystem):
         for slot, texture in enumerate(data.textures if data is not None else ()):
             imgui.selectable(f"texture {slot}: {texture}##tex{slot}", False)
             self.remember(f"inspector/texture/{slot}")
-            if imgui.begin_drag_drop_target():
-                payload = imgui.accept_drag_drop_payload_py_id(TEXTURE_PAYLOAD)
-                if payload is not None:
-                    _kind, dropped = editor.payload(payload.data_id)
-                    self.act(editor.set_material_texture, name, dropped, slot)
-                imgui.end_drag_drop_target()
+            self.texture_drop_target(name, slot)
 

@@ -11,7 +11,7 @@ import uuid
 from imgui_bundle import imgui
 
 from .components import PANEL_KINDS, EditorPanelComponent
-from .panel_base import ERROR_COLOR, PanelSystem, wrapped
+from .panel_base import ERROR_COLOR, PanelSystem, record_layout, wrapped
 
 
 class MenuBarSystem(PanelSystem):
@@ -30,9 +30,7 @@ class MenuBarSystem(PanelSystem):
         try:
             self.draw(panel)
         finally:
-            pos, size = imgui.get_window_pos(), imgui.get_window_size()
-            panel.position, panel.size = (pos.x, pos.y), (size.x, size.y)
-            panel._shown = (panel.position, panel.size)
+            record_layout(panel)
             imgui.end_main_menu_bar()
         self._shortcuts()
         self._dialogs()

@@ -23,6 +23,8 @@ if TYPE_CHECKING:
 
 ERROR_COLOR = imgui.ImVec4(1.0, 0.45, 0.4, 1.0)
 WARNING_COLOR = imgui.ImVec4(1.0, 0.8, 0.35, 1.0)
+#: The drag-and-drop payload type of a texture dragged from the content browser.
+TEXTURE_PAYLOAD = "GANDALF_TEXTURE"
 
 
 def wrapped(text: str, color: Any = None) -> None:
@@ -32,6 +34,13 @@ def wrapped(text: str, color: Any = None) -> None:
     imgui.text_wrapped(text)
     if color is not None:
         imgui.pop_style_color()
+
+
+def record_layout(panel: EditorPanelComponent) -> None:
+    """Store the current ImGui window's position and size in ``panel`` (as shown: a program's change is new)."""
+    pos, size = imgui.get_window_pos(), imgui.get_window_size()
+    panel.position, panel.size = (pos.x, pos.y), (size.x, size.y)
+    panel._shown = (panel.position, panel.size)
 
 
 class PanelSystem(System):
@@ -59,9 +68,7 @@ class PanelSystem(System):
         try:
             self.draw(panel)
         finally:
-            pos, size = imgui.get_window_pos(), imgui.get_window_size()
-            panel.position, panel.size = (pos.x, pos.y), (size.x, size.y)
-            panel._shown = (panel.position, panel.size)
+            record_layout(panel)
             imgui.end()
 
     def draw(self, panel: EditorPanelComponent) -> None:
@@ -75,6 +82,16 @@ class PanelSystem(System):
         lo, hi = imgui.get_item_rect_min(), imgui.get_item_rect_max()
         right = hi.x if width is None else lo.x + width
         self.editor.item_rects[key] = (lo.x, lo.y, right, hi.y)
+
+    def texture_drop_target(self, material: str, slot: int) -> None:
+        """A texture dragged from the content browser and dropped on the last item goes into ``material``'s
+        texture ``slot`` (one undoable edit)."""
+        if imgui.begin_drag_drop_target():
+            payload = imgui.accept_drag_drop_payload_py_id(TEXTURE_PAYLOAD)
+            if payload is not None:
+                _kind, texture = self.editor.payload(payload.data_id)
+                self.act(self.editor.set_material_texture, material, texture, slot)
+            imgui.end_drag_drop_target()
 
     def act(self, action: Callable[..., Any], *args: Any, **kwargs: Any) -> Any:
         """Run an editor action; an error is logged to the console (whole) instead of raised."""
