@@ -14,6 +14,8 @@ from typing import Any
 
 import numpy as np
 
+from ..ecs.component import RowField
+
 
 class FieldError(TypeError, ValueError):
     """A component field set to a value of the wrong type or range (both a TypeError and a ValueError, so code
@@ -173,7 +175,7 @@ def as_floats(value: Any, shape: tuple[int, ...], *, uniform: bool = False) -> n
     return arr if np.isfinite(arr).all() else None
 
 
-class Vector(Field):
+class Vector(RowField, Field):
     """A float64 vector or matrix of a fixed shape, every entry finite: a field of a columnar component.
 
     While its component belongs to a scene the value lives in the scene's numpy column for the field (the
@@ -195,14 +197,6 @@ class Vector(Field):
         self.size = self.column_shape[0]
         dims = "x".join(map(str, self.column_shape))
         self.expected = expected or (f"{self.size} numbers" if self.flat else f"a {dims} array")
-
-    def __get__(self, obj: Any, objtype: type | None = None) -> Any:
-        if obj is None:
-            return self
-        store = obj._store
-        if store is None:
-            return obj._local[self.name]
-        return store.columns[self.name][obj._row]
 
     def __set__(self, obj: Any, value: Any) -> None:
         if self.flat:  # the per-entity teaching path: no numpy call beyond one tolist()
@@ -267,8 +261,4 @@ class Vector(Field):
 
     # The value goes into the column (or the component's local storage before it joins a scene), not __dict__.
     def _store_value(self, obj: Any, value: np.ndarray) -> None:
-        store = obj._store
-        if store is None:
-            obj._local[self.name] = value
-        else:
-            store.columns[self.name][obj._row] = value
+        self._store_row(obj, value)
