@@ -21,14 +21,13 @@ triangles, log-log) to ``--out``. Runs headless; prints progress.
 from __future__ import annotations
 
 import argparse
-import json
 import platform
 import statistics
 from pathlib import Path
 
 import numpy as np
 
-from gandalf_core.studies import frame_runs_ms
+from gandalf_core.studies import frame_runs_ms, pyplot, write_study
 
 #: (segments, rings) of the UV spheres: 960, 3968, 16128, 65024 and 199808 triangles.
 SPHERES = ((32, 16), (64, 32), (128, 64), (256, 128), (448, 224))
@@ -149,11 +148,7 @@ def format_table(rows: list[dict]) -> str:
 
 
 def plot(rows: list[dict], path: Path, title: str) -> Path:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.4, 4.2), dpi=100)
     for route in dict.fromkeys(r["route"] for r in rows):
         mine = [r for r in rows if r["route"] == route]
@@ -189,15 +184,10 @@ def main(argv: list[str] | None = None) -> int:
     print(f"explode study: routes {', '.join(routes)}; {frames} frames x {args.repeats} runs at {size[0]}x{size[1]}",
           flush=True)
     rows = run_study(routes, spheres, size, frames, args.repeats)
-    table = format_table(rows)
-    print(table)
-    args.out.mkdir(parents=True, exist_ok=True)
     meta = {"machine": platform.node(), "python": platform.python_version(), "size": list(size), "frames": frames,
             "repeats": args.repeats, "study_time_s": STUDY_TIME}
-    (args.out / "explode_study.json").write_text(json.dumps({"meta": meta, "rows": rows}, indent=2) + "\n")
-    (args.out / "explode_study.md").write_text(table)
-    plot(rows, args.out / "explode_study.png", f"Exploding spheres, {size[0]}x{size[1]}")
-    print(f"wrote {args.out / 'explode_study.json'}, .md and .png", flush=True)
+    write_study(args.out, "explode_study", {"meta": meta, "rows": rows}, format_table(rows),
+                lambda result, path: plot(result["rows"], path, f"Exploding spheres, {size[0]}x{size[1]}"))
     return 0
 
 
