@@ -53,7 +53,7 @@ class RenderSystem(System):
         #: False while another view shows the scene and covers this frame (the editor's viewport panel): the
         #: frame is then only cleared, and its overlays drawn, instead of drawing the scene a second time.
         self.draws_scene = True
-        self._blank_frame = pack_frame(np.eye(4), np.eye(4), np.zeros(3), 0.0, 0.0)
+        self._blank_frame: bytes | None = None  # the frame block of a cleared frame, made on first use
 
     def on_create_system(self) -> None:
         scene = self.scene
@@ -197,6 +197,8 @@ class RenderSystem(System):
 
     def cleared_frame(self) -> FrameData:
         """A frame of the clear colour alone: no batches, lights, sky or shadows (see :attr:`draws_scene`)."""
+        if self._blank_frame is None:
+            self._blank_frame = pack_frame(np.eye(4), np.eye(4), np.zeros(3), 0.0, 0.0)
         return FrameData(clear_color=self.clear_color(), frame=self._blank_frame, lights=_NO_LIGHTS, batches=[],
                          instances=None)
 
