@@ -11,7 +11,7 @@ cmd=${1:-tour}
 shift || true
 case "$cmd" in
     tour)
-        exec .venv/bin/python -m gandalf_core.tour "$@"
+        exec .venv/bin/python -m gandalf_tools.tour "$@"
         ;;
     test)
         if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null 2>&1; then

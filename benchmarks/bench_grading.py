@@ -2,7 +2,7 @@
 
 The submission is the reference solutions of every step (a complete one: every graded test runs to its end,
 which is the slow case), overlaid as each step's ``exercises`` through ``GANDALF_IMPL`` — exactly how the
-batch grader grades a student. Each configuration runs ``python -m gandalf_core.grading`` on all the steps'
+batch grader grades a student. Each configuration runs ``python -m gandalf_tools.grading`` on all the steps'
 tests in a fresh process and is timed wall-clock (the median of ``--repeat`` runs); the slowest tests and
 the time per step come from pytest's own durations.
 
@@ -57,7 +57,7 @@ def run(config: str, chosen: list[str], durations: int) -> dict:
         out = Path(tmp) / "grade.json"
         env = {**os.environ, "GANDALF_IMPL": os.pathsep.join(f"{s}={ROOT / s / 'solutions'}" for s in chosen)}
         env.update(ENVS.get(config, {}))
-        cmd = [sys.executable, "-m", "gandalf_core.grading", *[f"tests/{s}" for s in chosen], "--json", str(out)]
+        cmd = [sys.executable, "-m", "gandalf_tools.grading", *[f"tests/{s}" for s in chosen], "--json", str(out)]
         cmd += [*CONFIGS[config], "--durations=0", "--durations-min=0"]
         load = os.getloadavg()[0]
         before = resource.getrusage(resource.RUSAGE_CHILDREN)

@@ -18,8 +18,8 @@ __version__ = "0.1.0"
 
 # name -> module that defines it, imported on first access
 _LAZY = {"Application": ".app", "TransformSystem": ".systems"}
-_SUBPACKAGES = ("app", "components", "ecs", "editor", "grading", "math", "render", "resources", "systems",
-                "testing", "tour", "usd")
+_SUBPACKAGES = ("app", "components", "ecs", "editor", "math", "render", "resources", "systems",
+                "usd")
 
 
 def __getattr__(name: str) -> Any:

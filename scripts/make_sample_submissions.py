@@ -1,7 +1,7 @@
 """Make a sample class for the batch grader: ``--out DIR [--count 30] [--seed 0] [--steps step01 ...]``.
 
 Each student folder ``DIR/student_NN/`` holds a copy of every step's ``exercises/`` folder (the layout
-``python -m gandalf_core.grading.batch`` expects). Each *unit* of a step (an exercise file, or the files that one
+``python -m gandalf_tools.grading.batch`` expects). Each *unit* of a step (an exercise file, or the files that one
 exercise's graded tests read together: a shader's GLSL and WGSL twins, step 06's ``optics.py`` with the shading
 shaders) is either the reference solution ("done") or the untouched stub. Deterministic for a seed, and varied:
 

@@ -30,7 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_core.studies import frame_ms, pyplot, run_info, write_study
+from gandalf_tools.studies import frame_ms, pyplot, run_info, write_study
 
 STEM = "step03_study_mipmaps"
 SAMPLERS = {"nearest": ("nearest", False, 1), "linear": ("linear", False, 1), "nearest + mipmaps": ("nearest", True, 1),

@@ -32,7 +32,7 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_core.studies import frame_ms, pyplot, run_info, write_study
+from gandalf_tools.studies import frame_ms, pyplot, run_info, write_study
 
 STEM = "step04_study_depth"
 #: (label, near, far, reverse_z)

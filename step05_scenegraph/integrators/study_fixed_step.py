@@ -29,7 +29,7 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_core.studies import pyplot, run_info, write_study
+from gandalf_tools.studies import pyplot, run_info, write_study
 
 from ..custom_systems.fixed_step import FixedStep
 from ..solutions.integrators import semi_implicit_euler_step

@@ -26,7 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_core.studies import frame_ms, pyplot, run_info, write_study
+from gandalf_tools.studies import frame_ms, pyplot, run_info, write_study
 
 STEM = "step06_study_lights"
 COUNTS = (0, 1, 2, 4, 8, 16, 32, 64)

@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_core.studies import frame_ms, pyplot, run_info, write_study
+from gandalf_tools.studies import frame_ms, pyplot, run_info, write_study
 
 STEM = "step06_study_mesh_resolution"
 SPHERES = ((6, 3), (8, 4), (12, 6), (16, 8), (24, 12), (32, 16), (64, 32), (128, 64), (256, 128))
@@ -50,9 +50,10 @@ def _material():
 
 def sphere_scene(mesh, instances: int = 1):
     """``instances`` copies of ``mesh``: one at the origin (the picture), or a grid of them (the timing)."""
-    from gandalf_core import ClearColorComponent, Scene, TransformComponent, testing
+    from gandalf_core import ClearColorComponent, Scene, TransformComponent
     from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
     from gandalf_core.math import look_at_rotation
+    from gandalf_tools import testing
 
     scene = Scene("mesh resolution")
     scene.assets.mesh("sphere", mesh)
@@ -73,7 +74,7 @@ def sphere_scene(mesh, instances: int = 1):
 def reference(size: tuple[int, int]) -> tuple[np.ndarray, np.ndarray]:
     """(8-bit sRGB RGB (H, W, 3) of the exact sphere, its coverage mask (H, W)), float64 throughout."""
     from gandalf_core.resources import linear_to_srgb, srgb_to_linear
-    from gandalf_core.testing import sphere_hits
+    from gandalf_tools.testing import sphere_hits
 
     hit, p, _ = sphere_hits(EYE, FOV, size)
     n = p / np.linalg.norm(p, axis=-1, keepdims=True)
@@ -90,7 +91,7 @@ def reference(size: tuple[int, int]) -> tuple[np.ndarray, np.ndarray]:
 
 def errors(picture: np.ndarray, expected: np.ndarray, hit: np.ndarray) -> dict:
     """Silhouette error (mean outline distance, px) and shading error (mean 8-bit difference inside)."""
-    from gandalf_core.testing import inner
+    from gandalf_tools.testing import inner
 
     covered = picture[..., :3].max(axis=2) > COVERED
     radius_px = math.sqrt(hit.sum() / math.pi)

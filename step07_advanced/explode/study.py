@@ -27,7 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_core.studies import frame_runs_ms, pyplot, write_study
+from gandalf_tools.studies import frame_runs_ms, pyplot, write_study
 
 #: (segments, rings) of the UV spheres: 960, 3968, 16128, 65024 and 199808 triangles.
 SPHERES = ((32, 16), (64, 32), (128, 64), (256, 128), (448, 224))
@@ -110,7 +110,7 @@ def box_error(picture: np.ndarray, mesh, view_projection: np.ndarray) -> float:
 
 def run_study(routes: list[str], spheres, size: tuple[int, int], frames: int, repeats: int) -> list[dict]:
     from gandalf_core.resources import uv_sphere
-    from gandalf_core.testing import psnr
+    from gandalf_tools.testing import psnr
 
     from .. import solutions
 

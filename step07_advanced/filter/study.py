@@ -27,7 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_core.studies import pyplot, run_info, write_study
+from gandalf_tools.studies import pyplot, run_info, write_study
 
 from . import reference
 from .kernels import OPERATIONS

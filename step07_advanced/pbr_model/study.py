@@ -217,7 +217,7 @@ def main(argv: list[str] | None = None) -> int:
     from dataclasses import replace
 
     from gandalf_core.resources import cube_face_directions
-    from gandalf_core.testing import psnr
+    from gandalf_tools.testing import psnr
 
     from .ibl import PREFILTER_SIZE, default_ibl, encode_prefiltered, sky_radiance
 

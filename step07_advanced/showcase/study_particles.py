@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_core.studies import pyplot, run_info, write_study
+from gandalf_tools.studies import pyplot, run_info, write_study
 
 from .particles import SimParams, particle_step_np
 

@@ -36,7 +36,7 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_core.studies import frame_ms, pyplot, run_info, write_study
+from gandalf_tools.studies import frame_ms, pyplot, run_info, write_study
 
 STEM = "step07_study_shadows"
 SHADER_DIR = Path(__file__).resolve().parent / "shaders"

@@ -33,7 +33,7 @@ from gandalf_core.render.builtin_materials import BUILTIN_MATERIALS
 from gandalf_core.resources import MaterialData, MeshData, ResourceError, checkerboard, quad, solid, uv_sphere
 from gandalf_core.resources.color import srgb_rgba_to_linear
 from gandalf_core.resources.texture_data import linear_to_srgb
-from gandalf_core.testing import psnr
+from gandalf_tools.testing import psnr
 
 W, H = 96, 72
 EYE = np.array([0.0, 0.0, 4.0])

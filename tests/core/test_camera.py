@@ -30,7 +30,7 @@ from gandalf_core.systems.camera_controllers import (
     OrbitControllerSystem,
     heading_of,
 )
-from gandalf_core.testing import compare_images, psnr
+from gandalf_tools.testing import compare_images, psnr
 
 SHADERS = Path(__file__).parent / "shaders"
 W, H = 96, 72

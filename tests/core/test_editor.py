@@ -22,7 +22,7 @@ from gandalf_core.editor import PANEL_KINDS, EditorPanelComponent, disable_edito
 from gandalf_core.math import look_at_rotation
 from gandalf_core.render import RenderSystem
 from gandalf_core.resources import MaterialData, checkerboard, cube
-from gandalf_core.testing import psnr
+from gandalf_tools.testing import psnr
 
 SHADERS = Path(__file__).parent / "shaders"
 ROOT = Path(__file__).resolve().parents[2]

@@ -18,7 +18,7 @@ from gandalf_core import InfoComponent, LinkComponent, TransformComponent
 from gandalf_core.components import LightComponent, MeshComponent
 from gandalf_core.editor import EditorPanelComponent, disable_editor, enable_editor
 from gandalf_core.render import RenderSystem
-from gandalf_core.testing import psnr
+from gandalf_tools.testing import psnr
 
 sys.path.insert(0, str(Path(__file__).parent))
 from test_editor import H, center, click, editor_scene, make_app, named  # noqa: E402

@@ -2,7 +2,7 @@
 
 Most tests write a tiny fake step (``fakestep``: an ``exercises`` package with an infinite loop, an
 ``os._exit(3)`` and a hang that no signal reaches, and ``solutions``) plus its graded tests into
-``tmp_path`` and runs ``python -m gandalf_core.grading`` on it in a subprocess: the runaway tests fail
+``tmp_path`` and runs ``python -m gandalf_tools.grading`` on it in a subprocess: the runaway tests fail
 with their own message and every other test is still graded. The last one makes step 01's reference
 system loop forever in the first frame of an OpenGL app: pytest-timeout's signal method fails that test and
 the same worker renders the next ones correctly.
@@ -105,7 +105,7 @@ def _fake_step(tmp_path: Path) -> Path:
         "fakestep/exercises/__init__.py": EXERCISES,
         "fakestep/solutions/__init__.py": SOLUTIONS,
         "grading_tests/fakestep/conftest.py": (
-            "from gandalf_core.grading.plugin import impl_fixture\n\nimpl = impl_fixture('fakestep')\n"
+            "from gandalf_tools.grading.plugin import impl_fixture\n\nimpl = impl_fixture('fakestep')\n"
         ),
         "grading_tests/fakestep/test_fake.py": TESTS,
     }.items():
@@ -121,7 +121,7 @@ def _grade(tmp_path: Path, *args: str, timeout: float = 120) -> tuple[subprocess
     env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(tmp_path), str(ROOT)])}
     env.pop("GANDALF_IMPL", None)
     proc = subprocess.run(
-        [sys.executable, "-m", "gandalf_core.grading", str(tests), "--json", str(out), *args],
+        [sys.executable, "-m", "gandalf_tools.grading", str(tests), "--json", str(out), *args],
         cwd=tmp_path,
         env=env,
         capture_output=True,
@@ -209,7 +209,7 @@ def test_a_timeout_inside_a_rendering_frame_leaves_the_gpu_usable(tmp_path):
     out = tmp_path / "grade.json"
     env = {k: v for k, v in os.environ.items() if k != "GANDALF_IMPL"}
     proc = subprocess.run(
-        [sys.executable, "-m", "gandalf_core.grading", "tests/step01_window", "--impl", f"step01_window={package}"]
+        [sys.executable, "-m", "gandalf_tools.grading", "tests/step01_window", "--impl", f"step01_window={package}"]
         + ["--timeout", "5", "--json", str(out), "--grade-only", "HueCycleSystem", "-k", "opengl or each_entity"],
         cwd=ROOT,
         env=env,

@@ -1,7 +1,7 @@
 """The mutation check itself: a mutant that breaks ``hsv_to_rgb`` is killed, one that changes nothing survives
 and fails the run, and a survivor listed in ``known_gaps.txt`` is reported without failing it.
 
-Each case runs ``python -m gandalf_core.grading.mutants`` in a subprocess on step 01's ``hsv_to_rgb`` only.
+Each case runs ``python -m gandalf_tools.grading.mutants`` in a subprocess on step 01's ``hsv_to_rgb`` only.
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ ROOT = Path(__file__).resolve().parents[2]
 DEFINITIONS = """
 import math
 
-from gandalf_core.grading.mutants import Mutant, mutant, patch
+from gandalf_tools.grading.mutants import Mutant, mutant, patch
 
 MUTANTS: list[Mutant] = []
 
@@ -42,7 +42,7 @@ def _run(tmp_path: Path, *args: str) -> tuple[int, str, list[dict]]:
     out = tmp_path / "outcomes.json"
     env = {k: v for k, v in os.environ.items() if k != "GANDALF_IMPL"}
     proc = subprocess.run(
-        [sys.executable, "-m", "gandalf_core.grading.mutants", "--dir", str(folder), "--json", str(out), *args],
+        [sys.executable, "-m", "gandalf_tools.grading.mutants", "--dir", str(folder), "--json", str(out), *args],
         cwd=ROOT,
         env=env,
         capture_output=True,

@@ -1,7 +1,7 @@
 """The grader's outputs for course platforms: the batch grader's gradebook, GitHub Classroom's configuration.
 
 * ``scripts/make_sample_submissions.py`` makes 5 seeded submissions of steps 01-02 (the stubs, the solutions, a
-  runaway loop, a hard exit, random shares); ``python -m gandalf_core.grading.batch`` grades all five in
+  runaway loop, a hard exit, random shares); ``python -m gandalf_tools.grading.batch`` grades all five in
   parallel, a process per submission, and the gradebook must give exactly the points of the exercises done from
   the solutions (the script's ``--check``); the runaway loop and the hard exit lose only their own exercise.
 * ``.github/classroom/autograding.json`` parses, has one entry per step with points, and each entry's command
@@ -35,7 +35,7 @@ def test_batch_grades_sample_submissions_into_the_right_gradebook(tmp_path):
     kinds = ["stubs", "solutions", "runaway loop", "hard exit", "random"]  # student_05's syntax error is in step 03
     assert [manifest[s]["kind"] for s in students] == kinds
     proc = subprocess.run(
-        [sys.executable, "-m", "gandalf_core.grading.batch", str(subs), "--out", str(out), "--steps", "step01"]
+        [sys.executable, "-m", "gandalf_tools.grading.batch", str(subs), "--out", str(out), "--steps", "step01"]
         + ["step02", "--jobs", "2", "--timeout", "20"],
         cwd=ROOT,
         env=ENV,
@@ -79,7 +79,7 @@ def test_classroom_configuration_has_one_entry_per_step():
     for t in tests:
         assert {"name", "setup", "run", "input", "output", "comparison", "timeout", "points"} <= set(t)
         assert t["points"] > 0 and 0 < t["timeout"] <= 60 and t["comparison"] in ("included", "exact", "regex")
-        assert shlex.split(t["run"])[:3] == [".venv/bin/python", "-m", "gandalf_core.grading"]
+        assert shlex.split(t["run"])[:3] == [".venv/bin/python", "-m", "gandalf_tools.grading"]
     workflow = (ROOT / ".github" / "workflows" / "classroom.yml").read_text()
     assert "education/autograding" in workflow and "scripts/setup.sh" in workflow
 

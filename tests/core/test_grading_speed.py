@@ -19,8 +19,8 @@ import subprocess
 import sys
 from pathlib import Path
 
-from gandalf_core.grading import bytecode_cache_env
-from gandalf_core.grading.__main__ import pytest_options
+from gandalf_tools.grading import bytecode_cache_env
+from gandalf_tools.grading.__main__ import pytest_options
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -47,7 +47,7 @@ def test_a_grading_run_writes_no_bytecode_into_the_graded_folder(tmp_path):
     env = {k: v for k, v in os.environ.items() if k != "GANDALF_IMPL"}
     env["GANDALF_PYCACHE"] = str(cache)
     code = (
-        "import sys; from gandalf_core.grading import use_bytecode_cache; use_bytecode_cache(); "
+        "import sys; from gandalf_tools.grading import use_bytecode_cache; use_bytecode_cache(); "
         f"sys.path.insert(0, {str(package.parent)!r}); import exercises; print(exercises.VALUE)"
     )
     proc = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, timeout=60)
@@ -86,7 +86,7 @@ def test_a_module_that_fails_to_import_is_named_and_the_rest_is_graded(tmp_path)
         "brokenstep/__init__.py": "",
         "brokenstep/solutions/__init__.py": "def one():\n    return 1\n",
         "brokenstep/exercises/__init__.py": "def one():\n    return 1\n",
-        "grading_tests/brokenstep/conftest.py": "from gandalf_core.grading.plugin import impl_fixture\n\n"
+        "grading_tests/brokenstep/conftest.py": "from gandalf_tools.grading.plugin import impl_fixture\n\n"
                                                 "impl = impl_fixture('brokenstep')\n",
         "grading_tests/brokenstep/test_good.py": "import pytest\n\n\n@pytest.mark.exercise('one')\n"
                                                  "def test_one(impl):\n    assert impl.one() == 1\n",
@@ -100,7 +100,7 @@ def test_a_module_that_fails_to_import_is_named_and_the_rest_is_graded(tmp_path)
     for jobs in ("0", "1"):
         out = tmp_path / f"grade{jobs}.json"
         proc = subprocess.run(
-            [sys.executable, "-m", "gandalf_core.grading", str(tmp_path / "grading_tests" / "brokenstep"), "--json",
+            [sys.executable, "-m", "gandalf_tools.grading", str(tmp_path / "grading_tests" / "brokenstep"), "--json",
              str(out), "--jobs", jobs], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=120)
         assert out.exists(), proc.stdout[-2000:] + proc.stderr[-2000:]
         result = json.loads(out.read_text())

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from gandalf_core.tour import REPO_ROOT, find_steps, step_parts
+from gandalf_tools.tour import REPO_ROOT, find_steps, step_parts
 
 STEPS = find_steps()
 # Files that may talk to one API directly: the two variants, helpers named for their API, and the

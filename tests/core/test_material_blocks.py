@@ -23,7 +23,7 @@ from gandalf_core.render.shader_files import SNIPPETS_DIR
 from gandalf_core.render.wgsl_reflect import reflect
 from gandalf_core.resources import MaterialData, ResourceError, ShaderSource, checkerboard, sky_cube
 from gandalf_core.resources.layout import BlockLayout
-from gandalf_core.tour import REPO_ROOT
+from gandalf_tools.tour import REPO_ROOT
 
 SHADERS = Path(__file__).parent / "shaders"
 

@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from gandalf_core.testing import psnr
+from gandalf_tools.testing import psnr
 
 nbformat = pytest.importorskip("nbformat", reason="the notebook tests need the dev extra (nbformat)")
 nbclient = pytest.importorskip("nbclient", reason="the notebook tests need the dev extra (nbclient)")

@@ -26,7 +26,7 @@ from gandalf_core.components import (
 from gandalf_core.math import look_at_rotation
 from gandalf_core.render.errors import MissingResourceError, ShaderCompileError
 from gandalf_core.resources import MaterialData, checkerboard, cube, sky_cube, uv_sphere
-from gandalf_core.testing import compare_images
+from gandalf_tools.testing import compare_images
 
 SHADERS = Path(__file__).parent / "shaders"
 W, H = 96, 72

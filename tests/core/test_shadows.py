@@ -24,7 +24,7 @@ from gandalf_core.components import (
 )
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, cube, plane
-from gandalf_core.testing import compare_images
+from gandalf_tools.testing import compare_images
 
 W, H = 96, 72
 VIEW_HEIGHT = 8.0  # world units the top-down camera shows from the top of the picture to the bottom

@@ -370,7 +370,7 @@ def test_unregistered_system_is_reported_on_save_and_left_out(tmp_path):
     ("step01_window.no_such_module.Thing", r"there is no module step01_window.no_such_module"),
     ("step01_window.scene.build_scene", r"step01_window.scene does not register it"),
     ("gandalf_core.render.RenderSystem", r"gandalf_core.render does not register it"),
-    ("gandalf_core.grading.__main__.main", r"the module gandalf_core.grading.__main__ is private or a program"),
+    ("gandalf_tools.grading.__main__.main", r"the module gandalf_tools.grading.__main__ is private or a program"),
     ("step07_advanced.showcase.particles.ParticleSystem", r"it cannot be loaded: the particles live in a GPU buffer"),
     ("not a path; import os", r"it is not an import path"),
 ])

@@ -27,9 +27,9 @@ from gandalf_core.components import (
 )
 from gandalf_core.math import quat_from_axis_angle, quat_mul
 from gandalf_core.resources import MaterialData, MeshData, TextureData, checkerboard, cube, linear_to_srgb, uv_sphere
-from gandalf_core.testing import psnr
 from gandalf_core.usd import USDSceneError, USDSceneWarning, load_scene
 from gandalf_core.usd.foreign import PreviewSurface, decompose
+from gandalf_tools.testing import psnr
 
 pxr = pytest.importorskip("pxr")
 from pxr import Gf, Sdf, Usd, UsdGeom, UsdLux, UsdShade, Vt  # noqa: E402

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 
-from gandalf_core.grading.mutants import Mutant, mutant, patch
+from gandalf_tools.grading.mutants import Mutant, mutant, patch
 
 STEP = "step01_window"
 MUTANTS: list[Mutant] = []

@@ -6,8 +6,8 @@ import math
 
 import numpy as np
 
-from gandalf_core.grading.mutants import Mutant, mutant, patch
 from gandalf_core.resources import MeshData, VertexAttribute, VertexLayout
+from gandalf_tools.grading.mutants import Mutant, mutant, patch
 
 STEP = "step02_triangle"
 MUTANTS: list[Mutant] = []

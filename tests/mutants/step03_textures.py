@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from gandalf_core.grading.mutants import Mutant, mutant, patch
 from gandalf_core.resources import TextureData
+from gandalf_tools.grading.mutants import Mutant, mutant, patch
 
 STEP = "step03_textures"
 MUTANTS: list[Mutant] = []

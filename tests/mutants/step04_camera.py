@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from gandalf_core.grading.mutants import Mutant, mutant, patch
+from gandalf_tools.grading.mutants import Mutant, mutant, patch
 
 STEP = "step04_camera"
 MUTANTS: list[Mutant] = []

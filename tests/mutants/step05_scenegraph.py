@@ -8,9 +8,9 @@ import numpy as np
 
 from gandalf_core import TransformComponent
 from gandalf_core.components import CameraComponent
-from gandalf_core.grading.mutants import Mutant, mutant, patch
 from gandalf_core.math import look_at_rotation, quat_from_axis_angle
 from gandalf_core.resources import MaterialData, MeshData, TextureData, cube, pyramid
+from gandalf_tools.grading.mutants import Mutant, mutant, patch
 
 STEP = "step05_scenegraph"
 MUTANTS: list[Mutant] = []

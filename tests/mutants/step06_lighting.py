@@ -7,7 +7,7 @@ import warnings
 
 import numpy as np
 
-from gandalf_core.grading.mutants import Mutant, mutant, patch, shader_mutant
+from gandalf_tools.grading.mutants import Mutant, mutant, patch, shader_mutant
 
 STEP = "step06_lighting"
 MUTANTS: list[Mutant] = []

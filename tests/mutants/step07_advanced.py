@@ -16,7 +16,7 @@ from __future__ import annotations
 import ast
 from pathlib import Path
 
-from gandalf_core.grading.mutants import Mutant, shader_mutant
+from gandalf_tools.grading.mutants import Mutant, shader_mutant
 
 STEP = "step07_advanced"
 MUTANTS: list[Mutant] = []

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from gandalf_core.resources import MeshData, linear_to_srgb, srgb_to_linear
-from gandalf_core.testing import compare_images, compare_to_reference, render_frames
+from gandalf_tools.testing import compare_images, compare_to_reference, render_frames
 from step02_triangle import opengl, webgpu
 from step02_triangle.meshes import quad_mesh, triangle_mesh
 from step02_triangle.preview import render_mesh

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from gandalf_core import Application, Scene
-from gandalf_core.grading.plugin import impl_fixture
+from gandalf_tools.grading.plugin import impl_fixture
 from step03_textures.opengl import SHADERS
 from step03_textures.scene import SHADER
 

@@ -10,7 +10,7 @@ from step04_helpers import REFERENCES, make_app, only, rendered_camera
 
 import gandalf_core.math as gm
 from gandalf_core import Scene, TransformComponent
-from gandalf_core.testing import compare_to_reference
+from gandalf_tools.testing import compare_to_reference
 from step04_camera.components import OrbitCameraComponent
 
 TARGET = np.array([0.0, 0.5, 0.0])  # the scene's orbit camera: distance 9, yaw 30, pitch 25, sensitivity 0.5

@@ -9,7 +9,7 @@ import pytest
 from step04_helpers import REFERENCES, make_app, only
 
 import gandalf_core.math as gm
-from gandalf_core.testing import compare_images, compare_to_reference
+from gandalf_tools.testing import compare_images, compare_to_reference
 
 # Float64 maths on both sides: the matrices agree to rounding.
 MATRIX_TOL = 1e-9

@@ -5,7 +5,7 @@ from __future__ import annotations
 from step04_helpers import REFERENCES, make_app, rendered_camera
 
 from gandalf_core.components import CameraComponent
-from gandalf_core.testing import compare_images, compare_to_reference, psnr, render_frames
+from gandalf_tools.testing import compare_images, compare_to_reference, psnr, render_frames
 from step04_camera import opengl, solutions, webgpu
 
 

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from gandalf_core import Scene, TransformComponent, TransformSystem
-from gandalf_core.testing import compare_images, compare_to_reference
+from gandalf_tools.testing import compare_images, compare_to_reference
 from step05_scenegraph.custom_systems import opengl, webgpu
 from step05_scenegraph.custom_systems.components import GravityComponent
 from step05_scenegraph.custom_systems.fixed_step import FixedStep

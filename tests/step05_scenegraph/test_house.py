@@ -18,7 +18,7 @@ import step05_scenegraph.solutions as reference
 from gandalf_core import Application
 from gandalf_core.math import quat_from_axis_angle
 from gandalf_core.resources import MaterialData, MeshData, TextureData
-from gandalf_core.testing import compare_images, compare_to_reference, psnr
+from gandalf_tools.testing import compare_images, compare_to_reference, psnr
 from step05_scenegraph import SHADERS
 from step05_scenegraph.house.components import HouseRotationComponent
 from step05_scenegraph.house.scene import build_house_scene

@@ -19,7 +19,7 @@ import pytest
 
 from gandalf_core import Application
 from gandalf_core.app.cli import run_scene
-from gandalf_core.testing import psnr
+from gandalf_tools.testing import psnr
 from step05_scenegraph.house import minimal as house_minimal
 
 W, H = 96, 72

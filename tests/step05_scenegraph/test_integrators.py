@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from gandalf_core import Scene, TransformComponent, TransformSystem
-from gandalf_core.testing import compare_images, compare_to_reference
+from gandalf_tools.testing import compare_images, compare_to_reference
 from step05_scenegraph.integrators import methods as lesson
 from step05_scenegraph.integrators import opengl, webgpu
 from step05_scenegraph.integrators.components import SpringComponent

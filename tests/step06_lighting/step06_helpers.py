@@ -13,10 +13,11 @@ from types import ModuleType
 
 import numpy as np
 
-from gandalf_core import Application, Scene, TransformComponent, testing
+from gandalf_core import Application, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, MeshData, linear_to_srgb, srgb_to_linear, uv_sphere
+from gandalf_tools import testing
 from step06_lighting.shaders import register_shaders
 
 REFERENCES = Path(__file__).resolve().parent / "references"
@@ -149,7 +150,7 @@ def concept_picture(part: str, backend: str) -> np.ndarray:
     """The tour's picture of ``part`` (``step06_lighting.<concept>``, or the step's whole scene) at 160×120."""
     import importlib
 
-    from gandalf_core.testing import render_frames
+    from gandalf_tools.testing import render_frames
 
     frames = getattr(importlib.import_module(f"{part}.scene"), "TOUR_FRAMES", 30)
     return render_frames(importlib.import_module(f"{part}.{backend}").create_app, frames, **CONCEPT_SIZE)

@@ -11,7 +11,7 @@ import numpy as np
 from step06_helpers import REFERENCES, concept_picture
 
 from gandalf_core.components import LightComponent, MaterialComponent, SkyboxComponent
-from gandalf_core.testing import compare_images, compare_to_reference
+from gandalf_tools.testing import compare_images, compare_to_reference
 from step06_lighting import solutions
 from step06_lighting.environment.scene import build_scene
 

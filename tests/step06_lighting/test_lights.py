@@ -13,7 +13,7 @@ from step06_helpers import REFERENCES, concept_picture
 
 from gandalf_core import TransformComponent, TransformSystem
 from gandalf_core.components import LightComponent
-from gandalf_core.testing import compare_images, compare_to_reference
+from gandalf_tools.testing import compare_images, compare_to_reference
 from step06_lighting import solutions
 from step06_lighting.lights.components import OrbitComponent
 from step06_lighting.lights.scene import RING_LIGHTS, TOUR_FRAMES, build_scene

@@ -14,7 +14,7 @@ from step06_helpers import REFERENCES, concept_picture
 from gandalf_core import InfoComponent, TransformComponent, TransformSystem
 from gandalf_core.components import LinkComponent, MeshComponent
 from gandalf_core.resources.mesh_loader import load_mesh, load_meshes
-from gandalf_core.testing import compare_images, compare_to_reference
+from gandalf_tools.testing import compare_images, compare_to_reference
 from step06_lighting.meshes import make_bunny
 from step06_lighting.meshes.scene import BUNNY_PATH, PART_COLORS, build_scene
 

@@ -14,7 +14,7 @@ from PIL import Image
 from step06_helpers import REFERENCES, concept_picture
 
 from gandalf_core.components import LightComponent, SkyboxComponent
-from gandalf_core.testing import compare_images, compare_to_reference, render_frames
+from gandalf_tools.testing import compare_images, compare_to_reference, render_frames
 from step06_lighting import CONCEPTS, solutions
 from step06_lighting.scene import TOUR_FRAMES, build_scene
 

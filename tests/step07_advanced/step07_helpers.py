@@ -15,7 +15,7 @@ from types import ModuleType, SimpleNamespace
 
 import numpy as np
 
-from gandalf_core import Application, Scene, TransformComponent, testing
+from gandalf_core import Application, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import (
@@ -27,6 +27,7 @@ from gandalf_core.resources import (
     srgb_to_linear,
     uv_sphere,
 )
+from gandalf_tools import testing
 
 REFERENCES = Path(__file__).resolve().parent / "references"
 SIZE = (112, 84)

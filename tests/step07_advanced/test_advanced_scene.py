@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from gandalf_core.components import SkyboxComponent
-from gandalf_core.testing import compare_images, compare_to_reference, render_frames
+from gandalf_tools.testing import compare_images, compare_to_reference, render_frames
 from step07_advanced import solutions
 from step07_advanced.showcase.particles import ParticleComponent
 from step07_advanced.showcase.scene import METALLIC, PARTICLE_COUNT, ROUGHNESS, TOUR_FRAMES, build_scene

@@ -229,7 +229,7 @@ def test_huge_and_tiny_triangles_neither_overflow_nor_underflow(impl, backend):
 
 # --- mutants: plausible wrong answers, each must fail at least one graded check ---------------------------
 # (name, description, edits): ``(file, old, new)`` replacements in a copy of solutions/explode.*, the format of
-# gandalf_core.grading.mutants.shader_mutant (``old`` occurs exactly once, so a changed solution breaks a stale
+# gandalf_tools.grading.mutants.shader_mutant (``old`` occurs exactly once, so a changed solution breaks a stale
 # mutant loudly). The step's mutation check can register them as they are:
 #     for name, description, edits in SHADER_MUTANTS:
 #         shader_mutant(MUTANTS, "step07_advanced", "explode_offset", name, description, edits)

@@ -20,7 +20,7 @@ from gandalf_core import Application, Scene, TransformComponent
 from gandalf_core.components import InfoComponent, MaterialComponent, MeshComponent
 from gandalf_core.render.render_system import RenderSystem
 from gandalf_core.resources import MaterialData, MeshData, ResourceError
-from gandalf_core.testing import compare_images, psnr
+from gandalf_tools.testing import compare_images, psnr
 from step07_advanced.explode import scene as explode
 from step07_advanced.explode.scene import (
     BACKGROUND,

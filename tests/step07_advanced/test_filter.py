@@ -21,7 +21,7 @@ from types import ModuleType, SimpleNamespace
 import numpy as np
 import pytest
 
-from gandalf_core.testing import psnr
+from gandalf_tools.testing import psnr
 from step07_advanced import solutions
 from step07_advanced.filter import kernels, reference
 from step07_advanced.filter.shaders import impl_shader_dir
@@ -323,7 +323,7 @@ def test_reference_rules():
 
 
 def test_both_apis_show_the_same_picture():
-    from gandalf_core.testing import render_frames
+    from gandalf_tools.testing import render_frames
     from step07_advanced.filter import opengl, scene, webgpu
 
     pictures = {m.__name__: render_frames(m.create_app, frames=1, width=160, height=120) for m in (opengl, webgpu)}

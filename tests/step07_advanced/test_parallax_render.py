@@ -20,7 +20,7 @@ import pytest
 
 from gandalf_core import Application
 from gandalf_core.resources import ResourceError
-from gandalf_core.testing import compare_images
+from gandalf_tools.testing import compare_images
 from step07_advanced.parallax import scene as parallax
 from step07_advanced.parallax.reference import MAX_LAYERS
 

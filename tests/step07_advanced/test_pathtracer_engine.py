@@ -21,7 +21,7 @@ import shader_harness
 from gandalf_core import Application, Scene, TransformComponent
 from gandalf_core.components import ClearColorComponent, InfoComponent, SkyboxComponent
 from gandalf_core.resources import MeshData, ResourceError, TextureData, linear_to_srgb, sky_cube
-from gandalf_core.testing import psnr
+from gandalf_tools.testing import psnr
 from step07_advanced.pathtracer import bvh as bvh_mod
 from step07_advanced.pathtracer import scene as pt
 from step07_advanced.pathtracer.shaders import SHADER_DIR

@@ -24,7 +24,7 @@ import numpy as np
 import pytest
 from step07_helpers import EYE, FOV, brdf_lut_texture, inner, pixel_errors, to_srgb8, with_reference_files
 
-from gandalf_core import Application, Scene, TransformComponent, testing
+from gandalf_core import Application, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import (
@@ -37,6 +37,7 @@ from gandalf_core.resources import (
     uv_sphere,
 )
 from gandalf_core.resources.gltf import DEFAULT_TEXTURES
+from gandalf_tools import testing
 from step07_advanced.pbr_model import ibl
 from step07_advanced.pbr_model.scene import IBL_TEXTURES, build_scene, check_pbr_material
 

@@ -289,7 +289,7 @@ def test_ggx_specular_on_edge_inputs(impl, backend):
 
 # --- mutants: plausible wrong answers, each must fail at least one graded check ---------------------------
 # (name, description, edits): ``(file, old, new)`` replacements in a copy of solutions/brdf.*, the format of
-# gandalf_core.grading.mutants.shader_mutant (``old`` occurs exactly once).
+# gandalf_tools.grading.mutants.shader_mutant (``old`` occurs exactly once).
 G, W = "brdf.glsl", "brdf.wgsl"
 SHADER_MUTANTS = [
     ("brdf-d-no-pi", "D without the 1/pi",

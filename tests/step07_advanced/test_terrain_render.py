@@ -19,7 +19,7 @@ from gandalf_core import Scene, TransformComponent
 from gandalf_core.app.cli import load_impl
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.resources import MeshData, ResourceError, cube
-from gandalf_core.testing import psnr
+from gandalf_tools.testing import psnr
 from step07_advanced.terrain import opengl, patches, scene, webgpu
 from step07_advanced.terrain.heightfield import check_heights, encode_heights, fractal_heights, quantize
 

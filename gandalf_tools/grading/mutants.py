@@ -1,6 +1,6 @@
 """The mutation check: every plausible wrong implementation of an exercise must fail one of its graded tests.
 
-``python -m gandalf_core.grading.mutants [--step STEP] [--exercise NAME] [-k TEXT] [--jobs N] [--json FILE]``
+``python -m gandalf_tools.grading.mutants [--step STEP] [--exercise NAME] [-k TEXT] [--jobs N] [--json FILE]``
 
 A *mutant* is a copy of a step's ``solutions`` package with one thing wrong, defined in
 ``tests/mutants/<step>.py`` (a list ``MUTANTS``):
@@ -186,7 +186,7 @@ def build(m: Mutant | None, step: str, folder: Path) -> Path:
         init.write_text(
             init.read_text()
             + "\n\n# --- mutation check: make this copy wrong in one way ---\n"
-            + "from gandalf_core.grading.mutants import apply_mutant as _apply_mutant  # noqa: E402\n\n"
+            + "from gandalf_tools.grading.mutants import apply_mutant as _apply_mutant  # noqa: E402\n\n"
             + f"_apply_mutant(__name__, {m.source!r}, {m.ident!r})\n"
         )
     return target
@@ -226,7 +226,7 @@ class _Job:
         return Path(self.tmp.name)
 
     def pytest_args(self, timeout: float) -> list[str]:
-        args = ["-q", "-p", "no:cacheprovider", "--student", "--tb=line", "-p", "gandalf_core.grading.plugin"]
+        args = ["-q", "-p", "no:cacheprovider", "--student", "--tb=line", "-p", "gandalf_tools.grading.plugin"]
         args += SPEED_OPTIONS
         args += ["--grade-json", str(self.folder / "grade.json"), f"--timeout={timeout:g}"]
         if self.mutant is not None:
@@ -390,7 +390,7 @@ def _select(mutants: list[Mutant], steps: list[str], exercises: list[str], keywo
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(
-        prog="python -m gandalf_core.grading.mutants",
+        prog="python -m gandalf_tools.grading.mutants",
         description="Grade every mutant (a plausible wrong implementation) of the exercises; fail if one passes.",
     )
     parser.add_argument("--dir", type=Path, default=DEFAULT_DIR, help="mutant definitions (default: tests/mutants)")

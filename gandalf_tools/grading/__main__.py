@@ -1,4 +1,4 @@
-"""``python -m gandalf_core.grading [TESTS ...] [--json FILE] [--gradescope FILE]``: grade your exercises.
+"""``python -m gandalf_tools.grading [TESTS ...] [--json FILE] [--gradescope FILE]``: grade your exercises.
 
 A thin front end over ``pytest --student`` that prints one line per failed test and the score table
 (``pytest --student`` itself shows full tracebacks). Other arguments go to pytest.
@@ -21,7 +21,7 @@ import pytest
 
 from . import SPEED_OPTIONS, use_bytecode_cache
 
-PLUGIN = "gandalf_core.grading.plugin"
+PLUGIN = "gandalf_tools.grading.plugin"
 # A test module that fails to import (a course bug, never the student's: their code is imported by the tests, not
 # at collection) must not zero the other steps: grade the rest; that module's tests are missing from the grade.
 ROBUST_OPTIONS = ("--continue-on-collection-errors",)
@@ -70,7 +70,7 @@ def pytest_options(
 
 
 def main(argv: list[str]) -> int:
-    parser = argparse.ArgumentParser(prog="python -m gandalf_core.grading", description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(prog="python -m gandalf_tools.grading", description=__doc__.splitlines()[0])
     parser.add_argument("tests", nargs="*", default=["tests"], help="test folders or files (default: tests)")
     parser.add_argument("--json", metavar="FILE", help="also write the score as JSON to FILE")
     parser.add_argument("--gradescope", metavar="FILE", help="also write Gradescope's results.json to FILE")

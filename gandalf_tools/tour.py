@@ -1,6 +1,6 @@
 """The course tour: every available step, in both APIs.
 
-``python -m gandalf_core.tour`` opens each step in a window when a display exists; headless (or with
+``python -m gandalf_tools.tour`` opens each step in a window when a display exists; headless (or with
 ``--headless``) it renders every step offscreen and writes ``OUT/stepNN_<topic>-<backend>.png``; a step whose
 package lists ``TECHNIQUES`` (step 07) or ``CONCEPTS`` (step 05) gets one picture pair per sub-package,
 ``OUT/stepNN_<topic>-<technique>-<backend>.png``.
@@ -17,7 +17,7 @@ import sys
 import time
 from pathlib import Path
 
-from .render.base import BACKENDS
+from gandalf_core.render.base import BACKENDS
 
 REPO_ROOT = Path(__file__).resolve().parent.parent
 STEP_PATTERN = re.compile(r"^step\d\d_[a-z0-9_]+$")
@@ -59,7 +59,7 @@ def main(argv: list[str] | None = None) -> int:
     if str(REPO_ROOT) not in sys.path:
         sys.path.insert(0, str(REPO_ROOT))
     steps = args.steps or find_steps()
-    from .app.window import display_available
+    from gandalf_core.app.window import display_available
 
     headless = args.headless or not display_available()
     out_dir = Path(args.out)

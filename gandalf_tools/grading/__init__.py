@@ -1,4 +1,4 @@
-"""The autograder: a pytest plugin (``plugin``) and the ``python -m gandalf_core.grading`` front end.
+"""The autograder: a pytest plugin (``plugin``) and the ``python -m gandalf_tools.grading`` front end.
 
 Also the options every grading process shares (the front end, the batch grader, the mutation check): what
 makes a grading process start fast without changing what it checks.

@@ -1,4 +1,4 @@
-"""``python -m gandalf_core.grading.batch SUBMISSIONS_DIR --out DIR [--jobs N] [--steps step01 ...]``: grade a class.
+"""``python -m gandalf_tools.grading.batch SUBMISSIONS_DIR --out DIR [--jobs N] [--steps step01 ...]``: grade a class.
 
 **Layout.** ``SUBMISSIONS_DIR`` holds one folder per student (its name is the student's id in the gradebook).
 Each holds the student's ``stepNN_topic/exercises/`` folders — either just those (what a Classroom or LMS
@@ -7,7 +7,7 @@ download of the exercise folders gives) or a whole checkout of the repository (o
 graded on this checkout's own ``exercises/`` (the untouched stubs: CI checks they fail every graded test).
 
 **Isolation.** This process never imports a student's code. Each submission is graded by its own
-``python -m gandalf_core.grading`` process with ``GANDALF_IMPL`` pointing every step's ``exercises`` at the
+``python -m gandalf_tools.grading`` process with ``GANDALF_IMPL`` pointing every step's ``exercises`` at the
 submission's folder. A runaway test fails on its time limit and the run goes on (pytest-timeout). By default
 (``--isolation auto``) that process runs the tests itself, the fastest way (no worker to start: about 3 s less
 per submission, the same grade); only when it does not finish cleanly — a hard exit or a crash in the student's
@@ -117,7 +117,7 @@ def grade_submission(
             graded.error = ""
             for stale in ("grade.json", "results.json"):
                 (target / stale).unlink(missing_ok=True)
-            cmd = [sys.executable, "-m", "gandalf_core.grading", *[str(ROOT / "tests" / s) for s in steps]]
+            cmd = [sys.executable, "-m", "gandalf_tools.grading", *[str(ROOT / "tests" / s) for s in steps]]
             cmd += ["--json", str(target / "grade.json"), "--gradescope", str(target / "results.json")]
             cmd += ["--jobs", str(jobs), "--timeout", f"{timeout:g}"]
             log.write(f"$ grading with --jobs {jobs} (attempt {attempt + 1} of {len(runs)})\n")
@@ -226,7 +226,7 @@ def write_gradebook(graded: list[Graded], out: Path) -> tuple[Path, Path]:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(
-        prog="python -m gandalf_core.grading.batch", description=__doc__.splitlines()[0].split(": ", 1)[-1]
+        prog="python -m gandalf_tools.grading.batch", description=__doc__.splitlines()[0].split(": ", 1)[-1]
     )
     parser.add_argument("submissions", type=Path, help="a folder with one folder per student")
     parser.add_argument("--out", type=Path, required=True, help="where the gradebook and reports go")

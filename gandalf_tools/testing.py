@@ -15,8 +15,8 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .app import Application
-from .ecs import Scene
+from gandalf_core.app import Application
+from gandalf_core.ecs import Scene
 
 
 def _failure_dir() -> Path:
@@ -133,8 +133,8 @@ def inner(mask: np.ndarray, pixels: int = 2) -> np.ndarray:
 # --- lights described as (LightComponent, TransformComponent) pairs, reusable across scenes ----------
 def directional_light(towards: ArrayLike, color: ArrayLike = (1.0, 1.0, 1.0), intensity: float = 1.0) -> tuple:
     """A directional light whose light comes from direction ``towards`` (a vector pointing at the light)."""
-    from .components import LightComponent, TransformComponent
-    from .math import look_at_rotation
+    from gandalf_core.components import LightComponent, TransformComponent
+    from gandalf_core.math import look_at_rotation
 
     t = np.asarray(towards, dtype=np.float64)
     return LightComponent("directional", color, intensity), TransformComponent(
@@ -145,20 +145,20 @@ def directional_light(towards: ArrayLike, color: ArrayLike = (1.0, 1.0, 1.0), in
 def point_light(
     position: ArrayLike, color: ArrayLike = (1.0, 1.0, 1.0), intensity: float = 1.0, range: float = 0.0
 ) -> tuple:
-    from .components import LightComponent, TransformComponent
+    from gandalf_core.components import LightComponent, TransformComponent
 
     return LightComponent("point", color, intensity, range), TransformComponent(position)
 
 
 def ambient_light(color: ArrayLike) -> tuple:
-    from .components import LightComponent, TransformComponent
+    from gandalf_core.components import LightComponent, TransformComponent
 
     return LightComponent("ambient", color), TransformComponent()
 
 
 def add_lights(scene: Scene, lights: list[tuple]) -> None:
     """Copies of ``lights`` as entities of ``scene``: one list may describe several scenes (and a reference)."""
-    from .components import LightComponent, TransformComponent
+    from gandalf_core.components import LightComponent, TransformComponent
 
     for light, transform in lights:
         scene.create_entity(
