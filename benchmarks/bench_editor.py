@@ -72,7 +72,7 @@ FIVE = ("hierarchy", "inspector", "systems", "stats", "console")
 
 def measure(backend: str, width: int, height: int, frames: int, rounds: int) -> dict[str, Any]:
     from gandalf_core.components import MeshComponent
-    from gandalf_core.editor import PANEL_KINDS, disable_editor, enable_editor
+    from step07_advanced.editor import PANEL_KINDS, disable_editor, enable_editor
 
     app = make_app(backend, width, height)
     app.run(frames=20)  # build pipelines and resources before timing

@@ -2,8 +2,10 @@
 
 ``import gandalf_core`` loads only the ECS, maths and component modules (and numpy); the application layer
 (:class:`Application`), the systems, the resource loaders and the renderers load on first use, and moderngl or
-wgpu only when an :class:`Application` creates its renderer; trimesh, USD and ImGui only when those features are
-used. ``from gandalf_core import Application`` and ``gandalf_core.app`` work as before (module ``__getattr__``).
+wgpu only when an :class:`Application` creates its renderer; trimesh only when a mesh file is read.
+``from gandalf_core import Application`` and ``gandalf_core.app`` work as before (module ``__getattr__``).
+The engine imports no ImGui, USD, course step or tool: the editor and USD scenes are the final step's
+(``step07_advanced``), reached through the hooks of :mod:`gandalf_core.app.extensions`.
 """
 
 from __future__ import annotations
@@ -18,8 +20,7 @@ __version__ = "0.1.0"
 
 # name -> module that defines it, imported on first access
 _LAZY = {"Application": ".app", "TransformSystem": ".systems"}
-_SUBPACKAGES = ("app", "components", "ecs", "editor", "math", "render", "resources", "systems",
-                "usd")
+_SUBPACKAGES = ("app", "components", "ecs", "math", "render", "resources", "systems")
 
 
 def __getattr__(name: str) -> Any:

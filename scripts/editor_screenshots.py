@@ -65,7 +65,7 @@ def build_scene():  # noqa: ANN201 - a Scene
 
 def shoot(backend: str, width: int, height: int, out: Path) -> Path:
     from gandalf_core import Application, InfoComponent
-    from gandalf_core.editor import enable_editor
+    from step07_advanced.editor import enable_editor
 
     with Application(backend, width, height, headless=True, fixed_dt=1 / 60) as app:
         app.add_scene(build_scene())

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from gandalf_core import Component
-from gandalf_core.usd import register_component
 
 
 class HueCycleComponent(Component):
@@ -16,4 +15,3 @@ class HueCycleComponent(Component):
         self.value = value
 
 
-register_component(HueCycleComponent, fields=["hue", "speed", "saturation", "value"])  # saved in USD files

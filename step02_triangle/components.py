@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from gandalf_core import Component
-from gandalf_core.usd import register_component
 
 
 class NGonComponent(Component):
@@ -17,4 +16,3 @@ class NGonComponent(Component):
         self.radius = radius
 
 
-register_component(NGonComponent, fields=["sides", "radius"])  # saved in USD files

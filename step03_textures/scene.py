@@ -19,10 +19,9 @@ from gandalf_core import ClearColorComponent, InfoComponent, Scene, TransformCom
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, MeshData, checkerboard, cube, plane, quad
+from gandalf_core.systems import SpinComponent, SpinSystem
 
 from .atlas import dice_atlas
-from .components import SpinComponent
-from .spin import SpinSystem
 
 #: Frames the course tour renders before it takes the picture (at 60 frames per simulated second).
 TOUR_FRAMES = 40

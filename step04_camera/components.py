@@ -7,7 +7,6 @@ from collections.abc import Sequence
 import numpy as np
 
 from gandalf_core import Component
-from gandalf_core.usd import register_component
 
 
 class OrbitCameraComponent(Component):
@@ -56,12 +55,3 @@ class LookAtComponent(Component):
         self.eye = np.asarray(eye, dtype=np.float64)
         self.target = np.asarray(target, dtype=np.float64)
         self.up = np.asarray(up, dtype=np.float64)
-
-
-# --8<-- [start:usd]
-# Saved in USD files (a LookAtComponent comes back as LookAtComponent(eye=, target=, up=)).
-register_component(OrbitCameraComponent, fields=["target", "distance", "yaw", "pitch",
-                                                 "sensitivity", "zoom_factor", "min_pitch",
-                                                 "max_pitch", "min_distance", "max_distance"])
-register_component(LookAtComponent, fields=["eye", "target", "up"])
-# --8<-- [end:usd]

@@ -9,7 +9,6 @@ import numpy as np
 from gandalf_core import System, TransformComponent
 from gandalf_core.components import CameraComponent
 from gandalf_core.math import decompose_trs, invert_affine
-from gandalf_core.usd import register_system
 
 from .components import LookAtComponent
 
@@ -51,11 +50,3 @@ class CameraSwitchSystem(System):
         current = next((i for i, c in enumerate(cameras) if c.primary), -1)
         for i, camera in enumerate(cameras):
             camera.primary = i == (current + 1) % len(cameras)
-
-
-# --8<-- [start:usd]
-# Allowed in saved scenes (gandalf_core.usd); a LookAtSystem keeps its look_at function, one that
-# step 04's solutions and exercises register with register_function.
-register_system(LookAtSystem, settings=["look_at"])
-register_system(CameraSwitchSystem)
-# --8<-- [end:usd]

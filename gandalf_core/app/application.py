@@ -32,7 +32,7 @@ def _never() -> bool:
 
 class Application:
     """Runs scenes with one backend. ``backend`` is 'opengl' or 'webgpu'; ``editor=True`` turns on the
-    ImGui editor (both backends; see :mod:`gandalf_core.editor`)."""
+    editor (both backends), the course's ``editor`` extension (:mod:`gandalf_core.app.extensions`)."""
 
     def __init__(
         self,
@@ -71,10 +71,10 @@ class Application:
         #: Called (newest first) when the app closes, before the scenes and the renderer go: layers added
         #: on top of the app (the editor) tear themselves down here.
         self.on_close: list[Callable[[], None]] = []
-        if editor:  # imported only when asked for: ImGui is not needed otherwise
-            from ..editor import enable_editor
+        if editor:  # found by name only when asked for (an extension): the engine imports no editor
+            from .extensions import extension
 
-            enable_editor(self)
+            extension("editor")(self)
 
     # --- scenes -------------------------------------------------------------------------------
     def add_scene(self, scene: Scene) -> Scene:

@@ -17,6 +17,7 @@ from types import ModuleType
 from ..ecs import Scene
 from ..render.base import check_backend
 from .application import Application
+from .extensions import extension
 
 
 def load_impl(step_package: str, student: bool = False) -> ModuleType:
@@ -33,18 +34,20 @@ def run_variant(create_app: Callable[..., Application], argv: list[str] | None =
     parser.add_argument("--student", action="store_true", help="run your exercises/ instead of solutions/")
     parser.add_argument("--size", default="640x480", help="WIDTHxHEIGHT (default 640x480)")
     parser.add_argument("--editor", action="store_true", help="turn on the editor (hierarchy, inspector, USD)")
+    parser.add_argument("--save", default=None, metavar="FILE",
+                        help="after the last frame, save the scene to this USD file (.usda or .usdc)")
     args = parser.parse_args(argv)
     width, height = (int(x) for x in args.size.lower().split("x"))
     app = create_app(headless=True if args.headless else None, student=args.student, width=width, height=height)
     if args.editor:
-        from ..editor import enable_editor
-
-        enable_editor(app)
+        extension("editor")(app)
     frames = args.frames if args.frames is not None else (60 if app.headless else None)
     with app:
         app.run(frames=frames)
         if args.out:
             print(f"saved {app.save_png(args.out)}")
+        if args.save:
+            print(f"saved {extension('save_scene')(app.scene, args.save)}")
     return 0
 
 

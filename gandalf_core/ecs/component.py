@@ -27,6 +27,9 @@ class Component:
     #: True for component types whose objects never change after construction (a mesh or material name):
     #: :meth:`Scene.create_entities` then gives all the new entities the same object instead of copies.
     immutable: ClassVar[bool] = False
+    #: False for a component that marks an entity as a tool's own (an editor's panel): saving a scene leaves
+    #: every entity that holds one out.
+    saved: ClassVar[bool] = True
 
     def __repr__(self) -> str:
         fields = ", ".join(f"{k}={v!r}" for k, v in vars(self).items() if not k.startswith("_"))

@@ -16,13 +16,10 @@ from __future__ import annotations
 
 import uuid
 from collections.abc import Iterable, Sequence
-from typing import TYPE_CHECKING, Any, ClassVar
+from typing import Any, ClassVar
 
 from .component import Component
 from .errors import NotAComponentError
-
-if TYPE_CHECKING:
-    from .scene import Scene
 
 
 class System:
@@ -31,6 +28,9 @@ class System:
     #: False for a system that acts only in :meth:`on_gui_update` (the editor's panels): ``Scene.update`` then
     #: skips it, so a frame pays nothing for it.
     updates_each_frame: ClassVar[bool] = True
+    #: False for a system that belongs to a tool layered on the app, not to the scene (the render system, an
+    #: editor's panels): saving a scene leaves it out.
+    saved: ClassVar[bool] = True
 
     def __init__(self, component_types: Sequence[type[Component]] = (), *, name: str | None = None) -> None:
         types = tuple(component_types)
@@ -43,7 +43,9 @@ class System:
             raise ValueError(f"{type(self).__name__}: component types listed twice: {types}")
         self.component_types: tuple[type[Component], ...] = types
         self.name = name or type(self).__name__
-        self.scene: Scene | None = None
+        #: The :class:`~gandalf_core.ecs.scene.Scene` it belongs to (set by ``Scene.add_system``; the scene
+        #: imports systems, never the other way round).
+        self.scene: Any = None
         #: False pauses the system: the scene skips its update (``Scene.run_system`` still runs it once).
         self.enabled = True
         #: Wall-clock seconds of its last ``on_update_system`` (written by the scene).

@@ -41,6 +41,8 @@ _SHADOW_ON_OFFSET = LIGHTS_LAYOUT.offset("shadow")
 class RenderSystem(System):
     """Draws the scene with ``renderer`` once per frame."""
 
+    saved = False  # the app adds it; a saved scene does not hold it
+
     def __init__(self, renderer: Renderer) -> None:
         super().__init__([TransformComponent, MeshComponent, MaterialComponent])
         self.renderer = renderer

@@ -1,4 +1,4 @@
-"""Core systems that every scene can use: transforms, lights, camera controllers."""
+"""Core systems that every scene can use: transforms, lights, camera controllers, a spin."""
 
 from .camera_controllers import (
     FlyControllerComponent,
@@ -7,6 +7,7 @@ from .camera_controllers import (
     OrbitControllerSystem,
 )
 from .light_system import LightSystem, pack_lights, pack_shadow
+from .spin import SpinComponent, SpinSystem
 from .transform_system import TransformSystem, set_parent_keep_world, world_matrix
 
 __all__ = [
@@ -15,6 +16,8 @@ __all__ = [
     "LightSystem",
     "OrbitControllerComponent",
     "OrbitControllerSystem",
+    "SpinComponent",
+    "SpinSystem",
     "TransformSystem",
     "pack_lights",
     "pack_shadow",

@@ -11,7 +11,6 @@ from collections.abc import Sequence
 import numpy as np
 
 from gandalf_core import Component
-from gandalf_core.usd import register_component
 
 
 def vector3(owner: str, field: str, value: Sequence[float]) -> np.ndarray:
@@ -50,5 +49,3 @@ class GravityComponent(Component):
 # --8<-- [end:component]
 
 # Saved in USD scenes by name (the loader only builds classes registered like this).
-register_component(GravityComponent,
-                   fields=["gravity", "velocity", "floor", "restitution", "position", "previous"])

@@ -12,7 +12,6 @@ from __future__ import annotations
 import numpy as np
 
 from gandalf_core import System, TransformComponent
-from gandalf_core.usd import register_system
 
 from .components import GravityComponent
 from .fixed_step import FixedStep
@@ -68,4 +67,3 @@ class GravitySystem(FixedStepSystem):
 # --8<-- [end:gravity]
 
 # Saved in USD scenes by name (the loader only builds classes registered like this).
-register_system(GravitySystem)

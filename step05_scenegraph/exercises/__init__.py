@@ -3,7 +3,6 @@
 Grade them with ``pytest --student tests/step05_scenegraph``.
 """
 
-from gandalf_core.usd import register_system
 
 from .house import (
     ORANGE,
@@ -26,5 +25,3 @@ __all__ = [
     "semi_implicit_euler_step",
 ]
 
-# Saved in USD scenes by name (the loader only builds classes registered like this).
-register_system(HouseRotationSystem)

@@ -5,7 +5,6 @@ from __future__ import annotations
 import uuid
 
 from gandalf_core import Component
-from gandalf_core.usd import register_component
 
 
 class ReparentOnKeyComponent(Component):
@@ -16,4 +15,3 @@ class ReparentOnKeyComponent(Component):
         self.key = key.upper()
 
 # Saved in USD scenes by name (the loader only builds classes registered like this).
-register_component(ReparentOnKeyComponent, fields=["other_parent", "key"])  # other_parent: an entity

@@ -16,8 +16,7 @@ from gandalf_core import ClearColorComponent, Component, InfoComponent, LinkComp
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, TextureData, uv_sphere, value_noise
-from step03_textures.components import SpinComponent
-from step03_textures.spin import SpinSystem
+from gandalf_core.systems import SpinComponent, SpinSystem
 
 from .components import ReparentOnKeyComponent
 from .systems import ReparentSystem

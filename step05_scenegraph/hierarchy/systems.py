@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from gandalf_core import System
 from gandalf_core.systems.transform_system import set_parent_keep_world
-from gandalf_core.usd import register_system
 
 from .components import ReparentOnKeyComponent
 
@@ -27,4 +26,3 @@ class ReparentSystem(System):
             swap.other_parent = current
 
 # Saved in USD scenes by name (the loader only builds classes registered like this).
-register_system(ReparentSystem)

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from gandalf_core import Component
-from gandalf_core.usd import register_component
 
 
 class HouseRotationComponent(Component):
@@ -16,4 +15,3 @@ class HouseRotationComponent(Component):
         self.pause_key = pause_key.upper()
 
 # Saved in USD scenes by name (the loader only builds classes registered like this).
-register_component(HouseRotationComponent, fields=["speed", "angle", "paused", "pause_key"])

@@ -7,7 +7,6 @@ from collections.abc import Sequence
 import numpy as np
 
 from gandalf_core import Component
-from gandalf_core.usd import register_component
 
 from ..custom_systems.components import vector3
 
@@ -52,5 +51,3 @@ class SpringComponent(Component):
         self.start = np.zeros(3)
 
 # Saved in USD scenes by name (the loader only builds classes registered like this).
-register_component(SpringComponent, fields=["rest", "stiffness", "mass", "damping", "integrator", "velocity",
-                                            "reset_distance", "resets", "position", "previous", "start"])

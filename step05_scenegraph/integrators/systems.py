@@ -12,7 +12,6 @@ import warnings
 import numpy as np
 
 from gandalf_core import TransformComponent
-from gandalf_core.usd import register_system
 
 from ..custom_systems.systems import FixedStepSystem
 from ..solutions.integrators import rk4_step, semi_implicit_euler_step
@@ -63,4 +62,3 @@ class SpringSystem(FixedStepSystem):
         body.position, body.velocity = x, v
 
 # Saved in USD scenes by name (the loader only builds classes registered like this).
-register_system(SpringSystem)

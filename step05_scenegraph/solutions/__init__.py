@@ -1,6 +1,5 @@
 """Step 05 reference solutions (same API as ``exercises``)."""
 
-from gandalf_core.usd import register_system
 
 from .house import (
     ORANGE,
@@ -23,5 +22,3 @@ __all__ = [
     "semi_implicit_euler_step",
 ]
 
-# Saved in USD scenes by name (the loader only builds classes registered like this).
-register_system(HouseRotationSystem)

@@ -2,11 +2,9 @@
 ``pytest --student tests/step06_lighting``. The shader files are included by the step's shaders from this folder.
 """
 
-from gandalf_core.usd import register_system
 
 from .lights import LightCollectionSystem
 from .optics import reflect, refract
 
 __all__ = ["LightCollectionSystem", "reflect", "refract"]
 
-register_system(LightCollectionSystem)  # allowed in saved scenes (gandalf_core.usd)

@@ -7,7 +7,6 @@ from collections.abc import Sequence
 import numpy as np
 
 from gandalf_core import Component
-from gandalf_core.usd import register_component
 
 
 class OrbitComponent(Component):
@@ -26,4 +25,3 @@ class OrbitComponent(Component):
         return self.center + self.radius * np.array([np.cos(a), 0.0, -np.sin(a)])
 
 
-register_component(OrbitComponent, fields=["center", "radius", "angle", "speed"])  # saved in USD files

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from gandalf_core import System, TransformComponent
-from gandalf_core.usd import register_system
 
 from .components import OrbitComponent
 
@@ -20,4 +19,3 @@ class OrbitSystem(System):
         transform.translation = orbit.position()
 
 
-register_system(OrbitSystem)  # allowed in saved scenes (gandalf_core.usd)

@@ -38,7 +38,6 @@ from gandalf_core.ecs import Component, System
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, MeshData, ResourceError
 from gandalf_core.resources.mesh_loader import load_mesh
-from gandalf_core.usd import register_component, register_system
 
 #: Frames the course tour renders before it takes the picture (at 60 frames per simulated second): 1.5 s,
 #: 85 % of the way out.
@@ -282,7 +281,4 @@ def exploded_triangles_np(mesh: MeshData, model: np.ndarray, t: float, amount: f
     return corners + offset[:, None, :]
 
 
-# In saved scenes (gandalf_core.usd): the clock is saved; the system is not.
-register_component(ExplodeComponent, fields=["time", "speed"])
-register_system(ExplodeSystem, unsaveable="it drives the variant's explode route (an OpenGL geometry shader or a "
-                "WebGPU compute pre-pass with its GPU buffers), which the variant file builds for its API")
+# In saved scenes (step07_advanced.usd): the clock is saved; the system is not.

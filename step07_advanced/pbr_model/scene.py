@@ -25,8 +25,7 @@ from gandalf_core.components import (
 )
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import CubeTextureData, MaterialData, ResourceError, load_gltf
-from step03_textures.components import SpinComponent
-from step03_textures.spin import SpinSystem
+from gandalf_core.systems import SpinComponent, SpinSystem
 
 from .ibl import SUN_DIRECTION, IBLMaps, default_ibl
 from .shaders import SHADER_NAME

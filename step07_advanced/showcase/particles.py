@@ -20,7 +20,6 @@ import numpy as np
 
 from gandalf_core import TransformComponent
 from gandalf_core.ecs import Component, System
-from gandalf_core.usd import register_component, register_system
 
 #: Particles per work group (``local_size_x`` / ``@workgroup_size``): dispatch ceil(N / 64) groups.
 WORKGROUP_SIZE = 64
@@ -190,11 +189,3 @@ class ParticleSystem(System):
     def on_update_entity(self, ts: float, entity: uuid.UUID, components: tuple[Any, ...]) -> None:
         particle, transform = components
         transform.translation = self._positions[particle.index]
-
-
-# --8<-- [start:usd]
-# In saved scenes (gandalf_core.usd): the markers are saved; the system is refused, saying why.
-register_component(ParticleComponent, fields=["index"])
-register_system(ParticleSystem, unsaveable="the particles live in a GPU buffer that a compute "
-                "kernel steps (chosen by the variant file for its API); a file cannot hold it")
-# --8<-- [end:usd]

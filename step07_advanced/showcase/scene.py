@@ -25,8 +25,7 @@ from gandalf_core.components import (
 )
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, cube, plane, sky_cube, uv_sphere
-from step03_textures.components import SpinComponent
-from step03_textures.spin import SpinSystem
+from gandalf_core.systems import SpinComponent, SpinSystem
 
 from .particles import (
     NumpyParticleKernel,

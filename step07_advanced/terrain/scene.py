@@ -26,7 +26,6 @@ from gandalf_core.components import (
 from gandalf_core.ecs import System
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, MeshData
-from gandalf_core.usd import register_system
 
 from .heightfield import encode_heights, fractal_heights
 from .patches import TerrainParams
@@ -104,6 +103,4 @@ def build_scene(impl: ModuleType, terrain: TerrainBackend, eye: Any = EYE, targe
     return scene
 
 
-# In saved scenes (gandalf_core.usd): refused, naming why.
-register_system(TessellationSystem, unsaveable="it drives the variant's tessellation backend (GPU tessellation "
-                "stages in OpenGL, a compute tessellator in WebGPU), which the variant file builds for its API")
+# In saved scenes (step07_advanced.usd): refused, naming why.

@@ -18,16 +18,16 @@ import pytest
 
 from gandalf_core import Application, InfoComponent, LinkComponent, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, ClearColorComponent, MaterialComponent, MeshComponent
-from gandalf_core.editor import PANEL_KINDS, EditorPanelComponent, disable_editor, enable_editor, is_editor_entity
 from gandalf_core.math import look_at_rotation
 from gandalf_core.render import RenderSystem
 from gandalf_core.resources import MaterialData, checkerboard, cube
 from gandalf_tools.testing import psnr
+from step07_advanced.editor import PANEL_KINDS, EditorPanelComponent, disable_editor, enable_editor, is_editor_entity
 
 SHADERS = Path(__file__).parent / "shaders"
 ROOT = Path(__file__).resolve().parents[2]
 W, H = 640, 480
-HAS_USD = importlib.util.find_spec("gandalf_core.usd") is not None
+HAS_USD = importlib.util.find_spec("step07_advanced.usd") is not None
 
 
 def make_app(backend: str) -> Application:
@@ -301,9 +301,9 @@ def test_load_errors_are_reported_not_raised(app, tmp_path: Path) -> None:
     app.run(frames=1)  # the message is drawn; nothing crashes
 
 
-@pytest.mark.skipif(not HAS_USD, reason="gandalf_core.usd is not available")
+@pytest.mark.skipif(not HAS_USD, reason="step07_advanced.usd is not available")
 def test_save_writes_no_editor_entities_and_load_switches(app, tmp_path: Path) -> None:
-    from gandalf_core.usd import load_scene
+    from step07_advanced.usd import load_scene
 
     editor = enable_editor(app)
     app.run(frames=1)
@@ -323,7 +323,7 @@ def test_save_writes_no_editor_entities_and_load_switches(app, tmp_path: Path) -
 def test_editor_is_off_by_default_and_not_imported() -> None:
     code = (
         "import sys\n"
-        "import gandalf_core, gandalf_core.editor\n"
+        "import gandalf_core, step07_advanced.editor\n"
         f"sys.path.insert(0, {str(ROOT / 'tests' / 'core')!r})\n"
         "from test_editor import make_app, editor_scene\n"
         "app = make_app('opengl'); app.add_scene(editor_scene()); app.run(frames=2)\n"

@@ -19,8 +19,8 @@ from gandalf_core import InfoComponent, LinkComponent, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent
 from gandalf_core.components.fields import FieldError
 from gandalf_core.ecs import System
-from gandalf_core.editor import disable_editor, enable_editor, is_editor_entity
 from gandalf_core.resources import checkerboard
+from step07_advanced.editor import disable_editor, enable_editor, is_editor_entity
 
 sys.path.insert(0, str(Path(__file__).parent))
 from test_editor import editor_scene, make_app, named  # noqa: E402

@@ -16,9 +16,9 @@ import pytest
 
 from gandalf_core import InfoComponent, LinkComponent, TransformComponent
 from gandalf_core.components import LightComponent, MeshComponent
-from gandalf_core.editor import EditorPanelComponent, disable_editor, enable_editor
 from gandalf_core.render import RenderSystem
 from gandalf_tools.testing import psnr
+from step07_advanced.editor import EditorPanelComponent, disable_editor, enable_editor
 
 sys.path.insert(0, str(Path(__file__).parent))
 from test_editor import H, center, click, editor_scene, make_app, named  # noqa: E402
@@ -221,7 +221,7 @@ def test_unnamed_entities_get_readable_rows(app) -> None:
     bare = app.scene.create_entity(TransformComponent(), LightComponent())
     app.run(frames=2)
     assert f"hierarchy/{bare}" in editor.item_rects
-    from gandalf_core.editor.entities import display_name
+    from step07_advanced.editor.entities import display_name
 
     assert display_name(app.scene, bare).startswith("Light (")
 

@@ -203,7 +203,7 @@ def test_material_buffers_are_validated():
 
 
 def test_patch_meshes_and_material_buffers_round_trip_through_usd(tmp_path):
-    from gandalf_core.usd import load_scene, save_scene
+    from step07_advanced.usd import load_scene, save_scene
 
     original = scene_with(MeshData(QUAD, indices=[0, 1, 2, 3], patch_size=4), MaterialData("tess", buffers=["b"]))
     loaded = load_scene(save_scene(original, tmp_path / "patches.usda"))

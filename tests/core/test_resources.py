@@ -647,7 +647,7 @@ def test_anisotropy_is_checked(settings, needle):
 def test_anisotropy_round_trips_through_usd(tmp_path):
     from gandalf_core import Scene
     from gandalf_core.resources import TextureData
-    from gandalf_core.usd import load_scene, save_scene
+    from step07_advanced.usd import load_scene, save_scene
 
     scene = Scene("aniso")
     scene.assets.texture("floor", TextureData(np.full((8, 8, 4), 200, np.uint8), anisotropy=8))

@@ -402,7 +402,7 @@ def test_shadow_bias_scales_the_packed_bias_and_defaults_to_the_old_bytes():
 
 
 def test_shadow_bias_survives_usd(tmp_path):
-    from gandalf_core.usd import load_scene, save_scene
+    from step07_advanced.usd import load_scene, save_scene
 
     scene = shadow_scene()
     for entity in scene.entities:

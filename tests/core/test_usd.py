@@ -40,7 +40,7 @@ from gandalf_core.resources import (
     sky_cube,
     uv_sphere,
 )
-from gandalf_core.usd import (
+from step07_advanced.usd import (
     USDSceneError,
     USDSceneWarning,
     load_scene,
@@ -516,6 +516,6 @@ def test_read_only_folder(tmp_path, saved):
 
 
 def test_importing_the_package_does_not_import_usd():
-    code = "import sys, gandalf_core.usd; print('pxr' in sys.modules)"
+    code = "import sys, step07_advanced.usd; print('pxr' in sys.modules)"
     out = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "False"

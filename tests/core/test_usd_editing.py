@@ -19,7 +19,7 @@ import pytest
 from gandalf_core import Application, InfoComponent, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, ClearColorComponent, MaterialComponent, MeshComponent
 from gandalf_core.resources import MaterialData, cube
-from gandalf_core.usd import load_scene, save_scene
+from step07_advanced.usd import load_scene, save_scene
 
 pytest.importorskip("pxr")
 
@@ -93,7 +93,7 @@ HAS_EDITOR = importlib.util.find_spec("imgui_bundle") is not None
 
 @pytest.mark.skipif(not HAS_EDITOR, reason="imgui-bundle is not installed")
 def test_editor_load_after_a_colour_edit(backend, tmp_path: Path) -> None:
-    from gandalf_core.editor import disable_editor, enable_editor
+    from step07_advanced.editor import disable_editor, enable_editor
 
     with Application(backend, W, H, headless=True, fixed_dt=1 / 60) as app:
         app.add_scene(cube_scene())
@@ -112,7 +112,7 @@ def test_editor_load_after_a_colour_edit(backend, tmp_path: Path) -> None:
             # saved, so they are not doubled either.
             names = [type(s).__name__ for s in app.scene.systems]
             assert names.count("TransformSystem") == names.count("LightSystem") == names.count("RenderSystem") == 1
-            editor_owned = [type(s).__module__.startswith("gandalf_core.editor") for s in app.scene.systems]
+            editor_owned = [type(s).__module__.startswith("step07_advanced.editor") for s in app.scene.systems]
             panels = [n for n, owned in zip(names, editor_owned) if owned]
             assert len(panels) == len(set(panels)), names
         finally:

@@ -27,9 +27,9 @@ from gandalf_core.components import (
 )
 from gandalf_core.math import quat_from_axis_angle, quat_mul
 from gandalf_core.resources import MaterialData, MeshData, TextureData, checkerboard, cube, linear_to_srgb, uv_sphere
-from gandalf_core.usd import USDSceneError, USDSceneWarning, load_scene
-from gandalf_core.usd.foreign import PreviewSurface, decompose
 from gandalf_tools.testing import psnr
+from step07_advanced.usd import USDSceneError, USDSceneWarning, load_scene
+from step07_advanced.usd.foreign import PreviewSurface, decompose
 
 pxr = pytest.importorskip("pxr")
 from pxr import Gf, Sdf, Usd, UsdGeom, UsdLux, UsdShade, Vt  # noqa: E402
@@ -501,7 +501,7 @@ def test_pxr_scene_renders_like_the_same_scene_built_by_hand(tmp_path, backend):
 
 
 def test_a_gprim_added_to_a_gandalf_file_by_another_tool_loads(tmp_path):
-    from gandalf_core.usd import save_scene
+    from step07_advanced.usd import save_scene
 
     scene = Scene("mine")
     scene.create_entity(InfoComponent("camera"), TransformComponent((0, 0, 5)), CameraComponent())
@@ -543,7 +543,7 @@ def test_a_big_plain_mesh_loads_quickly(tmp_path):
 def test_a_gandalf_file_referenced_into_another_stage(tmp_path):
     """A prop saved by gandalf, referenced by a layout file: its meshes, materials and textures come back exactly,
     read from the prop file's own /Assets (USD does not carry prims outside the referenced default prim)."""
-    from gandalf_core.usd import save_scene
+    from step07_advanced.usd import save_scene
 
     (tmp_path / "props").mkdir()
     prop = Scene("prop")

@@ -21,7 +21,7 @@ from test_usd_behaviour import SAVABLE, UNSAVEABLE, build  # the same folder: py
 
 from gandalf_core import Scene
 from gandalf_core.components import MeshComponent
-from gandalf_core.usd import load_scene, save_scene
+from step07_advanced.usd import load_scene, save_scene
 
 pxr = pytest.importorskip("pxr")
 from pxr import Sdf, Usd, UsdGeom, UsdShade, UsdValidation  # noqa: E402

@@ -17,7 +17,7 @@ from gandalf_core.resources import MaterialData, TextureData, linear_to_srgb, qu
 from gandalf_tools.testing import compare_images, compare_to_reference, render_frames
 from step03_textures import opengl, solutions, webgpu
 from step03_textures.atlas import CROSS_CELLS, CROSS_GRID, dice_atlas
-from step03_textures.components import SpinComponent
+from gandalf_core.systems import SpinComponent
 from step03_textures.scene import SHADER, build_scene, with_uvs
 
 REFERENCES = Path(__file__).parent / "references"

@@ -14,10 +14,9 @@ import pytest
 
 from gandalf_core import InfoComponent, Scene, TransformComponent, TransformSystem
 from gandalf_core.math import quat_from_axis_angle, quat_from_euler, quat_to_matrix3
+from gandalf_core.systems import SpinComponent, SpinSystem
 from gandalf_core.systems.transform_system import set_parent_keep_world, world_matrix
 from gandalf_tools.testing import compare_images, compare_to_reference
-from step03_textures.components import SpinComponent
-from step03_textures.spin import SpinSystem
 from step05_scenegraph.hierarchy import opengl, webgpu
 from step05_scenegraph.hierarchy.scene import build_solar_scene
 

@@ -25,7 +25,7 @@ from gandalf_core.components import (  # noqa: E402
     TransformComponent,
 )
 from gandalf_core.resources import MaterialData, checkerboard, cube  # noqa: E402
-from gandalf_core.usd import USDSceneError, USDSceneWarning, load_scene, save_scene  # noqa: E402
+from step07_advanced.usd import USDSceneError, USDSceneWarning, load_scene, save_scene  # noqa: E402
 
 from .catalogue import error, params, result, run, warning  # noqa: E402
 

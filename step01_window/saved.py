@@ -1,0 +1,15 @@
+"""What step 01 saves in USD scenes: declared once, read by the final step's USD layer (``step07_advanced.usd``).
+
+``COMPONENTS`` maps a component class to the fields a file holds; ``SYSTEMS`` a system class to the constructor
+settings it is rebuilt with (a scene may name only these). Nothing here imports USD: the lessons stay free
+of the persistence layer, and a file names classes, never code.
+"""
+
+from __future__ import annotations
+
+from . import exercises, solutions
+from .components import HueCycleComponent
+
+COMPONENTS = {HueCycleComponent: ("hue", "speed", "saturation", "value")}
+# The student's system and the reference alike: a scene saved from either comes back with it.
+SYSTEMS = {exercises.HueCycleSystem: (), solutions.HueCycleSystem: ()}

@@ -1,0 +1,26 @@
+"""What step 04 saves in USD scenes: declared once, read by the final step's USD layer (``step07_advanced.usd``).
+
+``COMPONENTS`` maps a component class to the fields a file holds; ``SYSTEMS`` a system class to the constructor
+settings it is rebuilt with (a scene may name only these); ``FUNCTIONS`` the functions a saved setting may name.
+Nothing here imports USD: the lessons stay free of the persistence layer, and a file names classes, never code.
+"""
+
+from __future__ import annotations
+
+from . import exercises, solutions
+from .components import LookAtComponent, OrbitCameraComponent
+from .systems import CameraSwitchSystem, LookAtSystem
+
+COMPONENTS = {
+    OrbitCameraComponent: ("target", "distance", "yaw", "pitch", "sensitivity", "zoom_factor", "min_pitch",
+                           "max_pitch", "min_distance", "max_distance"),
+    # comes back as LookAtComponent(eye=, target=, up=)
+    LookAtComponent: ("eye", "target", "up"),
+}
+SYSTEMS = {
+    exercises.OrbitCameraSystem: (),
+    solutions.OrbitCameraSystem: (),
+    LookAtSystem: ("look_at",),  # keeps its look_at function, one of FUNCTIONS
+    CameraSwitchSystem: (),
+}
+FUNCTIONS = (exercises.look_at, solutions.look_at)

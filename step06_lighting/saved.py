@@ -1,0 +1,15 @@
+"""What step 06 saves in USD scenes: declared once, read by the final step's USD layer (``step07_advanced.usd``).
+
+``COMPONENTS`` maps a component class to the fields a file holds; ``SYSTEMS`` a system class to the constructor
+settings it is rebuilt with (a scene may name only these). Nothing here imports USD: the lessons stay free
+of the persistence layer, and a file names classes, never code.
+"""
+
+from __future__ import annotations
+
+from . import exercises, solutions
+from .lights.components import OrbitComponent
+from .lights.systems import OrbitSystem
+
+COMPONENTS = {OrbitComponent: ("center", "radius", "angle", "speed")}
+SYSTEMS = {OrbitSystem: (), exercises.LightCollectionSystem: (), solutions.LightCollectionSystem: ()}

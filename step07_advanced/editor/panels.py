@@ -1,0 +1,77 @@
+"""The editor's panel systems, one per panel kind; the stats and file panels live here, the others in their
+own modules (hierarchy, inspector, viewport, systems, content browser, console, menu bar).
+
+Every system draws the visible :class:`EditorPanelComponent` entities of its kind (see
+:class:`~step07_advanced.editor.panel_base.PanelSystem`).
+"""
+
+from __future__ import annotations
+
+from imgui_bundle import imgui
+
+from .components import EditorPanelComponent, is_editor_entity
+from .console_panel import ConsolePanelSystem
+from .content_panel import ContentPanelSystem
+from .hierarchy_panel import HierarchyPanelSystem
+from .inspector_panel import InspectorPanelSystem, _edited
+from .menu_bar import MenuBarSystem
+from .panel_base import ERROR_COLOR, PanelSystem, wrapped
+from .systems_panel import SystemsPanelSystem
+from .viewport_panel import ViewportPanelSystem
+
+
+class StatsPanelSystem(PanelSystem):
+    """Frame rate, frame time, the editor's own share of it, draw calls, entity count and backend."""
+
+    kind = "stats"
+
+    def draw(self, panel: EditorPanelComponent) -> None:
+        editor = self.editor
+        app = editor.app
+        renderer = app.renderer
+        scene = self.scene
+        if editor._entity_count_key != scene.membership_version:
+            editor._entity_count = sum(1 for e in scene.entities if not is_editor_entity(scene, e))
+            editor._entity_count_key = scene.membership_version
+        # In a window: the wall clock, whatever the app's time step. Headless (captures, tests): the app's
+        # own time step, so that a picture does not depend on how fast the machine was.
+        seconds = editor.frame_seconds if app.window is not None else editor.frame_dt
+        imgui.text(f"fps       {1.0 / seconds if seconds else 0.0:8.1f}")
+        imgui.text(f"frame     {1000.0 * seconds:8.3f} ms")
+        if app.window is not None:
+            imgui.text(f"editor    {1000.0 * editor.gui_seconds:8.3f} ms")
+        imgui.text(f"draws     {renderer.stats['draw_calls'] + editor.viewport.draw_calls:8d}")  # + the viewport's
+        imgui.text(f"entities  {editor._entity_count:8d}")
+        imgui.text(f"backend   {renderer.backend:>8}")
+
+
+class FilePanelSystem(PanelSystem):
+    """Save and Load of the scene as USD; the path is typed in, errors are shown whole in the panel."""
+
+    kind = "file"
+
+    def draw(self, panel: EditorPanelComponent) -> None:
+        editor = self.editor
+        changed, path = imgui.input_text("path", editor.path)
+        if changed:
+            editor.path = path
+        if imgui.button("Save"):
+            editor.save(editor.path)
+        self.remember("file/save")
+        imgui.same_line()
+        if imgui.button("Load"):
+            editor.load(editor.path)
+        self.remember("file/load")
+        if editor.status:
+            wrapped(editor.status, ERROR_COLOR if editor.status_is_error else None)
+            self.remember("file/status")
+
+
+#: One system per panel kind, in drawing order (the menu bar first; the viewport's system also renders the scene
+#: into its texture during the frame's update).
+PANEL_SYSTEMS: tuple[type[PanelSystem], ...] = (
+    MenuBarSystem, ViewportPanelSystem, HierarchyPanelSystem, InspectorPanelSystem, SystemsPanelSystem,
+    ContentPanelSystem, ConsolePanelSystem, StatsPanelSystem, FilePanelSystem,
+)
+
+__all__ = ["PANEL_SYSTEMS", "PanelSystem", "_edited"]
