@@ -14,10 +14,10 @@ from gandalf_core import InfoComponent, Scene, TransformComponent
 from gandalf_core.components import MaterialComponent, MeshComponent
 from gandalf_core.math import quat_from_axis_angle, quat_from_euler, quat_mul
 from gandalf_core.resources import MaterialData, TextureData, linear_to_srgb, quad, srgb_to_linear
+from gandalf_core.systems import SpinComponent
 from gandalf_tools.testing import compare_images, compare_to_reference, render_frames
 from step03_textures import opengl, solutions, webgpu
 from step03_textures.atlas import CROSS_CELLS, CROSS_GRID, dice_atlas
-from gandalf_core.systems import SpinComponent
 from step03_textures.scene import SHADER, build_scene, with_uvs
 
 REFERENCES = Path(__file__).parent / "references"
