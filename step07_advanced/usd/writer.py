@@ -142,8 +142,9 @@ class _Writer:
         self.write_systems()
         if self.unsaved:
             warnings.warn(
-                f"{self.path}: components with no USD mapping were not saved (register them with "
-                f"step07_advanced.usd.register_component): {'; '.join(self.unsaved)}",
+                f"{self.path}: parts with no USD mapping were not saved (a step declares them in its saved.py, "
+                f"a program registers them with step07_advanced.usd.register_component / register_system): "
+                f"{'; '.join(self.unsaved)}",
                 USDSceneWarning,
                 stacklevel=3,
             )
