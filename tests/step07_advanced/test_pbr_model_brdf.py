@@ -4,10 +4,14 @@ the GPU through the shader harness and compared with float64 numpy twins on the 
 
 The inputs include every edge the stub's comments name: roughness 0 and 1 (and out of range), n·v and n·l at 0,
 just above 0 and negative, cos θ outside [0, 1], l = -v (no half vector), black base colours and f0 = 0. A
-result must be finite and within a relative tolerance of 2e-3 plus an absolute 1e-6 (the GGX peak at
-roughness 0.045 reaches 7.8e4; the reference solution measures at most about 2e-5 relative on llvmpipe and
-lavapipe). Every check also runs on plausible wrong implementations (mutants, at the end of this file), each
-of which must fail at least one of them.
+result must be finite and within a relative tolerance of 2e-3 plus an absolute 1e-6, widened where float32
+arithmetic itself cannot do better (:func:`distribution_bound`, :func:`specular_bound`): GGX's denominator
+``d = (n·h)² (alpha² - 1) + 1`` cancels near n·h = 1 and small roughness (d falls to alpha² = 4.1e-6 at
+roughness 0.045), so a correct float32 evaluation is off by up to about ``8 u / d`` relative (u = 2^-24, float32's
+unit roundoff: 12 % at the peak; an NVIDIA GPU measured 0.6 % there, Mesa 2e-5), and by ``4 c (1 - alpha²) / d``
+times the error of a float32 n·h made from vectors; likewise 1 / (n·v) and 1 / (n·l) near their 1e-4 clamp and
+Schlick's (1 - v·h)^5. Every check also runs on plausible wrong implementations (mutants, at the end of this file),
+each of which must fail at least one of them.
 """
 
 from __future__ import annotations
@@ -21,6 +25,8 @@ from shader_harness import evaluate, gl_context
 
 LANGUAGE = {"opengl": "glsl", "webgpu": "wgsl"}
 RTOL, ATOL = 2e-3, 1e-6
+#: float32's unit roundoff: one rounding changes a value by at most this much, relatively.
+U = 2.0**-24
 MIN_ROUGHNESS, MIN_COSINE = 0.045, 1e-4
 
 
@@ -45,12 +51,17 @@ def _f32(a) -> np.ndarray:
     return np.asarray(a, dtype=np.float32).astype(np.float64)
 
 
-def _compare(name: str, got: np.ndarray, expected: np.ndarray, cases: dict, hint: str) -> str | None:
+def _compare(name: str, got: np.ndarray, expected: np.ndarray, cases: dict, hint: str,
+             float32_error: np.ndarray | float = 0.0) -> str | None:
+    """None when every case is within RTOL·|expected| + ATOL + ``float32_error`` (the most a correct float32
+    evaluation can be off by, per case: see the module docstring); else one sentence naming the worst case."""
     got = np.asarray(got, dtype=np.float64).reshape(len(expected), -1)
     expected = np.asarray(expected, dtype=np.float64).reshape(len(expected), -1)
+    float32_error = np.asarray(float32_error, dtype=np.float64)
+    allowed = RTOL * np.abs(expected) + ATOL + (float32_error.reshape(len(expected), -1) if float32_error.ndim
+                                                else float32_error)
     finite = np.all(np.isfinite(got), axis=1)
-    error = np.where(finite, np.max(np.abs(np.nan_to_num(got) - expected) - RTOL * np.abs(expected) - ATOL, axis=1),
-                     np.inf)
+    error = np.where(finite, np.max(np.abs(np.nan_to_num(got) - expected) - allowed, axis=1), np.inf)
     if np.all(error <= 0.0):
         return None
     worst = int(np.argmax(error))
@@ -60,11 +71,24 @@ def _compare(name: str, got: np.ndarray, expected: np.ndarray, cases: dict, hint
 
 
 # --- numpy twins ------------------------------------------------------------------------------------------
-def distribution_np(n_dot_h, roughness):
-    r = np.clip(roughness, MIN_ROUGHNESS, 1.0)
-    a2 = r**4
+def _ggx_denominator(n_dot_h, roughness):
+    """alpha² and d = (n·h)² (alpha² - 1) + 1, GGX's denominator before squaring."""
+    a2 = np.clip(roughness, MIN_ROUGHNESS, 1.0) ** 4
     c = np.clip(n_dot_h, 0.0, 1.0)
-    return a2 / (np.pi * (c * c * (a2 - 1.0) + 1.0) ** 2)
+    return a2, c * c * (a2 - 1.0) + 1.0
+
+
+def distribution_np(n_dot_h, roughness):
+    a2, d = _ggx_denominator(n_dot_h, roughness)
+    return a2 / (np.pi * d**2)
+
+
+def distribution_bound(n_dot_h, roughness):
+    """The most a correct float32 D can be off by (absolute), from exact inputs: d's roundings (≤ 4 u absolute)
+    become 8 u / d relative in 1 / d², and a few more roundings add 12 u; times 2 for other orders of the
+    same operations (fused multiply-adds, a2 as (r²)²)."""
+    _, d = _ggx_denominator(n_dot_h, roughness)
+    return 2.0 * (8.0 / d + 12.0) * U * distribution_np(n_dot_h, roughness)
 
 
 def k_direct_np(roughness):
@@ -99,19 +123,45 @@ def diffuse_albedo_np(base, metallic, fresnel):
     return base * (1.0 - np.clip(metallic, 0.0, 1.0))[:, None] * (1.0 - fresnel)
 
 
-def ggx_specular_np(n, v, light, roughness, f0):
+def _specular_cosines(n, v, light):
+    """n·v, n·l, n·h and v·h, h the half vector (n when l + v = 0)."""
     def dot(a, b):
         return np.sum(a * b, axis=-1)
 
-    n_dot_v = np.clip(dot(n, v), MIN_COSINE, 1.0)
-    n_dot_l = np.clip(dot(n, light), MIN_COSINE, 1.0)
     s = light + v
     length = np.linalg.norm(s, axis=-1, keepdims=True)
     h = np.where(length > 1e-6, s / np.maximum(length, 1e-6), n)
-    d = distribution_np(dot(n, h), roughness)
+    return dot(n, v), dot(n, light), dot(n, h), dot(v, h)
+
+
+def _specular_from(cosines, roughness, f0):
+    n_dot_v, n_dot_l, n_dot_h, v_dot_h = cosines
+    n_dot_v = np.clip(n_dot_v, MIN_COSINE, 1.0)
+    n_dot_l = np.clip(n_dot_l, MIN_COSINE, 1.0)
+    d = distribution_np(n_dot_h, roughness)
     g = geometry_np(n_dot_v, n_dot_l, k_direct_np(roughness))
-    f = fresnel_np(dot(v, h), f0)
+    f = fresnel_np(v_dot_h, f0)
     return (d * g / (4.0 * n_dot_v * n_dot_l))[:, None] * f
+
+
+def ggx_specular_np(n, v, light, roughness, f0):
+    return _specular_from(_specular_cosines(n, v, light), roughness, f0)
+
+
+def specular_bound(n, v, light, roughness, f0):
+    """The most a correct float32 ggx_specular can be off by (absolute, per channel): each cosine made from
+    float32 unit vectors (a dot product, and a normalised half vector for n·h and v·h) is within 8 u of its exact
+    value, so the result moves by up to |f(cos + 8u) - f(cos - 8u)| / 2 for each; D's own roundings add
+    8 u / d relative (see :func:`distribution_bound`) and the remaining products 24 u; times 2 for margin."""
+    cosines = _specular_cosines(n, v, light)
+    spec = _specular_from(cosines, roughness, f0)
+    moved = np.zeros_like(spec)
+    for i in range(4):
+        up, down = list(cosines), list(cosines)
+        up[i], down[i] = cosines[i] + 8.0 * U, cosines[i] - 8.0 * U
+        moved += np.abs(_specular_from(up, roughness, f0) - _specular_from(down, roughness, f0)) / 2.0
+    _, d = _ggx_denominator(cosines[2], roughness)
+    return 2.0 * (moved + ((8.0 / d + 24.0) * U)[:, None] * np.abs(spec))
 
 
 # --- inputs ---------------------------------------------------------------------------------------------
@@ -131,7 +181,8 @@ def check_distribution(language: str, include_dir: Path) -> str | None:
     c, r = _f32(c), _f32(r)
     got = run(language, include_dir, "distribution_ggx(c, r)", {"c": ("f32", c), "r": ("f32", r)}, "f32")
     return _compare("distribution_ggx(n_dot_h, roughness)", got, distribution_np(c, r), {"n_dot_h": c, "roughness": r},
-                    "alpha = clamp(roughness, 0.045, 1)², D = alpha² / (pi ((n·h)² (alpha² - 1) + 1)²), n·h in [0, 1]")
+                    "alpha = clamp(roughness, 0.045, 1)², D = alpha² / (pi ((n·h)² (alpha² - 1) + 1)²), n·h in [0, 1]",
+                    distribution_bound(c, r))
 
 
 def check_k(language: str, include_dir: Path) -> str | None:
@@ -226,7 +277,8 @@ def check_specular(language: str, include_dir: Path) -> str | None:
                "f0": ("vec4", _pad(f0))}, "vec4")[:, :3]
     return _compare("ggx_specular(n, v, l, roughness, f0)", got, ggx_specular_np(n, v, light, r, f0),
                     {"n": n, "v": v, "l": light, "roughness": r, "f0": f0},
-                    "D G F / (4 (n·v)(n·l)) with n·v, n·l clamped to [1e-4, 1], G with k_direct, h = n when l + v = 0")
+                    "D G F / (4 (n·v)(n·l)) with n·v, n·l clamped to [1e-4, 1], G with k_direct, h = n when l + v = 0",
+                    specular_bound(n, v, light, r, f0))
 
 
 CHECKS: dict[str, Callable[[str, Path], str | None]] = {
