@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from typing import Any
 
 
+# --8<-- [start:command]
 @dataclass
 class Command:
     """One edit: ``do`` applies it (again, on redo), ``undo`` takes it back; ``label`` names it in the Edit menu.
@@ -25,6 +26,7 @@ class Command:
     do: Callable[[], Any]
     undo: Callable[[], Any]
     merge_key: Any = None
+# --8<-- [end:command]
 
 
 class CommandStack:

@@ -32,6 +32,7 @@ def _pair(name: str, value: Sequence[float]) -> tuple[float, float]:
     return x, y
 
 
+# --8<-- [start:panel_component]
 class EditorPanelComponent(Component):
     """One editor panel: its ``kind`` (see :data:`PANEL_KINDS`), window ``title``, visibility and layout.
 
@@ -62,3 +63,4 @@ class EditorPanelComponent(Component):
 def is_editor_entity(scene: Any, entity: uuid.UUID) -> bool:
     """True for entities the editor owns (its panels): hidden from the hierarchy, never saved."""
     return scene.has_component(entity, EditorPanelComponent)
+# --8<-- [end:panel_component]

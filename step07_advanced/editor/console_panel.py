@@ -17,6 +17,7 @@ _LOCATION_COLOR = imgui.ImVec4(0.55, 0.8, 1.0, 1.0)
 SHOWN = 200
 
 
+# --8<-- [start:console]
 class ConsolePanelSystem(PanelSystem):
     """Shows :attr:`Editor.log`."""
 
@@ -46,3 +47,4 @@ class ConsolePanelSystem(PanelSystem):
         if entries and imgui.get_scroll_y() >= imgui.get_scroll_max_y() - 4:
             imgui.set_scroll_here_y(1.0)  # follow the newest entry unless the user scrolled up
         imgui.end_child()
+# --8<-- [end:console]

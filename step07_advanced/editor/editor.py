@@ -132,6 +132,7 @@ class Editor(EditorActions):
             self.install(app.scenes.active)
 
     # --- scenes -------------------------------------------------------------------------------------
+    # --8<-- [start:install]
     def install(self, scene: Scene) -> None:
         """Add the panel systems and panel entities to ``scene`` (once per scene)."""
         if id(scene) in self._installed:
@@ -150,6 +151,7 @@ class Editor(EditorActions):
         panels = [EditorPanelComponent(kind, title, position=pos, size=size)
                   for kind, title, pos, size in _default_layout(renderer.width, renderer.height)]
         self._installed[id(scene)] = (scene, [scene.create_entity(p) for p in panels], systems)
+    # --8<-- [end:install]
 
     def uninstall(self, scene: Scene) -> None:
         """Remove the editor's entities and systems from ``scene``."""

@@ -15,6 +15,7 @@ from .editor import Editor
 _EDITORS: weakref.WeakKeyDictionary[Any, Editor] = weakref.WeakKeyDictionary()
 
 
+# --8<-- [start:enable]
 def enable_editor(app: Any) -> Editor:
     """Turn the editor on for ``app`` (either backend, window or headless); returns the (only) Editor."""
     editor = editor_of(app)
@@ -23,6 +24,7 @@ def enable_editor(app: Any) -> Editor:
 
         editor = _EDITORS[app] = Editor(app, PANEL_SYSTEMS)
     return editor
+# --8<-- [end:enable]
 
 
 def disable_editor(app: Any) -> None:

@@ -45,6 +45,7 @@ RESOURCE_FIELDS = {MeshComponent: ("mesh", "meshes"), MaterialComponent: ("mater
 _CACHE: dict[type, tuple[FieldSpec, ...]] = {}
 
 
+# --8<-- [start:kinds]
 def _from_descriptor(name: str, field: Field) -> FieldSpec:
     if isinstance(field, Number):
         return FieldSpec(name, "number", field.low, field.high)
@@ -73,6 +74,7 @@ def _from_value(name: str, value: Any) -> FieldSpec | None:
         if arr.ndim == 1 and 2 <= arr.size <= 4 and np.issubdtype(arr.dtype, np.number):
             return FieldSpec(name, "vector", size=int(arr.size))
     return None
+# --8<-- [end:kinds]
 
 
 def field_specs(component: Component) -> tuple[FieldSpec, ...]:
@@ -101,10 +103,12 @@ def field_specs(component: Component) -> tuple[FieldSpec, ...]:
             if len(shape) == 1 and 2 <= shape[0] <= 4:
                 seen.discard(name)
                 add(FieldSpec(name, "vector", size=shape[0]))
+    # --8<-- [start:descriptors]
     for klass in reversed(cls.__mro__):
         for name, attr in vars(klass).items():
             if isinstance(attr, Field):
                 add(_from_descriptor(name, attr))
+    # --8<-- [end:descriptors]
     for klass in cls.__mro__:
         for name, attr in vars(klass).items():
             if isinstance(attr, property) and attr.fset is not None and not name.startswith("_") and name not in seen:

@@ -74,12 +74,14 @@ class InspectorPanelSystem(PanelSystem):
         self.remember(f"inspector/remove/{name}")
         if not is_open:
             return
+        # --8<-- [start:fields]
         imgui.push_id(name)
         for spec in field_specs(component):
             self._field(entity, component, spec)
         if isinstance(component, MaterialComponent):
             self._material(component.material)
         imgui.pop_id()
+        # --8<-- [end:fields]
 
     def _field(self, entity: uuid.UUID, component: Component, spec: FieldSpec) -> None:
         ctype = type(component)
@@ -97,6 +99,7 @@ class InspectorPanelSystem(PanelSystem):
             changed, widget = draw(label, current.tolist(), speed)
             self.remember(f"inspector/{spec.name}", width)
             new = _edited(current, widget) if changed else value
+        # --8<-- [start:number]
         elif kind == "number":
             if value is None:
                 imgui.text_disabled(f"{label}: auto")
@@ -109,6 +112,7 @@ class InspectorPanelSystem(PanelSystem):
                 hi = spec.high if spec.high is not None else np.inf
                 new = float(np.clip(new, np.nextafter(lo, np.inf) if lo > -np.inf else lo,
                                     np.nextafter(hi, -np.inf) if hi < np.inf else hi))
+        # --8<-- [end:number]
         elif kind == "int":
             changed, new = imgui.drag_int(label, int(value))
         elif kind == "flag":
@@ -132,12 +136,14 @@ class InspectorPanelSystem(PanelSystem):
         else:
             imgui.text_disabled(f"{label}: {value!r}")
             return
+        # --8<-- [start:apply]
         if changed:
             merge = kind in ("vector", "number", "int", "color", "text")  # a drag or typing: one undo step
             if isinstance(component, InfoComponent) and spec.name == "name":
                 self.act(self.editor.rename_entity, entity, new, merge=True)
             else:
                 self.act(self.editor.set_field, entity, ctype, spec.name, new, merge=merge)
+        # --8<-- [end:apply]
 
     def _resource(self, entity: uuid.UUID, component: Component, spec: FieldSpec) -> None:
         """A Mesh or Material component: pick another of the scene's assets (the component is replaced)."""

@@ -44,6 +44,7 @@ def record_layout(panel: EditorPanelComponent) -> None:
     panel._shown = (panel.position, panel.size)
 
 
+# --8<-- [start:panel_system]
 class PanelSystem(System):
     """Draws every visible panel entity of ``kind``; subclasses fill the window in :meth:`draw`."""
 
@@ -75,6 +76,7 @@ class PanelSystem(System):
 
     def draw(self, panel: EditorPanelComponent) -> None:
         raise NotImplementedError
+# --8<-- [end:panel_system]
 
     def remember(self, key: str, width: float | None = None) -> None:
         """Record the last item's rectangle (pixels) under ``key``: tests and tools find widgets by it.

@@ -1,9 +1,11 @@
-"""USD scenes: save a Scene to a .usda/.usdc file and load it back.
+"""USD scenes: save a Scene to a .usda/.usdc file and load it back (step 07's last concept).
 
-``save_scene(scene, "level.usda")`` and ``scene = load_scene("level.usda")``; the mapping of components to
-USD prims and attributes is described in ``docs/usd.md`` and :mod:`step07_advanced.usd.mapping`. Steps' own
-components are saved once registered with :func:`register_component`, and a scene's systems by name once their
-classes are on the allow-list (:func:`register_system`; see :mod:`step07_advanced.usd.registry`).
+``save_scene(scene, "level.usda")`` and ``scene = load_scene("level.usda")``; every step's launcher saves with
+``--save FILE.usda`` through the engine's ``save_scene`` hook (:mod:`gandalf_core.app.extensions`). The mapping of
+components to USD prims and attributes is described in ``docs/usd.md`` and :mod:`step07_advanced.usd.mapping`.
+A file may name only allowed classes (:mod:`step07_advanced.usd.registry`): a course step lists its components and
+systems in its ``saved.py``; a program of your own registers its classes with :func:`register_component` and
+:func:`register_system`.
 
 Importing this package does not import USD (``pxr``); saving or loading does.
 """

@@ -37,6 +37,7 @@ class StagedFiles:
             shutil.copymode(target, temp)
         return temp
 
+    # --8<-- [start:commit]
     def commit(self) -> None:
         """Move every temporary file onto its target, in the order they were made; all or nothing.
 
@@ -63,6 +64,7 @@ class StagedFiles:
             if backup is not None:
                 backup.unlink(missing_ok=True)
         self._pending.clear()
+    # --8<-- [end:commit]
 
     def discard(self) -> None:
         """Remove the temporary files not yet committed (and folders this object made, when left empty)."""

@@ -42,6 +42,7 @@ SHEAR_TOLERANCE = 1e-6
 
 
 # --- transforms ---------------------------------------------------------------------------------------
+# --8<-- [start:decompose]
 def decompose(matrix: Gf.Matrix4d | np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
     """A USD local matrix (row vectors: ``p' = p·M``) as ``(translation, quaternion (w, x, y, z), scale, shear)``.
 
@@ -71,6 +72,7 @@ def decompose(matrix: Gf.Matrix4d | np.ndarray) -> tuple[np.ndarray, np.ndarray,
             rotation = u @ vt
     quaternion = np.asarray(quat_from_matrix3(rotation), dtype=np.float64)
     return translation, quaternion, scale, shear
+# --8<-- [end:decompose]
 
 
 def local_matrix(xformable: UsdGeom.Xformable, notes: Notes) -> tuple[Gf.Matrix4d, bool]:

@@ -43,6 +43,7 @@ MATERIALS = "/Assets/Materials"
 TEXTURES = "/Assets/Textures"
 SYSTEMS = "/Systems"
 
+# --8<-- [start:builtin]
 BUILTIN_TYPES = (
     InfoComponent,
     LinkComponent,
@@ -58,6 +59,7 @@ BUILTIN_TYPES = (
 # LightComponent.kind <-> UsdLux prim type.
 LIGHT_TYPES = {"point": "SphereLight", "directional": "DistantLight", "ambient": "DomeLight"}
 LIGHT_KINDS = {v: k for k, v in LIGHT_TYPES.items()}
+# --8<-- [end:builtin]
 
 # Camera film back used to express the field of view as focal length / aperture (mm, USD's units for them).
 VERTICAL_APERTURE_MM = 24.0

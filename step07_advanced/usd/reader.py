@@ -454,6 +454,7 @@ class _Reader:
         component.quaternion = quat  # exactly as saved (the constructor would renormalise)
         return component, False
 
+    # --8<-- [start:any_transform]
     def any_transform(self, prim: Usd.Prim) -> TransformComponent:
         """Any xform op stack (rotations, matrix ops, pivots ...), composed by USD and split into T, R, S."""
         xformable = UsdGeom.Xformable(prim)
@@ -473,6 +474,7 @@ class _Reader:
         component = TransformComponent(t, scale=s)
         component.quaternion = q
         return component
+    # --8<-- [end:any_transform]
 
     def camera(self, prim: Usd.Prim) -> CameraComponent:
         ctx = self.ctx

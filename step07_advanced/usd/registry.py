@@ -210,6 +210,7 @@ def allow_package(package: str) -> None:
 _DECLARED: set[str] = set()
 
 
+# --8<-- [start:declare]
 def _declarations(module: str) -> None:
     """Register what the ``saved.py`` of ``module``'s top-level package declares (once per package)."""
     package = module.split(".")[0]
@@ -235,6 +236,7 @@ def _declare(saved: Any) -> None:
         register_system(cls, unsaveable=why)
     for fn in getattr(saved, "FUNCTIONS", ()):
         register_function(fn)
+# --8<-- [end:declare]
 
 
 def _declarations_of_imported_packages() -> None:
@@ -267,11 +269,13 @@ def function_key(fn: Any) -> str | None:
     return key if key is not None and _FUNCTIONS.get(key) is fn else None
 
 
+# --8<-- [start:allowed]
 def _allowed_module(module: str) -> bool:
     parts = module.split(".")
     if any(p.startswith("_") for p in parts):  # no __main__ (it would run a program), no private modules
         return False
     return parts[0] in _PACKAGES or bool(_STEP_PACKAGE.fullmatch(parts[0]))
+# --8<-- [end:allowed]
 
 
 def _lookup(table: dict[str, Any], key: str, kind: str) -> tuple[Any, str]:

@@ -75,6 +75,7 @@ def save_scene(scene: Scene, path: str | Path, *, assets: bool = True) -> Path:
     path = Path(os.path.realpath(given)) if given.is_symlink() else given
     if not path.parent.is_dir():
         raise USDSceneError(path, f"the folder {str(path.parent)!r} does not exist")
+    # --8<-- [start:staged]
     stage = Usd.Stage.CreateInMemory()
     writer = _Writer(scene, stage, path, assets)
     writer.write()
@@ -91,6 +92,7 @@ def save_scene(scene: Scene, path: str | Path, *, assets: bool = True) -> Path:
     except Exception as exc:  # OSError, or a Tf.ErrorException from USD's writer
         raise USDSceneError(path, f"cannot write the file: {exc}") from exc
     return path
+    # --8<-- [end:staged]
 
 
 def _write_png(pixels: np.ndarray, path: Path) -> None:
@@ -254,12 +256,14 @@ class _Writer:
                 write(root, attr, type_name_, value(comps[component_type]))
                 root.CreateRelationship(attr + "Entity", custom=True).SetTargets([path])
 
+    # --8<-- [start:transform]
     def write_transform(self, prim: Usd.Prim, t: TransformComponent) -> None:
         xform = UsdGeom.Xformable(prim)
         w, x, y, z = (float(v) for v in t.quaternion)  # gandalf stores (w, x, y, z); Gf.Quatd takes real first
         xform.AddTranslateOp(UsdGeom.XformOp.PrecisionDouble).Set(Gf.Vec3d(*map(float, t.translation)))
         xform.AddOrientOp(UsdGeom.XformOp.PrecisionDouble).Set(Gf.Quatd(w, Gf.Vec3d(x, y, z)))
         xform.AddScaleOp(UsdGeom.XformOp.PrecisionDouble).Set(Gf.Vec3d(*map(float, t.scale)))
+    # --8<-- [end:transform]
 
     def write_camera(self, prim: Usd.Prim, c: CameraComponent) -> None:
         usd = UsdGeom.Camera(prim)
@@ -282,6 +286,7 @@ class _Writer:
         write(prim, "gandalf:primary", T.Bool, bool(c.primary))
         write(prim, "gandalf:reverseZ", T.Bool, bool(c.reverse_z))
 
+    # --8<-- [start:light]
     def write_light(self, prim: Usd.Prim, light: LightComponent, schema: bool) -> None:
         if schema:  # the standard UsdLux inputs (linear colour), for other USD tools
             api = UsdLux.LightAPI(prim)
@@ -297,6 +302,7 @@ class _Writer:
         write(prim, "gandalf:shadowExtent", T.Double, light.shadow_extent)
         write(prim, "gandalf:shadowDepth", T.Double, light.shadow_depth)
         write(prim, "gandalf:shadowBias", T.Double, light.shadow_bias)
+    # --8<-- [end:light]
 
     def write_registered(self, entity: uuid.UUID, prim: Usd.Prim) -> None:
         saved: list[str] = []
@@ -385,6 +391,7 @@ class _Writer:
 _MISSING = object()
 
 
+# --8<-- [start:tool_owned]
 def _tool_owned(system: System) -> bool:
     """The render system (the app adds it) and an editor's panels are parts of the tool, not of the scene."""
     return not type(system).saved
@@ -393,3 +400,4 @@ def _tool_owned(system: System) -> bool:
 def _editor_owned(scene: Scene, entity: uuid.UUID) -> bool:
     """An entity that holds a tool's own component (an editor panel) is not part of the scene."""
     return any(not type(c).saved for c in scene.components_of(entity))
+# --8<-- [end:tool_owned]
