@@ -2,7 +2,7 @@
 
 A file names classes, never code: ``register_component(Spin, fields=["speed", "axis"])`` saves each listed field
 of every ``Spin`` as a ``gandalf:Spin:<field>`` attribute; ``register_system(SpinSystem)`` saves the system by
-its import path (``step03_textures.spin.SpinSystem``) and builds it again on load, with the constructor
+its import path (``gandalf_core.systems.spin.SpinSystem``) and builds it again on load, with the constructor
 settings it declares; ``register_function(look_at)`` lets a system setting hold that one function. Only
 registered classes and functions are ever built or called on load.
 

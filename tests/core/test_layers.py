@@ -21,6 +21,7 @@ import pytest
 
 REPO = Path(__file__).resolve().parents[2]
 ROOT = REPO / "gandalf_core"
+# --8<-- [start:rules]
 #: Layer of each sub-package (and top-level module); higher numbers may import lower ones.
 LAYERS = {
     "ecs": 0, "math": 0, "resources": 0,
@@ -36,6 +37,7 @@ STEP = re.compile(r"step\d\d_[a-z0-9_]+")
 STEPS = sorted(p.name for p in REPO.iterdir() if p.is_dir() and STEP.fullmatch(p.name))
 #: step -> earlier steps it may import (none: shared parts live in the engine, e.g. the spin).
 CROSS_STEP: dict[str, set[str]] = {}
+# --8<-- [end:rules]
 
 
 def _modules(root: Path) -> dict[str, Path]:
