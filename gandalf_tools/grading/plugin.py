@@ -38,6 +38,8 @@ from typing import Any
 
 import pytest
 
+from . import watchdog
+
 IMPL_ENV = "GANDALF_IMPL"
 _PROPERTY = "gandalf_grade"
 _MESSAGE_LIMIT = 4000
@@ -62,6 +64,14 @@ def pytest_addoption(parser: pytest.Parser) -> None:
         default=[],
         metavar="EXERCISE",
         help="run only the graded tests of this exercise (repeatable; the mutation check uses it)",
+    )
+    group.addoption(
+        "--grade-call-budget",
+        type=float,
+        default=watchdog.DEFAULT_BUDGET,
+        metavar="SECONDS",
+        help=f"with --student: seconds one call of the student's function may take; a function that runs past it "
+        f"fails that test and every later call at once, saying so (default {watchdog.DEFAULT_BUDGET:g}; 0: none)",
     )
     group.addoption(
         "--grade-hard-timeout",
@@ -128,10 +138,12 @@ def impl_fixture(step_package: str) -> Any:
     @pytest.fixture
     def impl(request: pytest.FixtureRequest) -> ModuleType:
         overlay = _overlay(step_package)  # GANDALF_IMPL: a submission's or a mutant's package
+        budget = float(request.config.getoption("--grade-call-budget"))
         if overlay is not None:
-            return overlay
-        which = "exercises" if request.config.getoption("--student") else "solutions"
-        return importlib.import_module(f"{step_package}.{which}")
+            return watchdog.guard(overlay, budget)
+        if request.config.getoption("--student"):
+            return watchdog.guard(importlib.import_module(f"{step_package}.exercises"), budget)
+        return importlib.import_module(f"{step_package}.solutions")
 
     return impl
 
@@ -153,6 +165,7 @@ def pytest_configure(config: pytest.Config) -> None:
     _graded.clear()
     _outcomes.clear()
     _collection_errors.clear()
+    watchdog.reset()
     config._gandalf_collect_dir = None  # type: ignore[attr-defined]
     if not _is_worker(config) and config.pluginmanager.hasplugin("xdist"):
         config._gandalf_collect_dir = tempfile.mkdtemp(prefix="gandalf-grade-")  # type: ignore[attr-defined]
@@ -226,6 +239,7 @@ def _message(report: pytest.TestReport) -> str:
         text = str(longrepr[2])
     else:
         text = str(longrepr).strip().splitlines()[-1] if str(longrepr).strip() else ""
+    text = text.removeprefix(f"{watchdog.__name__}.{watchdog.ExerciseTimeout.__name__}: ")
     return text if len(text) <= _MESSAGE_LIMIT else text[: _MESSAGE_LIMIT - 1] + "…"
 
 
