@@ -4,14 +4,12 @@ The OpenGL renderer clears an sRGB framebuffer (``GL_SRGB8_ALPHA8`` with ``GL_FR
 to the scene's clear colour; compare ``gandalf_core/render/opengl/renderer.py``.
 """
 
-from __future__ import annotations
+from gandalf_core.app.cli import launcher
 
-from gandalf_core.app.cli import run_variant, variant
+from .scene import PART
 
-from .scene import build_scene
-
-create_app = variant("opengl", __package__, build_scene)
+create_app, main = launcher(PART, "opengl", __doc__)
 
 
 if __name__ == "__main__":
-    raise SystemExit(run_variant(create_app, description=__doc__))
+    raise SystemExit(main())

@@ -5,6 +5,7 @@ from __future__ import annotations
 from types import ModuleType
 
 from gandalf_core import ClearColorComponent, InfoComponent, Scene
+from gandalf_core.app.cli import Part
 
 from .components import HueCycleComponent
 
@@ -22,3 +23,7 @@ def build_scene(impl: ModuleType) -> Scene:
     )
     scene.add_system(impl.HueCycleSystem())
     return scene
+
+
+#: What the variants (``opengl.py``, ``webgpu.py``) hand the launcher: this step and its scene.
+PART = Part(__package__, build_scene)

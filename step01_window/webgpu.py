@@ -4,14 +4,12 @@ The WebGPU renderer begins a render pass on an ``rgba8unorm-srgb`` texture with 
 the scene's clear colour; compare ``gandalf_core/render/webgpu/renderer.py``.
 """
 
-from __future__ import annotations
+from gandalf_core.app.cli import launcher
 
-from gandalf_core.app.cli import run_variant, variant
+from .scene import PART
 
-from .scene import build_scene
-
-create_app = variant("webgpu", __package__, build_scene)
+create_app, main = launcher(PART, "webgpu", __doc__)
 
 
 if __name__ == "__main__":
-    raise SystemExit(run_variant(create_app, description=__doc__))
+    raise SystemExit(main())

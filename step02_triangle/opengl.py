@@ -4,14 +4,12 @@ The renderer compiles the GLSL vertex and fragment shaders into one program, ask
 it reads (locations 0 and 4), and binds the mesh's interleaved buffer to them with a vertex array object.
 """
 
-from __future__ import annotations
+from gandalf_core.app.cli import launcher
 
-from gandalf_core.app.cli import run_variant, variant
+from .scene import PART
 
-from .scene import SHADERS, build_scene, register_shaders  # noqa: F401 (tests and the preview call it)
-
-create_app = variant("opengl", __package__, build_scene, SHADERS)
+create_app, main = launcher(PART, "opengl", __doc__)
 
 
 if __name__ == "__main__":
-    raise SystemExit(run_variant(create_app, description=__doc__))
+    raise SystemExit(main())

@@ -12,7 +12,7 @@ from pathlib import Path
 from types import ModuleType
 
 from gandalf_core import Application, ClearColorComponent, InfoComponent, Scene, TransformComponent
-from gandalf_core.app.cli import build_shaders
+from gandalf_core.app.cli import Part, build_shaders
 from gandalf_core.components import MaterialComponent, MeshComponent
 from gandalf_core.resources import MaterialData
 
@@ -62,3 +62,7 @@ def build_scene(impl: ModuleType) -> Scene:
 def register_shaders(app: Application) -> None:
     """Build the step's shader table in ``app``'s API (the variants, the preview and the tests use it)."""
     build_shaders(app, SHADERS, Path(__file__).resolve().parent / "shaders")
+
+
+#: What the variants (``opengl.py``, ``webgpu.py``) hand the launcher: this step, its scene and its shaders.
+PART = Part(__package__, build_scene, SHADERS)

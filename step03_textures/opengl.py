@@ -4,20 +4,12 @@ GLSL samples a ``sampler2D``: in OpenGL the texture object carries its own sampl
 mipmaps), set once when ``gandalf_core/render/opengl/libs.py`` builds it; the material binds it to a texture unit.
 """
 
-from __future__ import annotations
+from gandalf_core.app.cli import launcher
 
-from pathlib import Path
+from .scene import PART
 
-from gandalf_core.app.cli import run_variant, variant
-
-from .scene import SHADERS as SHADER_TABLE
-from .scene import build_scene
-
-#: The shader folder (``tests/step03_textures/conftest.py`` reads it).
-SHADERS = Path(__file__).resolve().parent / "shaders"
-
-create_app = variant("opengl", __package__, build_scene, SHADER_TABLE)
+create_app, main = launcher(PART, "opengl", __doc__)
 
 
 if __name__ == "__main__":
-    raise SystemExit(run_variant(create_app, description=__doc__))
+    raise SystemExit(main())

@@ -16,6 +16,7 @@ from types import ModuleType
 import numpy as np
 
 from gandalf_core import ClearColorComponent, InfoComponent, Scene, TransformComponent
+from gandalf_core.app.cli import Part
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, MeshData, checkerboard, cube, plane, quad
@@ -100,3 +101,7 @@ def build_scene(impl: ModuleType) -> Scene:
         )
     scene.add_system(SpinSystem())
     return scene
+
+
+#: What the variants (``opengl.py``, ``webgpu.py``) hand the launcher: this step, its scene and its shaders.
+PART = Part(__package__, build_scene, SHADERS)

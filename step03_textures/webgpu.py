@@ -5,14 +5,12 @@ how it is read (a sampler object with filter, address and mipmap modes); ``ganda
 creates both and puts them in the material's bind group.
 """
 
-from __future__ import annotations
+from gandalf_core.app.cli import launcher
 
-from gandalf_core.app.cli import run_variant, variant
+from .scene import PART
 
-from .scene import SHADERS, build_scene
-
-create_app = variant("webgpu", __package__, build_scene, SHADERS)
+create_app, main = launcher(PART, "webgpu", __doc__)
 
 
 if __name__ == "__main__":
-    raise SystemExit(run_variant(create_app, description=__doc__))
+    raise SystemExit(main())

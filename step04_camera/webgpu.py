@@ -3,14 +3,12 @@
 The projection is built with WebGPU's depth range: z_ndc in [0, 1] (see ``gandalf_core.math.perspective``).
 """
 
-from __future__ import annotations
+from gandalf_core.app.cli import launcher
 
-from gandalf_core.app.cli import run_variant, variant
+from .scene import PART
 
-from .scene import SHADERS, build_scene, register_shaders  # noqa: F401 (tests and the preview call it)
-
-create_app = variant("webgpu", __package__, build_scene, SHADERS)
+create_app, main = launcher(PART, "webgpu", __doc__)
 
 
 if __name__ == "__main__":
-    raise SystemExit(run_variant(create_app, description=__doc__))
+    raise SystemExit(main())

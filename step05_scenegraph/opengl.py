@@ -3,14 +3,11 @@
 Each concept also runs on its own: ``python -m step05_scenegraph.hierarchy.opengl``.
 """
 
-from gandalf_core.app.cli import launch_part
+from gandalf_core.app.cli import Part, launcher
 
 from . import CONCEPTS, DEFAULT_CONCEPT
 
-
-def main(argv: list[str] | None = None) -> int:
-    """Run ``--concept``'s OpenGL variant (default: every scene in one app) with the other options."""
-    return launch_part(__package__, "opengl", CONCEPTS, "concept", argv, default=DEFAULT_CONCEPT)
+create_app, main = launcher(Part(__package__, parts=CONCEPTS, default=DEFAULT_CONCEPT), "opengl", __doc__)
 
 
 if __name__ == "__main__":

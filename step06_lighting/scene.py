@@ -12,13 +12,16 @@ from __future__ import annotations
 from types import ModuleType
 
 from gandalf_core import Scene, TransformComponent
+from gandalf_core.app.cli import Part
 from gandalf_core.components import CameraComponent, InfoComponent
 from gandalf_core.math import look_at_rotation
 
+from . import CONCEPTS, DEFAULT_CONCEPT
 from .environment.scene import add_environment_materials, add_sky
 from .lights.scene import RING_LIGHTS, add_clay, add_floor, add_key_and_ambient, add_light_ring
 from .lights.systems import OrbitSystem
 from .meshes.scene import BUNNY_PATH, add_bunny, add_bunny_mesh
+from .shaders import SHADERS
 
 __all__ = ["BUNNY_PATH", "RING_LIGHTS", "TOUR_FRAMES", "build_scene"]
 
@@ -47,3 +50,8 @@ def build_scene(impl: ModuleType) -> Scene:
     scene.add_system(impl.LightCollectionSystem())
     # --8<-- [end:whole]
     return scene
+
+
+#: What the variants (``opengl.py``, ``webgpu.py``) hand the launcher: the step's whole scene
+#: (``create_app``) and its concepts (``main``: ``--concept``).
+PART = Part(__package__, build_scene, SHADERS, include_impl=True, parts=CONCEPTS, default=DEFAULT_CONCEPT)

@@ -4,20 +4,11 @@ Each concept also runs on its own: ``python -m step06_lighting.lights.webgpu``. 
 whole scene (``scene.py``: the three concepts in one), which the tests compare across the APIs.
 """
 
-from __future__ import annotations
+from gandalf_core.app.cli import launcher
 
-from gandalf_core.app.cli import launch_part, variant
+from .scene import PART
 
-from . import CONCEPTS, DEFAULT_CONCEPT
-from .scene import build_scene
-from .shaders import SHADERS
-
-create_app = variant("webgpu", __package__, build_scene, SHADERS, include_impl=True)
-
-
-def main(argv: list[str] | None = None) -> int:
-    """Run ``--concept``'s WebGPU variant (default: the lights) with the other options."""
-    return launch_part(__package__, "webgpu", CONCEPTS, "concept", argv, default=DEFAULT_CONCEPT)
+create_app, main = launcher(PART, "webgpu", __doc__)
 
 
 if __name__ == "__main__":

@@ -1,15 +1,18 @@
 """The step's launcher: ``python -m step07_advanced.opengl --technique terrain`` runs one technique's variant.
 
-Each technique is a sub-package with its own ``opengl.py`` / ``webgpu.py``; this only picks one and hands the
-remaining options (``--student``, ``--headless``, ``--frames``, ``--out``, ...) to it
-(:func:`gandalf_core.app.cli.launch_part`, which step 05's ``--concept`` launcher uses too).
+Each technique is a sub-package with its own ``opengl.py`` / ``webgpu.py``; :data:`PART` (handed to
+:func:`gandalf_core.app.cli.launcher`, as step 05's concepts are) picks one with ``--technique`` and hands the
+remaining options (``--student``, ``--headless``, ``--frames``, ``--out``, ...) to it.
 """
 
 from __future__ import annotations
 
-from gandalf_core.app.cli import available_parts, launch_part
+from gandalf_core.app.cli import Part, available_parts, launcher
 
 from . import TECHNIQUES
+
+#: The step of seven techniques: ``--technique NAME`` (default: the first, the showcase).
+PART = Part(__package__, parts=TECHNIQUES, option="technique")
 
 
 def available() -> list[str]:
@@ -19,4 +22,4 @@ def available() -> list[str]:
 
 def launch(backend: str, argv: list[str] | None = None) -> int:
     """Run ``--technique``'s ``backend`` variant with the other options."""
-    return launch_part(__package__, backend, TECHNIQUES, "technique", argv)
+    return launcher(PART, backend)[1](argv)

@@ -3,7 +3,12 @@
 Each technique also runs on its own: ``python -m step07_advanced.terrain.webgpu``.
 """
 
-from .techniques import launch
+from gandalf_core.app.cli import launcher
+
+from .techniques import PART
+
+create_app, main = launcher(PART, "webgpu", __doc__)
+
 
 if __name__ == "__main__":
-    raise SystemExit(launch("webgpu"))
+    raise SystemExit(main())

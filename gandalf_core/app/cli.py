@@ -1,8 +1,14 @@
-"""The launchers: a step variant's app and command line, and your own program's.
+"""The launchers: every step, concept and technique's app and command line, and your own program's.
 
-A step's ``opengl.py`` and ``webgpu.py`` hold only what differs between the APIs:
-``create_app = variant("opengl", __package__, build_scene, SHADERS)`` builds the step's shader table in that API
-and its scene; ``run_variant(create_app)`` is the command line (``python -m step01_window.opengl --help``).
+A variant file (``opengl.py`` / ``webgpu.py``) has one shape: a docstring that teaches what is API-specific, the
+API's backend, and one line handing the part's description and the backend to :func:`launcher`::
+
+    create_app, main = launcher(PART, "opengl", __doc__)        # nothing but the API differs
+    create_app, main = launcher(PART, OpenGL(), __doc__)        # a Backend subclass: the API's own stages
+
+``PART`` (a :class:`Part`, in the part's ``scene.py``) is what both variants share: the package, its scene and
+its shader table. ``create_app(headless, student, width, height, **options)`` builds the app;
+``main(argv)`` is the command line (``python -m step01_window.opengl --help``).
 :func:`run_scene` runs a scene of your own in either API (``--backend``), with the core's ready materials.
 """
 
@@ -11,8 +17,10 @@ from __future__ import annotations
 import argparse
 import importlib
 from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from types import ModuleType
+from typing import Any
 
 from ..ecs import Scene
 from ..render.base import check_backend
@@ -106,30 +114,89 @@ def build_shaders(app: Application, table: ShaderTable, folder: str | Path,
             app.renderer.shaders.build(name, folder / wgsl, include_dirs=include_dirs)
 
 
-def variant(backend: str, package: str, build: Callable[[ModuleType], Scene | Iterable[Scene]],
-            shaders: ShaderTable = (), *, include_impl: bool = False) -> Callable[..., Application]:
-    """A step variant's ``create_app``: everything but the API is the same for both variants of a step.
+@dataclass(frozen=True)
+class Part:
+    """A runnable step, concept or technique: what its OpenGL and WebGPU variants share.
 
-    ``build(impl)`` returns the step's scene (or scenes) for its ``solutions`` or, with ``student``, its
-    ``exercises`` package; ``shaders`` is the step's shader table (files in the step's ``shaders/`` folder);
-    ``include_impl`` lets the shaders ``#include`` files of the implementation's folder (shader exercises).
+    ``package`` is the part's package (its ``__package__``); the step (its first name) holds ``exercises/``,
+    ``solutions/`` and the ``shaders/`` folder of ``shaders``, the shader table the launcher builds in either API
+    (``include_impl``: the shaders ``#include`` files of the implementation's folder). ``build_scene(impl,
+    **options)`` returns the scene (or scenes) where the API changes nothing else. A step of several runnable
+    parts (step 05's concepts, step 07's techniques) names them in ``parts``, picked with ``--<option>``
+    (``default``, else the first); without ``build_scene`` its ``create_app`` is the default part's.
     """
-    backend = check_backend(backend)
-    folder = Path(importlib.import_module(package).__file__).resolve().parent / "shaders"
-    title = f"{package.split('_')[0]} · {'OpenGL' if backend == 'opengl' else 'WebGPU'}"
 
-    def create_app(headless: bool | None = None, student: bool = False, width: int = 640,
-                   height: int = 480) -> Application:
-        impl = load_impl(package, student)
-        app = Application(backend, width, height, title=title, headless=headless, fixed_dt=1 / 60)
-        build_shaders(app, shaders, folder, [Path(impl.__file__).resolve().parent] if include_impl else [])
-        scenes = build(impl)
+    package: str
+    build_scene: Callable[..., Scene | Iterable[Scene]] | None = None
+    shaders: ShaderTable = ()
+    include_impl: bool = False
+    parts: Sequence[str] = ()
+    option: str = "concept"
+    default: str | None = None
+
+    @property
+    def step(self) -> str:
+        """The step package: ``exercises``, ``solutions`` and ``shaders/``."""
+        return self.package.split(".")[0]
+
+    @property
+    def title(self) -> str:
+        """``step07 · terrain`` for ``step07_advanced.terrain``."""
+        return " · ".join([self.step.split("_")[0], *self.package.split(".")[1:]])
+
+
+class Backend:
+    """What one API adds to a part where more than its name differs: subclass it in the variant file.
+
+    ``api`` is ``"opengl"`` or ``"webgpu"``; :meth:`scene` builds what only this API needs (its shaders, stages,
+    kernels, buffers) and returns the scene. Where nothing but the API differs, hand :func:`launcher` the API's
+    name instead.
+    """
+
+    api: str = ""
+
+    def scene(self, app: Application, impl: ModuleType, **options: Any) -> Scene | Iterable[Scene]:
+        """The scene(s) to run in ``app``; ``impl`` is the exercises or solutions package, ``options`` the keyword
+        options given to ``create_app``."""
+        raise NotImplementedError(f"{type(self).__name__}.scene: build the API's part and return the scene")
+
+
+def launcher(part: Part, backend: str | Backend, description: str = "",
+             ) -> tuple[Callable[..., Application], Callable[..., int]]:
+    """A variant's ``create_app`` and ``main``: ``create_app, main = launcher(PART, "opengl", __doc__)``.
+
+    ``create_app(headless=None, student=False, width=640, height=480, *, impl=None, **options)`` opens the app in
+    ``backend``'s API, builds the part's shader table, then the scene: ``backend.scene(app, impl, **options)``, or
+    ``part.build_scene(impl, **options)`` where ``backend`` is just the API's name. ``impl`` (a package like
+    ``exercises``) overrides ``student``. ``main(argv)`` runs it from the command line (``description``: its help),
+    or, for a step of several parts, the part ``--<option>`` names.
+    """
+    api = check_backend(backend if isinstance(backend, str) else backend.api)
+    title = f"{part.title} · {'OpenGL' if api == 'opengl' else 'WebGPU'}"
+
+    def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480, *,
+                   impl: ModuleType | None = None, **options: Any) -> Application:
+        if part.build_scene is None and part.parts:
+            default = available_parts(part.package, [part.default or part.parts[0]]) or part.parts[:1]
+            return importlib.import_module(f"{part.package}.{default[0]}.{api}").create_app(
+                headless, student, width, height, impl=impl, **options)
+        impl = impl if impl is not None else load_impl(part.step, student)
+        app = Application(api, width, height, title=title, headless=headless, fixed_dt=1 / 60)
+        folder = Path(importlib.import_module(part.step).__file__).resolve().parent / "shaders"
+        build_shaders(app, part.shaders, folder, [Path(impl.__file__).resolve().parent] if part.include_impl else [])
+        scenes = part.build_scene(impl, **options) if isinstance(backend, str) else backend.scene(app, impl, **options)
         for scene in [scenes] if isinstance(scenes, Scene) else scenes:
             app.add_scene(scene)
         return app
 
-    create_app.__doc__ = f"The {package} app in {title.split(' · ')[1]} (``headless``, ``student``, size)."
-    return create_app
+    def main(argv: list[str] | None = None) -> int:
+        if part.parts:
+            return launch_part(part.package, api, part.parts, part.option, argv, default=part.default)
+        return run_variant(create_app, argv, description=description)
+
+    create_app.__doc__ = f"The {part.package} app in {title.rsplit(' · ', 1)[1]} (``headless``, ``student``, size)."
+    main.__doc__ = f"Run the {part.package} app in {title.rsplit(' · ', 1)[1]} from the command line (``--help``)."
+    return create_app, main
 
 
 def available_parts(step_package: str, names: Sequence[str]) -> list[str]:

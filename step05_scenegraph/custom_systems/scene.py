@@ -8,9 +8,11 @@ from __future__ import annotations
 from types import ModuleType
 
 from gandalf_core import ClearColorComponent, InfoComponent, Scene, TransformComponent
+from gandalf_core.app.cli import Part
 from gandalf_core.components import MaterialComponent, MeshComponent
 from gandalf_core.resources import MaterialData, plane, uv_sphere
 
+from .. import SHADERS
 from ..hierarchy.scene import add_camera
 from .components import GravityComponent
 from .systems import GravitySystem
@@ -52,3 +54,7 @@ def build_gravity_scene() -> Scene:
 def build_scene(impl: ModuleType | None = None) -> Scene:
     """The bouncing balls (the variants pass the step's ``impl``; this concept has no exercise)."""
     return build_gravity_scene()
+
+
+#: What the variants (``opengl.py``, ``webgpu.py``) hand the launcher: this concept, its scene and the step's shaders.
+PART = Part(__package__, build_scene, SHADERS)

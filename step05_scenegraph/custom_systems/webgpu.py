@@ -3,19 +3,11 @@
 Same scene in both APIs (``scene.py``); only the shaders differ: the step's WGSL (``shaders/*.wgsl``).
 """
 
-from __future__ import annotations
+from gandalf_core.app.cli import launcher
 
-from gandalf_core.app.cli import run_variant, variant
+from .scene import PART
 
-from .. import SHADERS
-from . import STEP
-from .scene import build_scene
-
-create_app = variant("webgpu", STEP, build_scene, SHADERS)
-
-
-def main(argv: list[str] | None = None) -> int:
-    return run_variant(create_app, argv, description=__doc__)
+create_app, main = launcher(PART, "webgpu", __doc__)
 
 
 if __name__ == "__main__":

@@ -13,11 +13,13 @@ from types import ModuleType
 import numpy as np
 
 from gandalf_core import ClearColorComponent, Component, InfoComponent, LinkComponent, Scene, TransformComponent
+from gandalf_core.app.cli import Part
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, TextureData, uv_sphere, value_noise
 from gandalf_core.systems import SpinComponent, SpinSystem
 
+from .. import SHADERS
 from .components import ReparentOnKeyComponent
 from .systems import ReparentSystem
 
@@ -99,3 +101,7 @@ def build_solar_scene() -> Scene:
 def build_scene(impl: ModuleType | None = None) -> Scene:
     """The solar system (the variants pass the step's ``impl``; the hierarchy has no exercise)."""
     return build_solar_scene()
+
+
+#: What the variants (``opengl.py``, ``webgpu.py``) hand the launcher: this concept, its scene and the step's shaders.
+PART = Part(__package__, build_scene, SHADERS)

@@ -9,8 +9,10 @@ from __future__ import annotations
 from types import ModuleType
 
 from gandalf_core import ClearColorComponent, InfoComponent, Scene
+from gandalf_core.app.cli import Part
 from gandalf_core.components import MaterialComponent, MeshComponent
 
+from .. import SHADERS
 from ..hierarchy.scene import add_child
 from .components import HouseRotationComponent
 
@@ -43,3 +45,7 @@ def build_house_scene(impl: ModuleType) -> Scene:
 def build_scene(impl: ModuleType) -> Scene:
     """The house for the variants (``impl``: the step's solutions, or your exercises with ``--student``)."""
     return build_house_scene(impl)
+
+
+#: What the variants (``opengl.py``, ``webgpu.py``) hand the launcher: this concept, its scene and the step's shaders.
+PART = Part(__package__, build_scene, SHADERS)

@@ -8,9 +8,11 @@ from __future__ import annotations
 from types import ModuleType
 
 from gandalf_core import ClearColorComponent, InfoComponent, Scene, TransformComponent
+from gandalf_core.app.cli import Part
 from gandalf_core.components import MaterialComponent, MeshComponent
 from gandalf_core.resources import MaterialData, cube, plane
 
+from .. import SHADERS
 from ..hierarchy.scene import add_camera
 from .components import SpringComponent
 from .systems import SpringSystem
@@ -69,3 +71,7 @@ def build_springs_scene() -> Scene:
 def build_scene(impl: ModuleType | None = None) -> Scene:
     """The springs (the variants pass the step's ``impl``; the scene runs the reference integrators)."""
     return build_springs_scene()
+
+
+#: What the variants (``opengl.py``, ``webgpu.py``) hand the launcher: this concept, its scene and the step's shaders.
+PART = Part(__package__, build_scene, SHADERS)

@@ -11,7 +11,9 @@ from __future__ import annotations
 from types import ModuleType
 
 from gandalf_core import Scene
+from gandalf_core.app.cli import Part
 
+from .. import SHADERS
 from ..custom_systems.scene import build_gravity_scene
 from ..hierarchy.scene import build_solar_scene
 from ..house.scene import build_house_scene
@@ -39,3 +41,7 @@ def build_scenes(impl: ModuleType) -> list[Scene]:
 def build_scene(impl: ModuleType) -> list[Scene]:
     """What the variants add: every scene (the app shows the first, the solar system)."""
     return build_scenes(impl)
+
+
+#: What the variants (``opengl.py``, ``webgpu.py``) hand the launcher: this concept, its scene and the step's shaders.
+PART = Part(__package__, build_scene, SHADERS)

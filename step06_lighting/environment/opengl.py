@@ -4,19 +4,11 @@ Same scene in both APIs (``scene.py``); only the shaders differ: GLSL 330 (``sha
 the cube map a ``samplerCube``.
 """
 
-from __future__ import annotations
+from gandalf_core.app.cli import launcher
 
-from gandalf_core.app.cli import run_variant, variant
+from .scene import PART
 
-from ..shaders import shader_table
-from . import SHADERS, STEP
-from .scene import build_scene
-
-create_app = variant("opengl", STEP, build_scene, shader_table(SHADERS), include_impl=True)
-
-
-def main(argv: list[str] | None = None) -> int:
-    return run_variant(create_app, argv, description=__doc__)
+create_app, main = launcher(PART, "opengl", __doc__)
 
 
 if __name__ == "__main__":

@@ -9,11 +9,14 @@ from __future__ import annotations
 from types import ModuleType
 
 from gandalf_core import Scene, TransformComponent
+from gandalf_core.app.cli import Part
 from gandalf_core.components import CameraComponent, InfoComponent, SkyboxComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, sky_cube
 
 from ..meshes.scene import add_bunny, add_bunny_mesh
+from ..shaders import shader_table
+from . import SHADERS
 
 #: Frames the course tour renders before it takes the picture (at 60 frames per simulated second).
 TOUR_FRAMES = 30
@@ -47,3 +50,8 @@ def build_scene(impl: ModuleType | None = None) -> Scene:
     camera = TransformComponent(eye, quaternion=look_at_rotation(eye, (0.0, 0.85, 0.0)))
     scene.create_entity(InfoComponent("camera"), camera, CameraComponent(40.0, 0.1, 100.0))
     return scene
+
+
+#: What the variants (``opengl.py``, ``webgpu.py``) hand the launcher: this concept, its scene and the
+#: step's shaders it uses (with the implementation's ``shading``).
+PART = Part(__package__, build_scene, shader_table(SHADERS), include_impl=True)

@@ -12,11 +12,14 @@ import colorsys
 from types import ModuleType
 
 from gandalf_core import Scene, TransformComponent
+from gandalf_core.app.cli import Part
 from gandalf_core.components import CameraComponent, InfoComponent, LightComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, checkerboard, plane, uv_sphere
 
 from ..meshes.scene import add_bunny, add_bunny_mesh
+from ..shaders import shader_table
+from . import SHADERS
 from .components import OrbitComponent
 from .systems import OrbitSystem
 
@@ -88,3 +91,10 @@ def build_scene(impl: ModuleType) -> Scene:
     scene.add_system(impl.LightCollectionSystem())  # exercise: packs them into the lights block
     # --8<-- [end:systems]
     return scene
+
+
+#: What the variants (``opengl.py``, ``webgpu.py``) hand the launcher: this concept, its scene and the
+#: step's shaders it uses (with the implementation's ``shading``).
+# --8<-- [start:part]
+PART = Part(__package__, build_scene, shader_table(SHADERS), include_impl=True)
+# --8<-- [end:part]

@@ -5,21 +5,11 @@ Same scene in both APIs (``scene.py``); only the shaders differ: WGSL: the light
 ``lighting.wgsl``.
 """
 
-from __future__ import annotations
+from gandalf_core.app.cli import launcher
 
-from gandalf_core.app.cli import run_variant, variant
+from .scene import PART
 
-from ..shaders import shader_table
-from . import SHADERS, STEP
-from .scene import build_scene
-
-# --8<-- [start:variant]
-create_app = variant("webgpu", STEP, build_scene, shader_table(SHADERS), include_impl=True)
-# --8<-- [end:variant]
-
-
-def main(argv: list[str] | None = None) -> int:
-    return run_variant(create_app, argv, description=__doc__)
+create_app, main = launcher(PART, "webgpu", __doc__)
 
 
 if __name__ == "__main__":

@@ -13,6 +13,7 @@ from pathlib import Path
 from types import ModuleType
 
 from gandalf_core import ClearColorComponent, Scene, TransformComponent
+from gandalf_core.app.cli import Part
 from gandalf_core.components import (
     CameraComponent,
     InfoComponent,
@@ -24,6 +25,9 @@ from gandalf_core.components import (
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, plane, uv_sphere
 from gandalf_core.resources.mesh_loader import load_mesh, load_meshes
+
+from ..shaders import shader_table
+from . import SHADERS
 
 #: Frames the course tour renders before it takes the picture (at 60 frames per simulated second).
 TOUR_FRAMES = 30
@@ -85,3 +89,8 @@ def build_scene(impl: ModuleType | None = None) -> Scene:
     camera = TransformComponent(eye, quaternion=look_at_rotation(eye, (0.1, 0.7, 0.0)))
     scene.create_entity(InfoComponent("camera"), camera, CameraComponent(45.0, 0.1, 100.0))
     return scene
+
+
+#: What the variants (``opengl.py``, ``webgpu.py``) hand the launcher: this concept, its scene and the
+#: step's shaders it uses (with the implementation's ``shading``).
+PART = Part(__package__, build_scene, shader_table(SHADERS), include_impl=True)

@@ -26,6 +26,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from gandalf_core import Scene, TransformComponent
+from gandalf_core.app.cli import Part
 from gandalf_core.components import (
     CameraComponent,
     ClearColorComponent,
@@ -282,3 +283,7 @@ def exploded_triangles_np(mesh: MeshData, model: np.ndarray, t: float, amount: f
 
 
 # In saved scenes (step07_advanced.usd): the clock is saved; the system is not.
+
+
+#: The technique the variants (``opengl.py``, ``webgpu.py``) hand the launcher with their backends.
+PART = Part(__package__)

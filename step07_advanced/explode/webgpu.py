@@ -9,11 +9,10 @@ from __future__ import annotations
 
 from types import ModuleType
 
-from gandalf_core import Application
-from gandalf_core.app.cli import load_impl, run_variant
+from gandalf_core import Application, Scene
+from gandalf_core.app.cli import Backend, launcher
 
-from . import STEP
-from .scene import LIT_SHADER, PullingRoute, build_scene
+from .scene import LIT_SHADER, PART, PullingRoute, build_scene
 from .shaders import WGSL_LIT, WGSL_PULLED, impl_shader_dir
 
 
@@ -26,16 +25,17 @@ def register_shaders(app: Application, impl: ModuleType, pulling: bool = True) -
 # --8<-- [end:register]
 
 
-def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480) -> Application:
-    impl = load_impl(STEP, student)
-    app = Application("webgpu", width, height, title="step07 explode · WebGPU", headless=headless, fixed_dt=1 / 60)
-    register_shaders(app, impl)
-    app.add_scene(build_scene(impl, PullingRoute(app.renderer)))
-    return app
+class WebGPU(Backend):
+    """The bunny's triangles pulled from storage buffers by the vertex shader."""
+
+    api = "webgpu"
+
+    def scene(self, app: Application, impl: ModuleType) -> Scene:
+        register_shaders(app, impl)
+        return build_scene(impl, PullingRoute(app.renderer))
 
 
-def main(argv: list[str] | None = None) -> int:
-    return run_variant(create_app, argv, description=__doc__)
+create_app, main = launcher(PART, WebGPU(), __doc__)
 
 
 if __name__ == "__main__":

@@ -8,33 +8,35 @@ headless 4.3 context of their own: their results come back to the CPU as texture
 
 from __future__ import annotations
 
-from gandalf_core import Application
-from gandalf_core.app.cli import load_impl, run_variant
+from types import ModuleType
 
-from . import STEP
+from gandalf_core import Application, Scene
+from gandalf_core.app.cli import Backend, launcher
+
 from .compute_gl import REQUIRED_VERSION, GLImageFilter
-from .scene import build_scene, panel_images
+from .scene import PART, build_scene, panel_images
 
 
-def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480) -> Application:
-    impl = load_impl(STEP, student)
-    app = Application("opengl", width, height, title="step07 filter · OpenGL", headless=headless, fixed_dt=1 / 60)
-    ctx = app.renderer.ctx
-    if ctx.version_code >= REQUIRED_VERSION:
-        image_filter = GLImageFilter(ctx, impl)
-    else:
-        image_filter = GLImageFilter.standalone(impl)
-    try:
-        images = panel_images(image_filter)
-    finally:
-        image_filter.release()
-    ctx.__enter__()  # the renderer's context current again (a standalone one may have been made current)
-    app.add_scene(build_scene(images))
-    return app
+class OpenGL(Backend):
+    """The panels filtered by GLSL compute shaders before the first frame."""
+
+    api = "opengl"
+
+    def scene(self, app: Application, impl: ModuleType) -> Scene:
+        ctx = app.renderer.ctx
+        if ctx.version_code >= REQUIRED_VERSION:
+            image_filter = GLImageFilter(ctx, impl)
+        else:
+            image_filter = GLImageFilter.standalone(impl)
+        try:
+            images = panel_images(image_filter)
+        finally:
+            image_filter.release()
+        ctx.__enter__()  # the renderer's context current again (a standalone one may have been made current)
+        return build_scene(images)
 
 
-def main(argv: list[str] | None = None) -> int:
-    return run_variant(create_app, argv, description=__doc__)
+create_app, main = launcher(PART, OpenGL(), __doc__)
 
 
 if __name__ == "__main__":

@@ -17,6 +17,7 @@ from typing import Protocol
 import numpy as np
 
 from gandalf_core import ClearColorComponent, InfoComponent, Scene, TransformComponent
+from gandalf_core.app.cli import Part
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.resources import MaterialData, TextureData, quad
 
@@ -81,3 +82,7 @@ def build_scene(images: dict[str, np.ndarray]) -> Scene:
     scene.create_entity(InfoComponent("camera"), TransformComponent((0.0, 0.0, 2.0)),
                         CameraComponent(projection="orthographic", height=VIEW_HEIGHT, near=0.1, far=10.0))
     return scene
+
+
+#: The technique the variants (``opengl.py``, ``webgpu.py``) hand the launcher with their backends.
+PART = Part(__package__)

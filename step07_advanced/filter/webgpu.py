@@ -6,28 +6,30 @@ The filters are WGSL compute pipelines over storage textures run once at start-u
 
 from __future__ import annotations
 
-from gandalf_core import Application
-from gandalf_core.app.cli import load_impl, run_variant
+from types import ModuleType
 
-from . import STEP
+from gandalf_core import Application, Scene
+from gandalf_core.app.cli import Backend, launcher
+
 from .compute_wgpu import WGPUImageFilter
-from .scene import build_scene, panel_images
+from .scene import PART, build_scene, panel_images
 
 
-def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480) -> Application:
-    impl = load_impl(STEP, student)
-    app = Application("webgpu", width, height, title="step07 filter · WebGPU", headless=headless, fixed_dt=1 / 60)
-    image_filter = WGPUImageFilter(app.renderer.device, impl)
-    try:
-        images = panel_images(image_filter)
-    finally:
-        image_filter.release()
-    app.add_scene(build_scene(images))
-    return app
+class WebGPU(Backend):
+    """The panels filtered by WGSL compute pipelines before the first frame."""
+
+    api = "webgpu"
+
+    def scene(self, app: Application, impl: ModuleType) -> Scene:
+        image_filter = WGPUImageFilter(app.renderer.device, impl)
+        try:
+            images = panel_images(image_filter)
+        finally:
+            image_filter.release()
+        return build_scene(images)
 
 
-def main(argv: list[str] | None = None) -> int:
-    return run_variant(create_app, argv, description=__doc__)
+create_app, main = launcher(PART, WebGPU(), __doc__)
 
 
 if __name__ == "__main__":

@@ -23,6 +23,7 @@ import math
 from types import ModuleType
 
 from gandalf_core import Scene, TransformComponent
+from gandalf_core.app.cli import Part
 from gandalf_core.components import (
     CameraComponent,
     ClearColorComponent,
@@ -179,3 +180,7 @@ def study_scene(method: str, layers: int = LAYERS, height_scale: float = HEIGHT_
     label = f"{method}_l{layers}_s{height_scale:g}"
     return build_scene(methods=(method,) * len(METHODS), height_scale=height_scale, layers=layers,
                        name=f"parallax study {label}", prefix=f"study_{label}_")
+
+
+#: The technique the variants (``opengl.py``, ``webgpu.py``) hand the launcher with their backends.
+PART = Part(__package__)

@@ -8,11 +8,10 @@ from __future__ import annotations
 
 from types import ModuleType
 
-from gandalf_core import Application
-from gandalf_core.app.cli import load_impl, run_variant
+from gandalf_core import Application, Scene
+from gandalf_core.app.cli import Backend, launcher
 
-from . import STEP
-from .scene import build_scene
+from .scene import PART, build_scene
 from .shaders import SHADER, WGSL, include_dirs
 
 
@@ -24,16 +23,17 @@ def register_shaders(app: Application, impl: ModuleType) -> None:
 # --8<-- [end:register]
 
 
-def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480) -> Application:
-    impl = load_impl(STEP, student)
-    app = Application("webgpu", width, height, title="step07 parallax · WebGPU", headless=headless, fixed_dt=1 / 60)
-    register_shaders(app, impl)
-    app.add_scene(build_scene(impl))
-    return app
+class WebGPU(Backend):
+    """The wall with the WGSL module."""
+
+    api = "webgpu"
+
+    def scene(self, app: Application, impl: ModuleType) -> Scene:
+        register_shaders(app, impl)
+        return build_scene(impl)
 
 
-def main(argv: list[str] | None = None) -> int:
-    return run_variant(create_app, argv, description=__doc__)
+create_app, main = launcher(PART, WebGPU(), __doc__)
 
 
 if __name__ == "__main__":

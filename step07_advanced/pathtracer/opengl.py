@@ -6,19 +6,20 @@ per frame to a storage buffer; a full-screen material (``display.vert`` / ``disp
 
 from __future__ import annotations
 
-from gandalf_core import Application
-from gandalf_core.app.cli import load_impl, run_variant
+from types import ModuleType
 
-from . import STEP
+from gandalf_core import Application, Scene
+from gandalf_core.app.cli import Backend, launcher
+
 from .compute_gl import GLPathTracer
-from .scene import ACCUM_BUFFER, build_scene
+from .scene import ACCUM_BUFFER, PART, build_scene
 from .shaders import DISPLAY_SHADER, SHADER_DIR
 
 
 # --8<-- [start:setup]
-def create_tracer(app: Application, student: bool = False) -> GLPathTracer:
-    """The display shader, the accumulation buffer (renderer.buffers) and the kernel writing it."""
-    impl = load_impl(STEP, student)
+def create_tracer(app: Application, impl: ModuleType) -> GLPathTracer:
+    """The display shader, the accumulation buffer (renderer.buffers) and the kernel writing it (with ``impl``'s
+    shader functions)."""
     width, height = app.renderer.width, app.renderer.height
     accum = app.renderer.buffers.build(ACCUM_BUFFER, width * height * 16)  # vec4 per pixel, zeros
     tracer = GLPathTracer(app.renderer.ctx, impl, accum, width, height)  # first: it names a GL < 4.3 context
@@ -27,15 +28,16 @@ def create_tracer(app: Application, student: bool = False) -> GLPathTracer:
 # --8<-- [end:setup]
 
 
-def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480) -> Application:
-    app = Application("opengl", width, height, title="step07 path tracer · OpenGL", headless=headless,
-                      fixed_dt=1 / 60)
-    app.add_scene(build_scene(create_tracer(app, student)))
-    return app
+class OpenGL(Backend):
+    """The scene traced by the GLSL kernel."""
+
+    api = "opengl"
+
+    def scene(self, app: Application, impl: ModuleType) -> Scene:
+        return build_scene(create_tracer(app, impl))
 
 
-def main(argv: list[str] | None = None) -> int:
-    return run_variant(create_app, argv, description=__doc__)
+create_app, main = launcher(PART, OpenGL(), __doc__)
 
 
 if __name__ == "__main__":

@@ -22,6 +22,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from gandalf_core import Scene, TransformComponent
+from gandalf_core.app.cli import Part
 from gandalf_core.components import (
     CameraComponent,
     ClearColorComponent,
@@ -536,3 +537,7 @@ def camera_rays_np(packed: PackedScene, width: int, height: int, sample_index: i
 
 
 # In saved scenes (step07_advanced.usd): refused, naming why.
+
+
+#: The technique the variants (``opengl.py``, ``webgpu.py``) hand the launcher with their backends.
+PART = Part(__package__)

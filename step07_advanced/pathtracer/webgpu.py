@@ -6,19 +6,20 @@ frame to a storage buffer; a full-screen material (``display.wgsl``) shows the m
 
 from __future__ import annotations
 
-from gandalf_core import Application
-from gandalf_core.app.cli import load_impl, run_variant
+from types import ModuleType
 
-from . import STEP
+from gandalf_core import Application, Scene
+from gandalf_core.app.cli import Backend, launcher
+
 from .compute_wgpu import WGPUPathTracer
-from .scene import ACCUM_BUFFER, build_scene
+from .scene import ACCUM_BUFFER, PART, build_scene
 from .shaders import DISPLAY_SHADER, SHADER_DIR
 
 
 # --8<-- [start:setup]
-def create_tracer(app: Application, student: bool = False) -> WGPUPathTracer:
-    """The display shader, the accumulation buffer (renderer.buffers) and the kernel writing it."""
-    impl = load_impl(STEP, student)
+def create_tracer(app: Application, impl: ModuleType) -> WGPUPathTracer:
+    """The display shader, the accumulation buffer (renderer.buffers) and the kernel writing it (with ``impl``'s
+    shader functions)."""
     app.renderer.shaders.build(DISPLAY_SHADER, SHADER_DIR / "display.wgsl")
     width, height = app.renderer.width, app.renderer.height
     accum = app.renderer.buffers.build(ACCUM_BUFFER, width * height * 16)  # vec4 per pixel, zeros
@@ -26,15 +27,16 @@ def create_tracer(app: Application, student: bool = False) -> WGPUPathTracer:
 # --8<-- [end:setup]
 
 
-def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480) -> Application:
-    app = Application("webgpu", width, height, title="step07 path tracer · WebGPU", headless=headless,
-                      fixed_dt=1 / 60)
-    app.add_scene(build_scene(create_tracer(app, student)))
-    return app
+class WebGPU(Backend):
+    """The scene traced by the WGSL kernel."""
+
+    api = "webgpu"
+
+    def scene(self, app: Application, impl: ModuleType) -> Scene:
+        return build_scene(create_tracer(app, impl))
 
 
-def main(argv: list[str] | None = None) -> int:
-    return run_variant(create_app, argv, description=__doc__)
+create_app, main = launcher(PART, WebGPU(), __doc__)
 
 
 if __name__ == "__main__":

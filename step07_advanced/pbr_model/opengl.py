@@ -9,11 +9,10 @@ from __future__ import annotations
 
 from types import ModuleType
 
-from gandalf_core import Application
-from gandalf_core.app.cli import load_impl, run_variant
+from gandalf_core import Application, Scene
+from gandalf_core.app.cli import Backend, launcher
 
-from . import STEP
-from .scene import build_scene
+from .scene import PART, build_scene
 from .shaders import GL_FRAGMENT, GL_VERTEX, SHADER_NAME, include_dirs
 
 #: glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS): filter across cube faces, as WebGPU always does.
@@ -29,16 +28,17 @@ def register_shaders(app: Application, impl: ModuleType) -> None:
 # --8<-- [end:register]
 
 
-def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480) -> Application:
-    impl = load_impl(STEP, student)
-    app = Application("opengl", width, height, title="step07 PBR model · OpenGL", headless=headless, fixed_dt=1 / 60)
-    register_shaders(app, impl)
-    app.add_scene(build_scene(impl))
-    return app
+class OpenGL(Backend):
+    """The model with the GLSL program."""
+
+    api = "opengl"
+
+    def scene(self, app: Application, impl: ModuleType) -> Scene:
+        register_shaders(app, impl)
+        return build_scene(impl)
 
 
-def main(argv: list[str] | None = None) -> int:
-    return run_variant(create_app, argv, description=__doc__)
+create_app, main = launcher(PART, OpenGL(), __doc__)
 
 
 if __name__ == "__main__":

@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from gandalf_core import Scene, TransformComponent
+from gandalf_core.app.cli import Part
 from gandalf_core.components import (
     CameraComponent,
     InfoComponent,
@@ -97,3 +98,7 @@ def build_scene(impl: ModuleType | None = None, ibl: IBLMaps | None = None, env_
                         CameraComponent(40.0, 0.1, 50.0))
     scene.add_system(SpinSystem())
     return scene
+
+
+#: The technique the variants (``opengl.py``, ``webgpu.py``) hand the launcher with their backends.
+PART = Part(__package__)

@@ -8,12 +8,11 @@ from __future__ import annotations
 
 from types import ModuleType
 
-from gandalf_core import Application
-from gandalf_core.app.cli import load_impl, run_variant
+from gandalf_core import Application, Scene
+from gandalf_core.app.cli import Backend, launcher
 
-from . import STEP
 from .compute_gl import GLParticleKernel
-from .scene import build_scene, fountain_state
+from .scene import PART, build_scene, fountain_state
 from .shaders import SHADER_DIR, SHADERS, impl_shader_dir
 
 #: glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS): filter across cube faces, as WebGPU always does.
@@ -28,16 +27,17 @@ def register_shaders(app: Application, impl: ModuleType) -> None:
     app.renderer.ctx.enable_direct(GL_TEXTURE_CUBE_MAP_SEAMLESS)
 
 
-def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480) -> Application:
-    impl = load_impl(STEP, student)
-    app = Application("opengl", width, height, title="step07 · OpenGL", headless=headless, fixed_dt=1 / 60)
-    register_shaders(app, impl)
-    app.add_scene(build_scene(impl, GLParticleKernel(app.renderer.ctx, impl, fountain_state())))
-    return app
+class OpenGL(Backend):
+    """The GLSL programs, and the fountain's kernel in the renderer's moderngl context."""
+
+    api = "opengl"
+
+    def scene(self, app: Application, impl: ModuleType) -> Scene:
+        register_shaders(app, impl)
+        return build_scene(impl, GLParticleKernel(app.renderer.ctx, impl, fountain_state()))
 
 
-def main(argv: list[str] | None = None) -> int:
-    return run_variant(create_app, argv, description=__doc__)
+create_app, main = launcher(PART, OpenGL(), __doc__)
 
 
 if __name__ == "__main__":

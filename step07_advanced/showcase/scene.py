@@ -15,6 +15,7 @@ from types import ModuleType
 import numpy as np
 
 from gandalf_core import Scene, TransformComponent
+from gandalf_core.app.cli import Part
 from gandalf_core.components import (
     CameraComponent,
     InfoComponent,
@@ -118,3 +119,7 @@ def build_scene(impl: ModuleType, particles: ParticleKernel | None = None) -> Sc
 def fountain_state() -> np.ndarray:
     """The fountain's particles after their warm-up: the state every kernel starts from."""
     return initial_particles(PARTICLE_COUNT, FOUNTAIN)
+
+
+#: The technique the variants (``opengl.py``, ``webgpu.py``) hand the launcher with their backends.
+PART = Part(__package__)

@@ -8,12 +8,11 @@ from __future__ import annotations
 
 from types import ModuleType
 
-from gandalf_core import Application
-from gandalf_core.app.cli import load_impl, run_variant
+from gandalf_core import Application, Scene
+from gandalf_core.app.cli import Backend, launcher
 
-from . import STEP
 from .compute_wgpu import WGPUParticleKernel
-from .scene import build_scene, fountain_state
+from .scene import PART, build_scene, fountain_state
 from .shaders import SHADER_DIR, SHADERS, impl_shader_dir
 
 
@@ -23,16 +22,17 @@ def register_shaders(app: Application, impl: ModuleType) -> None:
         app.renderer.shaders.build(name, SHADER_DIR / f"{name}.wgsl", include_dirs=[impl_shader_dir(impl)])
 
 
-def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480) -> Application:
-    impl = load_impl(STEP, student)
-    app = Application("webgpu", width, height, title="step07 · WebGPU", headless=headless, fixed_dt=1 / 60)
-    register_shaders(app, impl)
-    app.add_scene(build_scene(impl, WGPUParticleKernel(app.renderer.device, impl, fountain_state())))
-    return app
+class WebGPU(Backend):
+    """The WGSL modules, and the fountain's kernel on the renderer's device."""
+
+    api = "webgpu"
+
+    def scene(self, app: Application, impl: ModuleType) -> Scene:
+        register_shaders(app, impl)
+        return build_scene(impl, WGPUParticleKernel(app.renderer.device, impl, fountain_state()))
 
 
-def main(argv: list[str] | None = None) -> int:
-    return run_variant(create_app, argv, description=__doc__)
+create_app, main = launcher(PART, WebGPU(), __doc__)
 
 
 if __name__ == "__main__":

@@ -13,13 +13,12 @@ from typing import Any
 
 import numpy as np
 
-from gandalf_core import Application
-from gandalf_core.app.cli import load_impl, run_variant
+from gandalf_core import Application, Scene
+from gandalf_core.app.cli import Backend, launcher
 from gandalf_core.resources import MaterialData, MeshData
 
-from . import STEP
 from .patches import GUARANTEED_MAX_LEVEL, TerrainParams, check_levels, patch_mesh
-from .scene import PARAMS, build_scene
+from .scene import PARAMS, PART, build_scene
 from .shaders import GL_STAGES, SHADER_DIR, SHADER_NAME, impl_shader_dir
 
 GL_MAX_TESS_GEN_LEVEL = 0x8E7E
@@ -62,19 +61,17 @@ class GLTerrain:
         """Nothing to do per frame: the tessellation control stage reads the camera from the frame block."""
 
 
-def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480,
-               params: TerrainParams = PARAMS, impl: ModuleType | None = None, **scene: Any) -> Application:
-    """The terrain app; ``params`` changes the terrain's levels, ``impl`` (a package holding ``terrain.*``)
-    overrides ``student``, ``scene`` goes to :func:`build_scene` (eye, target, heights)."""
-    impl = impl if impl is not None else load_impl(STEP, student)
-    app = Application("opengl", width, height, title="step07 · terrain · OpenGL", headless=headless,
-                      fixed_dt=1 / 60)
-    app.add_scene(build_scene(impl, GLTerrain(app, impl, params), **scene))
-    return app
+class OpenGL(Backend):
+    """The terrain on :class:`GLTerrain`; ``params`` changes its levels, ``scene`` goes to :func:`build_scene`
+    (eye, target, heights)."""
+
+    api = "opengl"
+
+    def scene(self, app: Application, impl: ModuleType, params: TerrainParams = PARAMS, **scene: Any) -> Scene:
+        return build_scene(impl, GLTerrain(app, impl, params), **scene)
 
 
-def main(argv: list[str] | None = None) -> int:
-    return run_variant(create_app, argv, description=__doc__)
+create_app, main = launcher(PART, OpenGL(), __doc__)
 
 
 if __name__ == "__main__":

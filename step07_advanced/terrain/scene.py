@@ -15,6 +15,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from gandalf_core import Scene, TransformComponent
+from gandalf_core.app.cli import Part
 from gandalf_core.components import (
     CameraComponent,
     ClearColorComponent,
@@ -104,3 +105,7 @@ def build_scene(impl: ModuleType, terrain: TerrainBackend, eye: Any = EYE, targe
 
 
 # In saved scenes (step07_advanced.usd): refused, naming why.
+
+
+#: The technique the variants (``opengl.py``, ``webgpu.py``) hand the launcher with their backends.
+PART = Part(__package__)

@@ -13,14 +13,13 @@ from typing import Any
 
 import numpy as np
 
-from gandalf_core import Application
-from gandalf_core.app.cli import load_impl, run_variant
+from gandalf_core import Application, Scene
+from gandalf_core.app.cli import Backend, launcher
 from gandalf_core.resources import MaterialData, MeshData
 
-from . import STEP
 from .heightfield import encode_heights
 from .patches import TerrainParams
-from .scene import PARAMS, build_scene, terrain_heights
+from .scene import PARAMS, PART, build_scene, terrain_heights
 from .shaders import SHADER_NAME, WGSL_RENDER, impl_shader_dir
 from .tessellate_wgpu import VERTEX_BUFFER, WGPUTessellator
 
@@ -53,19 +52,17 @@ class WGPUTerrain:
         self.tessellator.run(eye)
 
 
-def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480,
-               params: TerrainParams = PARAMS, impl: ModuleType | None = None, **scene: Any) -> Application:
-    """The terrain app; ``params`` changes the terrain's levels, ``impl`` (a package holding ``terrain.*``)
-    overrides ``student``, ``scene`` goes to :func:`build_scene` (eye, target, heights)."""
-    impl = impl if impl is not None else load_impl(STEP, student)
-    app = Application("webgpu", width, height, title="step07 · terrain · WebGPU", headless=headless,
-                      fixed_dt=1 / 60)
-    app.add_scene(build_scene(impl, WGPUTerrain(app, impl, params, scene.get("heights")), **scene))
-    return app
+class WebGPU(Backend):
+    """The terrain on :class:`WGPUTerrain`; ``params`` changes its levels, ``scene`` goes to :func:`build_scene`
+    (eye, target, heights)."""
+
+    api = "webgpu"
+
+    def scene(self, app: Application, impl: ModuleType, params: TerrainParams = PARAMS, **scene: Any) -> Scene:
+        return build_scene(impl, WGPUTerrain(app, impl, params, scene.get("heights")), **scene)
 
 
-def main(argv: list[str] | None = None) -> int:
-    return run_variant(create_app, argv, description=__doc__)
+create_app, main = launcher(PART, WebGPU(), __doc__)
 
 
 if __name__ == "__main__":

@@ -48,6 +48,21 @@ def test_step_has_the_standard_files(step):
             assert importlib.import_module(part).STEP == step, f"{part}.STEP must name its step ({step})"
 
 
+
+@pytest.mark.parametrize("step", STEPS)
+def test_every_variant_is_handed_to_the_one_launcher(step):
+    """One launcher shape: every ``opengl.py`` / ``webgpu.py`` (the step's and each part's) gets its ``create_app``
+    and ``main`` from ``gandalf_core.app.cli.launcher`` (a part's description and the API's backend), in its API."""
+    for part in dict.fromkeys([step, *step_parts(step)]):
+        for variant in ("opengl", "webgpu"):
+            module = importlib.import_module(f"{part}.{variant}")
+            for name in ("create_app", "main"):
+                function = getattr(module, name)
+                assert function.__qualname__ == f"launcher.<locals>.{name}", (
+                    f"{part}.{variant}.{name} is written by hand: hand the part and the backend to "
+                    "gandalf_core.app.cli.launcher")
+            assert f" in {'OpenGL' if variant == 'opengl' else 'WebGPU'} " in module.create_app.__doc__
+
 @pytest.mark.parametrize("step", STEPS)
 def test_exercises_and_solutions_export_the_same_names(step):
     """The same Python names and the same files (shader exercises are files the step's shaders include)."""

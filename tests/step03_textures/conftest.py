@@ -4,14 +4,17 @@ and ``render_scene``: draw a scene with the step's textured shader, headless, in
 from __future__ import annotations
 
 from collections.abc import Callable
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 from gandalf_core import Application, Scene
 from gandalf_tools.grading.plugin import impl_fixture
-from step03_textures.opengl import SHADERS
 from step03_textures.scene import SHADER
+
+#: The step's shader folder.
+SHADERS = Path(__file__).resolve().parents[2] / "step03_textures" / "shaders"
 
 impl = impl_fixture("step03_textures")
 

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import importlib
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -10,7 +9,7 @@ import numpy as np
 
 from gandalf_core import Application
 from gandalf_core.render import RenderSystem
-from step04_camera.scene import build_scene
+from step04_camera.scene import build_scene, register_shaders
 
 REFERENCES = Path(__file__).resolve().parent / "references"
 SIZE = (128, 96)
@@ -19,7 +18,7 @@ SIZE = (128, 96)
 def make_app(backend: str, impl: object, size: tuple[int, int] = SIZE) -> Application:
     """A headless app of the step's scene with ``impl`` providing look_at and OrbitCameraSystem."""
     app = Application(backend, *size, headless=True, fixed_dt=1 / 60)
-    importlib.import_module(f"step04_camera.{backend}").register_shaders(app)
+    register_shaders(app)
     app.add_scene(build_scene(impl))
     return app
 

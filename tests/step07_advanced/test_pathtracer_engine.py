@@ -19,6 +19,7 @@ import pytest
 import shader_harness
 
 from gandalf_core import Application, Scene, TransformComponent
+from gandalf_core.app.cli import load_impl
 from gandalf_core.components import ClearColorComponent, InfoComponent, SkyboxComponent
 from gandalf_core.resources import MeshData, ResourceError, TextureData, linear_to_srgb, sky_cube
 from gandalf_tools.testing import psnr
@@ -34,7 +35,8 @@ AGREEMENT_SAMPLES = 16
 def tracer_app(backend: str, build, size=SIZE, student: bool = False):
     """A headless app with the path tracer's kernel and display; ``build(kernel)`` returns the scene."""
     app = Application(backend, *size, headless=True, fixed_dt=1 / 60)
-    kernel = importlib.import_module(f"step07_advanced.pathtracer.{backend}").create_tracer(app, student)
+    variant = importlib.import_module(f"step07_advanced.pathtracer.{backend}")
+    kernel = variant.create_tracer(app, load_impl("step07_advanced", student))
     app.add_scene(build(kernel))
     return app, kernel
 
