@@ -6,16 +6,18 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
+from PIL import Image
 
 from gandalf_core import InfoComponent, Scene, TransformComponent
 from gandalf_core.components import MaterialComponent, MeshComponent
 from gandalf_core.math import quat_from_axis_angle, quat_from_euler, quat_mul
 from gandalf_core.resources import MaterialData, TextureData, linear_to_srgb, quad, srgb_to_linear
 from gandalf_core.systems import SpinComponent
-from gandalf_tools.testing import compare_images, compare_to_reference, render_frames
+from gandalf_tools.testing import LocalDifferences, compare_images, compare_to_reference, render_frames
 from step03_textures import opengl, solutions, webgpu
 from step03_textures.atlas import CROSS_CELLS, CROSS_GRID, dice_atlas
 from step03_textures.scene import SHADER, build_scene, with_uvs
@@ -24,11 +26,15 @@ REFERENCES = Path(__file__).parent / "references"
 VARIANTS = {"opengl": opengl, "webgpu": webgpu}
 W, H, FRAMES = 160, 120, 40
 # Textures are sampled by two different rasterisers whose LOD and filtering arithmetic differ slightly.
-# Measured here (llvmpipe / lavapipe): 66 dB between the APIs, largest channel difference 5. Other drivers differ
-# more, above all on the aliased floor half, so the assertions leave room: 35 dB between the APIs, 40 dB against
-# the committed references.
+# Measured here (llvmpipe / lavapipe): 66 dB between the APIs, largest channel difference 5; on an NVIDIA H200,
+# 46 dB between its OpenGL and Vulkan drivers. The committed references were made with Mesa: another driver
+# samples the receding floor a mip level apart near the horizon and covers edges a pixel apart (38 dB on the H200,
+# up to 209 levels on 0.13 % of pixels, at most 9.6 levels averaged over any 8 x 8 square), which the
+# specifications allow: against the references the pictures must agree within those legal local differences
+# (99.5 % of pixels within 32 levels, no 8 x 8 square off by more than 12 on average), which every plausible bug
+# below still breaks.
 MIN_PSNR_BETWEEN_APIS = 35.0
-MIN_PSNR_REFERENCE = 40.0
+AGAINST_REFERENCE = LocalDifferences(level=32, share=0.995)
 
 
 @pytest.fixture(scope="module")
@@ -42,7 +48,36 @@ def test_both_apis_draw_the_same_picture(pictures):
 
 @pytest.mark.parametrize("backend", list(VARIANTS))
 def test_the_picture_matches_the_reference(pictures, backend):
-    compare_to_reference(pictures[backend], REFERENCES / f"scene-{backend}.png", min_psnr=MIN_PSNR_REFERENCE)
+    compare_to_reference(pictures[backend], REFERENCES / f"scene-{backend}.png", local=AGAINST_REFERENCE)
+
+
+def _bricks(**changes):
+    return lambda *args, **kwargs: solutions.brick_texture(*args, **{**kwargs, **changes})
+
+
+def _uvs(change):
+    return lambda positions, normals: change(np.array(solutions.cube_cross_uvs(positions, normals), dtype=float))
+
+
+#: Plausible mistakes in the step's two exercises, each drawn through the whole scene.
+BUGS = {
+    "brick and mortar colours swapped": (_bricks(brick_color=(0.80, 0.78, 0.72), mortar_color=(0.62, 0.27, 0.18)),
+                                         solutions.cube_cross_uvs),
+    "no mortar": (_bricks(mortar=0), solutions.cube_cross_uvs),
+    "bricks twice as tall": (lambda *a, **k: solutions.brick_texture(*a, **{**k, "brick_size": (32, 32)}),
+                             solutions.cube_cross_uvs),
+    "atlas read mirrored (u -> 1 - u)": (solutions.brick_texture, _uvs(lambda uv: np.c_[1.0 - uv[:, 0], uv[:, 1]])),
+    "atlas rows upside down (v -> 1 - v)": (solutions.brick_texture, _uvs(lambda uv: np.c_[uv[:, 0], 1.0 - uv[:, 1]])),
+}
+
+
+@pytest.mark.parametrize("bug", list(BUGS))
+def test_the_legal_differences_still_catch_plausible_bugs(bug):
+    bricks, uvs = BUGS[bug]
+    picture = render_frames(opengl.create_app, frames=FRAMES, width=W, height=H,
+                            impl=SimpleNamespace(brick_texture=bricks, cube_cross_uvs=uvs))
+    reference = np.asarray(Image.open(REFERENCES / "scene-opengl.png").convert("RGBA"))
+    assert AGAINST_REFERENCE.violations(picture, reference), f"{bug}: drawn within the legal local differences"
 
 
 @pytest.mark.parametrize("backend", list(VARIANTS))
