@@ -39,7 +39,11 @@ def test_webgpu_cube_mips_are_made_on_the_gpu(srgb: bool) -> None:
                     {"offset": 0, "bytes_per_row": s * 4, "rows_per_image": s}, (s, s, 1))
                 got = np.frombuffer(raw, np.uint8).reshape(s, s, 4).astype(int)
                 diff = np.abs(got - chain[level][face].astype(int))
-                limit, mean_limit = (1, 0.6) if level == 1 else (4, 3.0)
+                # Level 1 is one exact 2 x 2 average: the CPU rounds it once (0.5 level). The GPU decodes the sRGB
+                # texels to linear (hardware may use a table of limited precision), filters and encodes on write:
+                # a second rounding in each direction, so one level more where sRGB is steep (an NVIDIA H200: 2).
+                # The mean stays under 0.6 level: a wrong filter (nearest texel, filtering sRGB bytes) is far off.
+                limit, mean_limit = ((2 if srgb else 1), 0.6) if level == 1 else (4, 3.0)
                 assert diff.max() <= limit and diff.mean() <= mean_limit, (
                     f"level {level} face {face} (srgb={srgb}): GPU mip differs from the CPU box filter by up to "
                     f"{diff.max()} (mean {diff.mean():.2f}); expected <= {limit}")
