@@ -99,11 +99,12 @@ def pack_frame(
 
     ``depth_ends`` are the NDC depths of the near and far planes (swapped by reverse-Z); the skybox
     draws at the far one. ``clip_to_direction`` maps a clip-space point on the far plane to a world
-    direction (the inverse of projection × the view's rotation).
+    direction (the inverse of projection × the view's rotation). The projection is uploaded scaled by
+    :func:`clip_scale`.
     """
     block, field = _FRAME_BLOCK, _FRAME_FIELDS  # reused: every field is written below, the bytes copied out
     field["view"][...] = view
-    field["projection"][...] = projection
+    field["projection"][...] = projection * clip_scale(projection, depth_ends[0])
     field["camera_position"][:3] = np.asarray(camera_position, dtype=np.float64)[:3]
     field["camera_position"][3] = 1.0
     wraps, wrapped = divmod(float(time), TIME_WRAP)
@@ -118,6 +119,23 @@ def pack_frame(
         field["origin_high"][:3] = high
         field["origin_low"][:3] = origin - high.astype(np.float64)
     return block.tobytes()
+
+
+def clip_scale(projection: np.ndarray, near_ndc: float) -> float:
+    """The factor a perspective projection is multiplied by before upload, so that clip w is 1 on the near plane.
+
+    Clip coordinates are homogeneous: ``k · clip`` for any k > 0 rasterises to the same pixels, the same depth
+    (z / w) and the same perspective-correct varyings. But the GPU's own set-up arithmetic (clipping, edge
+    equations) multiplies clip coordinates together, and a scene of size 1e-20 (near plane 1e-21) makes products
+    near 1e-40, below float32's smallest normal number (1.2e-38): an NVIDIA GPU flushes them to zero and draws
+    nothing. Scaled by 1 / (w at the near plane), clip w runs from 1 to far / near whatever the scene's size.
+    1 for an orthographic projection (w is 1 already) or a matrix whose near plane cannot be read off.
+    """
+    if projection[3, 3] != 0.0 or projection[2, 3] == 0.0:
+        return 1.0
+    # z_ndc = (P22 z + P23) / (P32 z) = near_ndc at the near plane: w there is P32 z = -P23 P32 / (P22 - near_ndc P32).
+    w_near = abs(projection[2, 3] * projection[3, 2] / (projection[2, 2] - near_ndc * projection[3, 2]))
+    return 1.0 / w_near if np.isfinite(w_near) and w_near > 0.0 and np.isfinite(1.0 / w_near) else 1.0
 
 
 def _clip_to_direction(projection: np.ndarray, rotation: np.ndarray) -> np.ndarray:
