@@ -1,10 +1,12 @@
 """The engine's uniform blocks, declared once: their fields, layouts (std140 = WGSL uniform, see :mod:`.layout`)
 and binding points, which the light system (CPU) and the renderers (GPU) share.
 
-``render/shaders/frame.glsl`` and ``frame.wgsl`` declare Frame and Lights with these fields in this order (GLSL
-spells the members ``u_<field>``, see :data:`GLSL_MEMBERS`); a material's own ``Material`` block is declared by its
-shader. They live here, below both the systems that pack them and the renderers that upload them, so neither
-layer imports the other.
+The shaders' declarations of Frame and Lights are written from these layouts (:data:`ENGINE_SNIPPETS`, the
+generated includes ``"blocks.glsl"`` and ``"blocks.wgsl"``, which ``render/shaders/frame.glsl`` and ``frame.wgsl``
+include; GLSL spells the members ``u_<field>``, see :data:`GLSL_MEMBERS`); a material's own ``Material`` block is
+declared with its shader (``shaders.build(..., material=...)``) and written the same way (:func:`material_snippets`).
+They live here, below both the systems that pack them and the renderers that upload them, so neither layer imports
+the other.
 
 **Binding points, the one convention for both APIs** (:data:`BLOCK_BINDINGS`): Frame is GL binding point 0 and
 WGSL ``@group(0) @binding(0)``; Lights is GL binding point 1 and ``@group(0) @binding(1)``; Material is GL binding
@@ -51,6 +53,23 @@ GLSL_MEMBERS = {
     "Lights": {"count": "u_light_count", "ambient": "u_ambient", "position": "u_light_position",
                "color": "u_light_color", "light_view_projection": "u_light_view_projection", "shadow": "u_shadow"},
 }
+
+#: The engine's blocks as shader text, for ``#include "blocks.glsl"`` / ``#include "blocks.wgsl"``.
+ENGINE_SNIPPETS = {
+    "blocks.glsl": (FRAME_LAYOUT.glsl(None, GLSL_MEMBERS["Frame"]) + f"\n#define MAX_LIGHTS {MAX_LIGHTS}\n"
+                    + LIGHTS_LAYOUT.glsl(None, GLSL_MEMBERS["Lights"])),
+    "blocks.wgsl": (FRAME_LAYOUT.wgsl("frame", *WGSL_BINDINGS["Frame"]) + f"\nconst MAX_LIGHTS: u32 = {MAX_LIGHTS}u;\n"
+                    + LIGHTS_LAYOUT.wgsl("lights", *WGSL_BINDINGS["Lights"])),
+}
+
+
+def material_snippets(layout: BlockLayout | None) -> dict[str, str]:
+    """A material's block as shader text, for ``#include "material.glsl"`` / ``#include "material.wgsl"``."""
+    if layout is None:
+        return {}
+    return {"material.glsl": layout.glsl("material"),
+            "material.wgsl": layout.wgsl("material", *WGSL_BINDINGS["Material"])}
+
 
 #: The lights part (count, ambient, position[], color[]): what LightSystem.pack() returns.
 LIGHTS_BYTES = LIGHTS_LAYOUT.offset("light_view_projection")
