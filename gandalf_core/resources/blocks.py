@@ -16,7 +16,10 @@ point 2 and ``@group(1) @binding(0)`` (a material's textures then follow in ``@g
 
 from __future__ import annotations
 
-from .layout import BlockLayout
+from collections.abc import Sequence
+from typing import Any
+
+from .layout import BlockLayout, LayoutError
 
 #: Lights a scene may have (point and directional; ambient lights add up into one colour).
 MAX_LIGHTS = 64
@@ -63,10 +66,31 @@ ENGINE_SNIPPETS = {
 }
 
 
-def material_snippets(layout: BlockLayout | None) -> dict[str, str]:
+#: The Material block of a shader built without ``material=``: the material's colour (linear RGBA).
+COLOR_MATERIAL = BlockLayout("Material", [("color", "vec4")])
+#: The generated includes that declare a shader's Material block (GLSL, WGSL).
+MATERIAL_INCLUDES = ("material.glsl", "material.wgsl")
+
+MaterialDeclaration = BlockLayout | Sequence[tuple[Any, ...]]
+
+
+def material_layout(material: MaterialDeclaration | None) -> BlockLayout:
+    """A shader's Material block from its declaration (a BlockLayout or a field list; None: :data:`COLOR_MATERIAL`).
+
+    Each field takes the material's value of the same name (``color`` is its colour, the others come from its
+    ``params``); a field with a default (padding: ``("_pad", "float", 0)``) need not be set.
+    """
+    if material is None:
+        return COLOR_MATERIAL
+    if isinstance(material, BlockLayout):
+        if material.name != "Material":
+            raise LayoutError(f"block '{material.name}': a material's block is named 'Material'")
+        return material
+    return BlockLayout("Material", material)
+
+
+def material_snippets(layout: BlockLayout) -> dict[str, str]:
     """A material's block as shader text, for ``#include "material.glsl"`` / ``#include "material.wgsl"``."""
-    if layout is None:
-        return {}
     return {"material.glsl": layout.glsl("material"),
             "material.wgsl": layout.wgsl("material", *WGSL_BINDINGS["Material"])}
 

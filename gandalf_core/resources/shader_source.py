@@ -78,6 +78,8 @@ class _Expander:
             if c.is_file():
                 return c
         searched = ", ".join(repr(str(c.parent)) for c in candidates) or "nowhere (no base directory)"
+        if name in ("material.glsl", "material.wgsl"):
+            searched += " (the Material block is written when the shader is built by its library)"
         raise ResourceError(f"shader '{self.root_name}'", "include", f'{where}: "{name}" not found in {searched}')
 
     def expand(self, text: str, filename: str, base_dir: Path | None, chain: list[tuple[Path | str, str]]) -> None:

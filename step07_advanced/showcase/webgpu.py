@@ -9,7 +9,7 @@ from __future__ import annotations
 from types import ModuleType
 
 from gandalf_core import Application
-from gandalf_core.app.cli import load_impl, run_variant
+from gandalf_core.app.cli import build_shaders, load_impl, run_variant
 
 from . import STEP
 from .compute_wgpu import WGPUParticleKernel
@@ -19,8 +19,7 @@ from .shaders import SHADER_DIR, SHADERS, impl_shader_dir
 
 def register_shaders(app: Application, impl: ModuleType) -> None:
     """Build the step's WGSL modules with ``impl``'s ``brdf.wgsl`` and ``normal_map.wgsl``."""
-    for name in SHADERS:
-        app.renderer.shaders.build(name, SHADER_DIR / f"{name}.wgsl", include_dirs=[impl_shader_dir(impl)])
+    build_shaders(app, SHADERS, SHADER_DIR, [impl_shader_dir(impl)])
 
 
 def create_app(headless: bool | None = None, student: bool = False, width: int = 640, height: int = 480) -> Application:

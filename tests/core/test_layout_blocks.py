@@ -229,7 +229,7 @@ def test_frame_and_lights_blocks_match_the_wgsl_structs():
     cpass.end()
     device.queue.submit([encoder.finish()])
     got = np.frombuffer(device.queue.read_buffer(out), np.float32)
-    for (block, path, offset, kind), value in zip(leaves, got):
+    for (block, path, offset, _kind), value in zip(leaves, got):
         word = offset // 4  # an integer member's bits are the float's: bitcast back above
         assert value == word, f"{block}.{path}: WGSL reads word {value}, the declaration puts it at {word}"
 
