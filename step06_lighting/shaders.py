@@ -16,17 +16,22 @@ from gandalf_core.app.cli import build_shaders
 
 SHADER_DIR = Path(__file__).resolve().parent / "shaders"
 
-#: shader name -> (GLSL vertex file, GLSL fragment file); the WGSL module is ``<name>.wgsl``.
+#: The Material blocks (each field is one value of the material: its colour, then its params), declared once:
+#: the engine writes them into both languages (``#include "material.glsl"`` / ``"material.wgsl"``).
+PHONG_MATERIAL = [("color", "vec4"), ("specular", "float"), ("shininess", "float")]
+GLASS_MATERIAL = [("color", "vec4"), ("ior", "float")]
+
+#: shader name -> (GLSL vertex file, GLSL fragment file[, Material block]); the WGSL module is ``<name>.wgsl``.
 SHADERS = {
-    "phong": ("lit.vert", "phong.frag"),
-    "phong_textured": ("phong_textured.vert", "phong_textured.frag"),
+    "phong": ("lit.vert", "phong.frag", PHONG_MATERIAL),
+    "phong_textured": ("phong_textured.vert", "phong_textured.frag", PHONG_MATERIAL),
     "mirror": ("lit.vert", "mirror.frag"),
-    "glass": ("lit.vert", "glass.frag"),
+    "glass": ("lit.vert", "glass.frag", GLASS_MATERIAL),
     "emissive": ("lit.vert", "emissive.frag"),
 }
 
 
-def shader_table(names: tuple[str, ...]) -> dict[str, tuple[str, str]]:
+def shader_table(names: tuple[str, ...]) -> dict[str, tuple[Any, ...]]:
     """The part of :data:`SHADERS` a concept's scene uses (``names``: its materials' shaders)."""
     unknown = [name for name in names if name not in SHADERS]
     if unknown:

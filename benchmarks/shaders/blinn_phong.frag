@@ -4,9 +4,7 @@
 #include "frame.glsl"
 in vec3 v_position;
 in vec3 v_normal;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 out vec4 f_color;
 void main() {
     vec3 n = normalize(v_normal);

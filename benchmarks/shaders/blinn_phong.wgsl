@@ -2,8 +2,7 @@
 // (positions relative to the camera, at the origin).
 #include "frame.wgsl"
 #include "instance.wgsl"
-struct Material { color: vec4<f32> };
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 struct VOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) position: vec3<f32>,

@@ -1,9 +1,7 @@
 #version 330 core
 // One fixed directional light plus ambient; the material colour tints it (linear light).
 in vec3 v_normal;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 out vec4 f_color;
 void main() {
     float diffuse = max(dot(normalize(v_normal), normalize(vec3(0.3, 0.5, 1.0))), 0.0);

@@ -2,8 +2,7 @@
 // (one fixed directional light plus ambient, tinted by the material colour, in linear light).
 #include "frame.wgsl"
 #include "instance.wgsl"
-struct Material { color: vec4<f32> };
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 struct VOut { @builtin(position) position: vec4<f32>, @location(0) normal: vec3<f32> };
 @vertex fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>,
     inst: Instance) -> VOut {

@@ -24,6 +24,7 @@ from typing import Any
 
 from ..ecs import Scene
 from ..render.base import check_backend
+from ..resources.layout import BlockLayout
 from .application import Application
 from .extensions import extension
 
@@ -84,22 +85,28 @@ def run_scene(build_scene: Callable[[], Scene], argv: list[str] | None = None, *
 
 
 #: A step's shader table: shader names (files ``<name>.vert``/``.frag`` and ``<name>.wgsl``), or a mapping
-#: name -> (GLSL vertex file, GLSL fragment file[, WGSL file]) with the WGSL file ``<name>.wgsl`` when left out.
-ShaderTable = Mapping[str, Sequence[str]] | Iterable[str]
+#: name -> (GLSL vertex file, GLSL fragment file[, WGSL file][, Material block]) with the WGSL file ``<name>.wgsl``
+#: when left out; the Material block (fields or a BlockLayout, see ``shaders.build(material=...)``) is the colour
+#: alone when left out. An entry may also be the Material block alone (the files by the name).
+ShaderTable = Mapping[str, Any] | Iterable[str]
 
 
-def shader_files(table: ShaderTable) -> dict[str, tuple[str, str, str]]:
-    """``table`` as name -> (GLSL vertex file, GLSL fragment file, WGSL file)."""
+def shader_files(table: ShaderTable) -> dict[str, tuple[str, str, str, Any]]:
+    """``table`` as name -> (GLSL vertex file, GLSL fragment file, WGSL file, Material block or None)."""
     items = table.items() if isinstance(table, Mapping) else ((name, ()) for name in table)
     files = {}
     for name, entry in items:
-        entry = (entry,) if isinstance(entry, str) else tuple(entry)
+        entry = (entry,) if isinstance(entry, (str, BlockLayout)) else tuple(entry)
+        material = None
+        if entry and (isinstance(entry[-1], BlockLayout) or isinstance(entry[-1], list)):
+            entry, material = entry[:-1], entry[-1]
         if len(entry) == 0:
-            files[name] = (f"{name}.vert", f"{name}.frag", f"{name}.wgsl")
+            files[name] = (f"{name}.vert", f"{name}.frag", f"{name}.wgsl", material)
         elif len(entry) in (2, 3):
-            files[name] = (entry[0], entry[1], entry[2] if len(entry) == 3 else f"{name}.wgsl")
+            files[name] = (entry[0], entry[1], entry[2] if len(entry) == 3 else f"{name}.wgsl", material)
         else:
-            raise ValueError(f"shader table: {name!r}: expected (vertex, fragment[, wgsl]) file names, got {entry!r}")
+            raise ValueError(f"shader table: {name!r}: expected (vertex, fragment[, wgsl][, material]) file names, "
+                             f"got {entry!r}")
     return files
 
 
@@ -107,11 +114,12 @@ def build_shaders(app: Application, table: ShaderTable, folder: str | Path,
                   include_dirs: Sequence[str | Path] = ()) -> None:
     """Build every shader of ``table`` from ``folder`` in ``app``'s renderer, in the app's API."""
     folder = Path(folder)
-    for name, (vert, frag, wgsl) in shader_files(table).items():
+    for name, (vert, frag, wgsl, material) in shader_files(table).items():
         if app.backend == "opengl":
-            app.renderer.shaders.build(name, folder / vert, folder / frag, include_dirs=include_dirs)
+            app.renderer.shaders.build(name, folder / vert, folder / frag, include_dirs=include_dirs,
+                                       material=material)
         else:
-            app.renderer.shaders.build(name, folder / wgsl, include_dirs=include_dirs)
+            app.renderer.shaders.build(name, folder / wgsl, include_dirs=include_dirs, material=material)
 
 
 @dataclass(frozen=True)

@@ -32,6 +32,8 @@ BUILTIN_MATERIALS: dict[str, dict[str, tuple[float, float]]] = {
     "gandalf.blinn_phong": {"specular": (0.25, 0.0), "shininess": (32.0, 0.0)},
 }
 TEXTURED_SUFFIX = "+texture"
+#: The Material block of the Blinn-Phong shaders (``gandalf.unlit``'s is the colour alone).
+BLINN_PHONG_MATERIAL = [("color", "vec4"), ("specular", "float"), ("shininess", "float")]
 
 
 def is_builtin(shader: str) -> bool:
@@ -60,10 +62,11 @@ def check(name: str, data: MaterialData) -> None:
 
 
 def _build(shaders: Any, variant: str, stem: str, lang: str) -> None:
+    material = BLINN_PHONG_MATERIAL if "blinn_phong" in stem else None
     if lang == "glsl":
-        shaders.build(variant, SNIPPETS_DIR / f"{stem}.vert", SNIPPETS_DIR / f"{stem}.frag")
+        shaders.build(variant, SNIPPETS_DIR / f"{stem}.vert", SNIPPETS_DIR / f"{stem}.frag", material=material)
     elif lang == "wgsl":
-        shaders.build(variant, SNIPPETS_DIR / f"{stem}.wgsl")
+        shaders.build(variant, SNIPPETS_DIR / f"{stem}.wgsl", material=material)
     else:
         raise ValueError(f"lang: expected 'glsl' or 'wgsl', got {lang!r}")
 

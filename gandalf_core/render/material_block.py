@@ -1,15 +1,17 @@
-"""A material's uniform block, read from its shader in either language, and the varyings between its stages.
+"""A shader's Material block, declared in Python when the shader is built, and the varyings between its stages.
 
 A material's values live in one ``Material`` block, the same bytes in both APIs (the layout rule of
-:mod:`gandalf_core.resources.layout`; binding points in :mod:`gandalf_core.resources.blocks`):
+:mod:`gandalf_core.resources.layout`; binding points in :mod:`gandalf_core.resources.blocks`). The shader is built
+with its declaration, ``shaders.build(..., material=[("color", "vec4"), ("shininess", "float")])`` (by default the
+colour alone), and its stages ``#include "material.glsl"`` or ``"material.wgsl"``, which the engine writes from it:
 
 * GLSL: ``layout(std140) uniform Material { vec4 color; float shininess; } material;`` read as ``material.color``;
-* WGSL: ``struct Material { color: vec4<f32>, shininess: f32 };`` ``@group(1) @binding(0) var<uniform> material:
+* WGSL: ``struct Material { color: vec4<f32>, shininess: f32, };`` ``@group(1) @binding(0) var<uniform> material:
   Material;``.
 
 Each field takes the material's value of the same name (``color`` is the material's colour, linear RGBA; the
-others come from ``params``). A field whose name starts with ``_`` is padding: it has a stated default (zero) and
-the material need not set it. Everything else must be set, or the material is an error when it is built.
+others come from ``params``). A field with a default (padding) need not be set; everything else must be, or the
+material is an error when it is built.
 """
 
 from __future__ import annotations
@@ -17,7 +19,10 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from ..resources.blocks import MATERIAL_INCLUDES, MaterialDeclaration, material_layout, material_snippets
 from ..resources.layout import BlockLayout, LayoutError
+from ..resources.shader_source import ShaderSource
+from .errors import ShaderCompileError
 
 MATERIAL_BLOCK = "Material"
 
@@ -27,77 +32,25 @@ def _strip_comments(text: str) -> str:
     return re.sub(r"//[^\n]*", " ", text)
 
 
-_GLSL_BLOCK = re.compile(r"\buniform\s+Material\s*\{(?P<body>[^}]*)\}\s*(?P<instance>\w+)?\s*;")
-_GLSL_MEMBER = re.compile(r"^\s*(?:(?:highp|mediump|lowp)\s+)?(?P<type>\w+)\s+(?P<names>[^;]+)$")
-_DECLARATOR = re.compile(r"^\s*(?P<name>[A-Za-z_]\w*)\s*(?:\[\s*(?P<count>\d+)\s*\])?\s*$")
-
-
-def glsl_material_fields(text: str, filename: str) -> list[tuple[Any, ...]] | None:
-    """The fields of the stage's ``uniform Material { ... }`` block (None when it has none)."""
-    match = _GLSL_BLOCK.search(_strip_comments(text))
-    if match is None:
-        return None
-    fields: list[tuple[Any, ...]] = []
-    for statement in match.group("body").split(";"):
-        if not statement.strip():
-            continue
-        member = _GLSL_MEMBER.match(statement.strip())
-        if member is None:
-            raise LayoutError(f"{filename}: cannot read the Material block's member '{statement.strip()}'")
-        for declarator in member.group("names").split(","):
-            d = _DECLARATOR.match(declarator)
-            if d is None:
-                raise LayoutError(f"{filename}: cannot read the Material block's member '{statement.strip()}'")
-            kind: Any = member.group("type") if d.group("count") is None else (member.group("type"),
-                                                                                int(d.group("count")))
-            fields.append(_with_default(d.group("name"), kind))
-    return fields
-
-
-def glsl_material_layout(stages: dict[str, Any], shader: str) -> BlockLayout | None:
-    """The std140 layout of the Material block the program's stages declare (the same in each, as GL requires)."""
-    found: list[tuple[str, list[tuple[Any, ...]]]] = []
-    for src in stages.values():
-        fields = glsl_material_fields(src.text, src.filename)
-        if fields is not None:
-            found.append((src.filename, fields))
-    if not found:
-        return None
-    first_file, first = found[0]
-    for filename, fields in found[1:]:
-        if [f[:2] for f in fields] != [f[:2] for f in first]:
-            raise LayoutError(f"shader '{shader}': {filename} declares the Material block differently from "
-                              f"{first_file}; declare it once in an #include file, or the same in every stage")
+def declared_block(shader: str, material: MaterialDeclaration | None) -> tuple[BlockLayout, dict[str, str]]:
+    """The shader's Material layout from its declaration, and the generated includes that declare it."""
     try:
-        return BlockLayout(MATERIAL_BLOCK, first, rules="std140")
+        layout = material_layout(material)
     except LayoutError as exc:
-        raise LayoutError(f"shader '{shader}' ({first_file}): {exc}") from None
+        raise ShaderCompileError(f"shader '{shader}': material=: {exc}") from None
+    return layout, material_snippets(layout)
 
 
-def _wgsl_type(text: str) -> Any:
-    t = text.replace(" ", "")
-    if m := re.fullmatch(r"array<(.+),(\d+)u?>", t):
-        return (_wgsl_type(m.group(1)), int(m.group(2)))
-    return t
-
-
-def wgsl_material_layout(struct: Any, shader: str, filename: str) -> BlockLayout:
-    """The WGSL uniform layout of a reflected ``Material`` struct, checked against the reflector's offsets."""
-    fields = [_with_default(f.name, _wgsl_type(f.type)) for f in struct.fields]
-    try:
-        layout = BlockLayout(MATERIAL_BLOCK, fields, rules="wgsl")
-    except LayoutError as exc:
-        raise LayoutError(f"shader '{shader}' ({filename}): {exc}") from None
-    for f in struct.fields:
-        if layout.offset(f.name) != f.offset:
-            raise LayoutError(f"shader '{shader}' ({filename}): struct Material field '{f.name}' is at offset "
-                              f"{f.offset} (an @align or @size attribute?); materials use the plain layout, which "
-                              f"puts it at {layout.offset(f.name)}")
-    return layout
-
-
-def _with_default(name: str, kind: Any) -> tuple[Any, ...]:
-    return (name, kind, 0) if name.startswith("_") else (name, kind)
+def used_block(shader: str, layout: BlockLayout, sources: list[ShaderSource], declared: bool) -> BlockLayout | None:
+    """``layout`` when a stage includes the generated Material block, else None (a shader without material values);
+    a block declared with ``material=`` that no stage includes is an error."""
+    if any(name in src.files for src in sources for name in MATERIAL_INCLUDES):
+        return layout
+    if declared:
+        files = ", ".join(src.filename for src in sources)
+        raise ShaderCompileError(f"shader '{shader}' ({files}): material= declares a Material block, but no stage "
+                                 'includes it (#include "material.glsl" / "material.wgsl")')
+    return None
 
 
 def block_values(layout: BlockLayout, values: dict[str, Any]) -> dict[str, Any]:

@@ -25,7 +25,6 @@ from ..ecs import System
 from ..math import depth_range, invert_affine
 from ..math.transform import cross3
 from ..resources import MaterialData
-from ..resources.blocks import LIGHTS_LAYOUT
 from ..systems.light_system import LightSystem, pack_lights, pack_shadow
 from .base import Renderer
 from .color import srgb_rgba_to_linear
@@ -34,8 +33,6 @@ from .frame import DrawBatch, FrameData, pack_frame, pack_instances
 DEFAULT_CLEAR = (0.0, 0.0, 0.0, 1.0)
 _FEW_INSTANCES = 8
 _NO_LIGHTS = pack_lights([]) + pack_shadow([])
-# Offset of shadow.x in the lights block.
-_SHADOW_ON_OFFSET = LIGHTS_LAYOUT.offset("shadow")
 
 
 class RenderSystem(System):
@@ -236,7 +233,7 @@ class RenderSystem(System):
         # The light system knows the lights, the renderer the depth range their shadow projection needs.
         lights = (light_systems[0].relative(origin) + light_systems[0].shadow(self.renderer.depth_range, origin)
                   if light_systems else _NO_LIGHTS)
-        shadows = bool(np.frombuffer(lights, np.float32, count=1, offset=_SHADOW_ON_OFFSET)[0] == 1.0)
+        shadows = bool(light_systems) and light_systems[0].casts_shadows
         skyboxes = self._skyboxes.components
         return FrameData(
             clear_color=self.clear_color(),

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 from ..resources import ResourceError, ShaderSource
@@ -16,10 +16,12 @@ def load_shader(
     stage: str | None = None,
     lang: str | None = None,
     include_dirs: Sequence[str | Path] = (),
+    generated: Mapping[str, str] | None = None,
 ) -> ShaderSource:
     """A ShaderSource from a path, or from text (then ``lang`` is required), or one given already.
 
-    ``#include`` lines resolve next to the file, then in ``include_dirs``, then in the engine's snippets.
+    ``#include`` lines resolve to ``generated`` text first (the shader's Material block), then next to the file,
+    then in ``include_dirs``, then in the engine's snippets.
     """
     if isinstance(source, ShaderSource):
         return source
@@ -32,7 +34,8 @@ def load_shader(
             raise ResourceError(f"shader '{path}'", "path",
                                 f"is {language.upper()} (by its extension {path.suffix!r}), but the {api} renderer "
                                 f"compiles {lang.upper()}: give it the {lang.upper()} file")
-        return ShaderSource.from_file(source, stage=stage, include_dirs=dirs)
+        return ShaderSource.from_file(source, stage=stage, include_dirs=dirs, generated=generated)
     if lang is None:
         raise ValueError("shader text needs lang='glsl' or 'wgsl'")
-    return ShaderSource.from_text(source, lang, stage, filename=f"<{stage or lang} text>", include_dirs=dirs)
+    return ShaderSource.from_text(source, lang, stage, filename=f"<{stage or lang} text>", include_dirs=dirs,
+                                 generated=generated)

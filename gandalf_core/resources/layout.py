@@ -291,6 +291,32 @@ class BlockLayout:
         walk(self.fields, "", 0)
         return out
 
+    # --- shader text ----------------------------------------------------------------------------
+    def glsl(self, instance: str | None = None, members: Mapping[str, str] | None = None) -> str:
+        """The block as GLSL declares it: ``layout(std140) uniform Name { ... } instance;`` (members renamed by
+        ``members``; no instance name: the members are global names)."""
+        if any(isinstance(_array_elem(f.type), Struct) for f in self.fields):
+            raise LayoutError(f"block '{self.name}': shader text is written for blocks of numbers, vectors and "
+                              "matrices (and arrays of them)")
+        lines = []
+        for f in self.fields:
+            name = (members or {}).get(f.name, f.name)
+            if isinstance(f.type, Array):
+                lines.append(f"    {_glsl_type(f.type.elem)} {name}[{f.type.count}];")
+            else:
+                lines.append(f"    {_glsl_type(f.type)} {name};")
+        tail = f" {instance}" if instance else ""
+        return f"layout(std140) uniform {self.name} {{\n" + "\n".join(lines) + f"\n}}{tail};\n"
+
+    def wgsl(self, variable: str, group: int, binding: int) -> str:
+        """The block as WGSL declares it: ``struct Name { ... };`` and its ``var<uniform>`` at (group, binding)."""
+        if any(isinstance(_array_elem(f.type), Struct) for f in self.fields):
+            raise LayoutError(f"block '{self.name}': shader text is written for blocks of numbers, vectors and "
+                              "matrices (and arrays of them)")
+        lines = [f"    {f.name}: {_wgsl_type(f.type)}," for f in self.fields]
+        return (f"struct {self.name} {{\n" + "\n".join(lines) + "\n};\n"
+                f"@group({group}) @binding({binding}) var<uniform> {variable}: {self.name};\n")
+
     def __repr__(self) -> str:
         inner = ", ".join(f"{f.name}: {_type_name(f.type)} @{f.offset}" for f in self.fields)
         return f"BlockLayout({self.name!r}, {self.rules}, size {self.size}: {inner})"
@@ -446,6 +472,30 @@ class BlockLayout:
         if count is not None:
             shape, strides = (count, *shape), (f.stride, *strides)
         np.ndarray(shape, leaf.dtype, buffer=buf, offset=offset, strides=strides)[...] = arr
+
+
+def _array_elem(t: Any) -> Any:
+    return t.elem if isinstance(t, Array) else t
+
+
+_SCALAR_NAMES = {"f": ("float", "f32"), "i": ("int", "i32"), "u": ("uint", "u32")}
+
+
+def _glsl_type(leaf: Leaf) -> str:
+    if leaf.columns:
+        return f"mat{leaf.columns}"
+    if leaf.rows == 1:
+        return _SCALAR_NAMES[leaf.kind][0]
+    return f"{'' if leaf.kind == 'f' else leaf.kind}vec{leaf.rows}"
+
+
+def _wgsl_type(t: Any) -> str:
+    if isinstance(t, Array):
+        return f"array<{_wgsl_type(t.elem)}, {t.count}>"
+    scalar = _SCALAR_NAMES[t.kind][1]
+    if t.columns:
+        return f"mat{t.columns}x{t.rows}<{scalar}>"
+    return scalar if t.rows == 1 else f"vec{t.rows}<{scalar}>"
 
 
 def _join(path: str, block: str, name: str) -> str:

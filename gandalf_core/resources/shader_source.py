@@ -10,6 +10,10 @@ Includes are resolved relative to the including file, then in ``include_dirs``. 
 once per shader (later ``#include`` lines of the same file become comments), so snippet libraries may include
 each other freely; a file that includes itself, directly or through others, is an error naming the chain.
 The same ``#include`` syntax is used in GLSL and WGSL files: it is expanded here, before either compiler sees it.
+
+Some includes are written by the engine rather than read from a file (``generated``): the uniform blocks declared
+in Python (``"blocks.glsl"``/``"blocks.wgsl"``: Frame and Lights, :mod:`.blocks`; ``"material.glsl"``/
+``"material.wgsl"``: the shader's own Material block, given when the shader is built). They resolve first.
 """
 
 from __future__ import annotations
@@ -59,13 +63,14 @@ def _read_text(path: Path, label: str, field: str) -> str:
 class _Expander:
     """Expands ``#include`` lines recursively, recording where every output line came from."""
 
-    def __init__(self, root_name: str, include_dirs: Sequence[Path]) -> None:
+    def __init__(self, root_name: str, include_dirs: Sequence[Path], generated: Mapping[str, str]) -> None:
         self.root_name = root_name
+        self.generated = generated
         self.include_dirs = include_dirs
         self.lines: list[str] = []
         self.line_map: list[tuple[str, int]] = []
         self.files: dict[str, tuple[str, ...]] = {}
-        self.included: set[Path] = set()
+        self.included: set[Path | str] = set()
 
     def _resolve(self, name: str, base_dir: Path | None, where: str) -> Path:
         candidates = ([base_dir / name] if base_dir is not None else []) + [d / name for d in self.include_dirs]
@@ -73,6 +78,8 @@ class _Expander:
             if c.is_file():
                 return c
         searched = ", ".join(repr(str(c.parent)) for c in candidates) or "nowhere (no base directory)"
+        if name in ("material.glsl", "material.wgsl"):
+            searched += " (the Material block is written when the shader is built by its library)"
         raise ResourceError(f"shader '{self.root_name}'", "include", f'{where}: "{name}" not found in {searched}')
 
     def expand(self, text: str, filename: str, base_dir: Path | None, chain: list[tuple[Path | str, str]]) -> None:
@@ -84,8 +91,12 @@ class _Expander:
                 self.lines.append(line)
                 self.line_map.append((filename, number))
                 continue
-            target = self._resolve(match.group(1), base_dir, f"{filename}:{number}")
-            key = target.resolve()
+            if match.group(1) in self.generated:
+                target: Path | str = match.group(1)
+                key: Path | str = f"<generated {target}>"
+            else:
+                target = self._resolve(match.group(1), base_dir, f"{filename}:{number}")
+                key = target.resolve()
             if any(key == k for k, _ in chain):
                 names = " -> ".join([n for _, n in chain] + [str(target)])
                 raise ResourceError(f"shader '{self.root_name}'", "include", f"include cycle: {names}")
@@ -96,6 +107,9 @@ class _Expander:
                 continue
             self.lines.append(f"// begin included file: {match.group(1)}")
             self.included.add(key)
+            if isinstance(target, str):
+                self.expand(self.generated[target], target, None, chain + [(key, target)])
+                continue
             sub = _read_text(target, f"shader '{self.root_name}'", "include")
             self.expand(sub, str(target), target.parent, chain + [(key, str(target))])
 
@@ -119,7 +133,8 @@ class ShaderSource:
 
     @classmethod
     def from_file(
-        cls, path: str | Path, stage: str | None = None, include_dirs: Sequence[str | Path] = ()
+        cls, path: str | Path, stage: str | None = None, include_dirs: Sequence[str | Path] = (),
+        generated: Mapping[str, str] | None = None,
     ) -> ShaderSource:
         """Load a shader file; language and stage follow from the extension (see :data:`SHADER_EXTENSIONS`).
 
@@ -133,7 +148,7 @@ class ShaderSource:
             )
         lang, default_stage = SHADER_EXTENSIONS[p.suffix]
         text = _read_text(p, label, "path")
-        return cls._build(text, str(p), lang, stage or default_stage, p.parent, include_dirs, p.resolve())
+        return cls._build(text, str(p), lang, stage or default_stage, p.parent, include_dirs, p.resolve(), generated)
 
     @classmethod
     def from_text(
@@ -144,10 +159,12 @@ class ShaderSource:
         filename: str = "<text>",
         base_dir: str | Path | None = None,
         include_dirs: Sequence[str | Path] = (),
+        generated: Mapping[str, str] | None = None,
     ) -> ShaderSource:
         """Wrap shader text given directly; ``filename`` labels it in errors, includes resolve from ``base_dir``."""
         return cls._build(
-            text, filename, lang, stage, None if base_dir is None else Path(base_dir), include_dirs, filename
+            text, filename, lang, stage, None if base_dir is None else Path(base_dir), include_dirs, filename,
+            generated,
         )
 
     @classmethod
@@ -160,6 +177,7 @@ class ShaderSource:
         base_dir: Path | None,
         include_dirs: Sequence[str | Path],
         key: Path | str,
+        generated: Mapping[str, str] | None = None,
     ) -> ShaderSource:
         label = f"shader '{filename}'"
         if lang not in LANGUAGES:
@@ -170,7 +188,9 @@ class ShaderSource:
             raise ResourceError(label, "stage", "a GLSL shader needs a stage (vertex, fragment, ...)")
         if not isinstance(text, str):
             raise ResourceError(label, "text", f"expected str, got {type(text).__name__}")
-        expander = _Expander(filename, [Path(d) for d in include_dirs])
+        from .blocks import ENGINE_SNIPPETS  # the engine's blocks, written from their declaration
+
+        expander = _Expander(filename, [Path(d) for d in include_dirs], {**ENGINE_SNIPPETS, **(generated or {})})
         expander.expand(text, filename, base_dir, [(key, filename)])
         return cls(
             text="\n".join(expander.lines) + "\n",

@@ -47,6 +47,11 @@ class LightSystem(System):
         relative to ``origin``."""
         return pack_shadow(self.components, depth_range, origin)
 
+    @property
+    def casts_shadows(self) -> bool:
+        """Whether a light of this frame casts shadows (the renderer then draws the shadow pass)."""
+        return shadow_light(self.components) is not None
+
     def relative(self, origin: np.ndarray) -> bytes:
         """:attr:`data` with point lights relative to ``origin``. The stock packing recomputes them from the
         float64 world matrices; a subclass's own :meth:`pack` (step 06's exercise) is moved by ``-origin`` from
@@ -112,6 +117,27 @@ def pack_shadow(components: list[tuple[Any, Any]], depth_range: str | tuple[floa
     ``2 · shadow_extent`` wide and high and ``shadow_depth`` long; ``depth_range`` is the API's NDC depth
     range, as for a camera. With ``origin`` the matrix takes positions relative to it (camera-relative rendering).
     """
+    found = shadow_light(components)
+    if found is None:
+        return _NO_SHADOW
+    index, light, transform = found
+    extent, depth = light.shadow_extent, light.shadow_depth
+    view = light_view(transform.world)
+    projection = orthographic(-extent, extent, -extent, extent, -depth / 2, depth / 2, depth_range=depth_range)
+    if origin is not None:  # positions arrive relative to origin: move them back first (float64)
+        view = view.copy()
+        view[:3, 3] += view[:3, :3] @ np.asarray(origin, dtype=np.float64)
+    texel = 2.0 * extent / SHADOW_MAP_SIZE
+    # Depth is stored in [0, 1] over the box's length in both APIs: one texel's width in those units.
+    # y: the bias of one map texel's depth, scaled by the light's shadow_bias (1 by default).
+    shadow = (1.0, light.shadow_bias * texel / depth, 1.0 / SHADOW_MAP_SIZE, float(index))
+    block = LIGHTS_LAYOUT.pack({"light_view_projection": projection @ view, "shadow": shadow})
+    return block[LIGHTS_BYTES:]
+
+
+def shadow_light(components: list[tuple[Any, Any]]) -> tuple[int, Any, Any] | None:
+    """The first shadow-casting directional light among the packed ones: ``(its slot, light, transform)``, or
+    None (then the frame has no shadow pass)."""
     index = 0  # the light's slot in position[] and color[], counted as pack_lights() does
     for light, transform in components:
         if light.kind == "ambient":
@@ -119,21 +145,9 @@ def pack_shadow(components: list[tuple[Any, Any]], depth_range: str | tuple[floa
         if index == MAX_LIGHTS:
             break
         if light.cast_shadows:
-            extent, depth = light.shadow_extent, light.shadow_depth
-            view = light_view(transform.world)
-            projection = orthographic(-extent, extent, -extent, extent, -depth / 2, depth / 2,
-                                      depth_range=depth_range)
-            if origin is not None:  # positions arrive relative to origin: move them back first (float64)
-                view = view.copy()
-                view[:3, 3] += view[:3, :3] @ np.asarray(origin, dtype=np.float64)
-            texel = 2.0 * extent / SHADOW_MAP_SIZE
-            # Depth is stored in [0, 1] over the box's length in both APIs: one texel's width in those units.
-            # y: the bias of one map texel's depth, scaled by the light's shadow_bias (1 by default).
-            shadow = (1.0, light.shadow_bias * texel / depth, 1.0 / SHADOW_MAP_SIZE, float(index))
-            block = LIGHTS_LAYOUT.pack({"light_view_projection": projection @ view, "shadow": shadow})
-            return block[LIGHTS_BYTES:]
+            return index, light, transform
         index += 1
-    return _NO_SHADOW
+    return None
 # --8<-- [end:pack_shadow]
 
 

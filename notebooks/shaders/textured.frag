@@ -2,9 +2,7 @@
 // Step 03: the material colour times one texture, sampled at the interpolated UV.
 in vec2 v_uv;
 
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;  // MaterialData.color, already in linear light
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 uniform sampler2D u_albedo;  // the material's first texture; its sampler state
                              // comes with it in OpenGL
 

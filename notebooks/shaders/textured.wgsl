@@ -2,11 +2,7 @@
 #include "frame.wgsl"
 #include "instance.wgsl"
 
-struct Material {
-    color: vec4<f32>,  // MaterialData.color, already in linear light
-};
-
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 @group(1) @binding(1) var albedo: texture_2d<f32>;      // the material's first texture ...
 @group(1) @binding(2) var albedo_sampler: sampler;      // ... and, separately, how to sample it
 

@@ -1,8 +1,6 @@
 #version 330 core
 in vec3 v_normal;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 out vec4 f_color;
 void main() {
     // Map each component from [-1, 1] to [0, 1].

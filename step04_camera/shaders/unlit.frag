@@ -1,8 +1,6 @@
 #version 330 core
 in vec2 v_uv;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 uniform sampler2D u_albedo;
 out vec4 f_color;
 void main() { f_color = material.color * texture(u_albedo, v_uv); }

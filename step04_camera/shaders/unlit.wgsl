@@ -1,8 +1,7 @@
 // Unlit, textured: the camera's view and projection come from the frame uniforms.
 #include "frame.wgsl"
 #include "instance.wgsl"
-struct Material { color: vec4<f32> };
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 @group(1) @binding(1) var albedo: texture_2d<f32>;
 @group(1) @binding(2) var albedo_sampler: sampler;
 struct VOut { @builtin(position) position: vec4<f32>, @location(0) uv: vec2<f32> };

@@ -1,9 +1,7 @@
 #version 330 core
 // One colour, lit by a fixed world-space light: ambient 0.3 plus Lambert 0.7 (in linear light).
 in vec3 v_normal;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 out vec4 f_color;
 void main() {
     vec3 light = normalize(vec3(0.4, 0.8, 0.6));

@@ -2,9 +2,7 @@
 // Texture times colour, lit like shaded.frag.
 in vec3 v_normal;
 in vec2 v_uv;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 uniform sampler2D u_albedo;
 out vec4 f_color;
 void main() {

@@ -1,8 +1,7 @@
 // Normal-shaded and textured (the house walls): texture times colour, lit like shaded.wgsl.
 #include "frame.wgsl"
 #include "instance.wgsl"
-struct Material { color: vec4<f32> };
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 @group(1) @binding(1) var albedo: texture_2d<f32>;
 @group(1) @binding(2) var albedo_sampler: sampler;
 struct VOut {

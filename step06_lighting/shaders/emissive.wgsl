@@ -1,10 +1,7 @@
 // A light's marker: its flat colour, unlit.
 #include "lit_vertex.wgsl"
 
-struct Material {
-    color: vec4<f32>,
-};
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 
 @fragment
 fn fs_main(in: LitOut) -> @location(0) vec4<f32> {

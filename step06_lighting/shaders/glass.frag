@@ -4,10 +4,7 @@
 #include "lighting.glsl"
 in vec3 v_world;
 in vec3 v_normal;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-    float ior;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 uniform samplerCube u_env;
 out vec4 f_color;
 // --8<-- [start:fragment]

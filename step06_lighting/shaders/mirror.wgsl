@@ -3,10 +3,7 @@
 #include "lit_vertex.wgsl"
 #include "lighting.wgsl"
 
-struct Material {
-    color: vec4<f32>,
-};
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 @group(1) @binding(1) var env: texture_cube<f32>;
 @group(1) @binding(2) var env_sampler: sampler;
 

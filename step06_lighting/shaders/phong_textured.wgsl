@@ -3,12 +3,7 @@
 #include "instance.wgsl"
 #include "lighting.wgsl"
 
-struct Material {
-    color: vec4<f32>,
-    specular: f32,
-    shininess: f32,
-};
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 @group(1) @binding(1) var albedo_texture: texture_2d<f32>;
 @group(1) @binding(2) var albedo_sampler: sampler;
 

@@ -408,9 +408,11 @@ class Editor(EditorActions):
         """(Re)build shader ``name`` from ``files``; a compile error goes to the console with its file:line."""
         shaders = self.app.renderer.shaders
         try:
+            material = None  # a rebuilt shader keeps its Material block
             if name in shaders:
+                material = shaders.get(name).material_block
                 shaders.forget(name)
-            shaders.build(name, *files)
+            shaders.build(name, *files, material=material)
         except Exception as exc:  # noqa: BLE001 - shown in the console, whole
             return self._report(f"shader '{name}': {exc}", error=True)
         self._shader_sources[name] = tuple(files)

@@ -12,7 +12,7 @@ from gandalf_core import Application, Scene
 from gandalf_core.app.cli import Backend, launcher
 
 from .scene import LIT_SHADER, PART, GeometryShaderRoute, build_scene
-from .shaders import GL_EXPLODE, GL_LIT, GL_PULLED, impl_shader_dir
+from .shaders import EXPLODE_MATERIAL, GL_EXPLODE, GL_LIT, GL_PULLED, LIT_MATERIAL, impl_shader_dir
 
 
 # --8<-- [start:register]
@@ -21,10 +21,12 @@ def register_shaders(app: Application, impl: ModuleType, pulling: bool = False) 
     ``pulling`` also builds the GLSL 4.30 vertex-pulling program (the study compares the two routes)."""
     include = [impl_shader_dir(impl)]
     shaders = app.renderer.shaders
-    shaders.build("explode", GL_EXPLODE["vert"], GL_EXPLODE["frag"], geometry=GL_EXPLODE["geom"], include_dirs=include)
-    shaders.build(LIT_SHADER, GL_LIT["vert"], GL_LIT["frag"], include_dirs=include)
+    shaders.build("explode", GL_EXPLODE["vert"], GL_EXPLODE["frag"], geometry=GL_EXPLODE["geom"], include_dirs=include,
+                  material=EXPLODE_MATERIAL)
+    shaders.build(LIT_SHADER, GL_LIT["vert"], GL_LIT["frag"], include_dirs=include, material=LIT_MATERIAL)
     if pulling:
-        shaders.build("explode_pulled", GL_PULLED["vert"], GL_PULLED["frag"], include_dirs=include)
+        shaders.build("explode_pulled", GL_PULLED["vert"], GL_PULLED["frag"], include_dirs=include,
+                      material=EXPLODE_MATERIAL)
 # --8<-- [end:register]
 
 

@@ -16,6 +16,14 @@ GL_PULLED = {"vert": SHADER_DIR / "explode_pulled.vert", "frag": SHADER_DIR / "e
 #: WebGPU: the vertex-pulling module and the unexploded reference.
 WGSL_PULLED = SHADER_DIR / "explode_pulled.wgsl"
 WGSL_LIT = SHADER_DIR / "explode_lit.wgsl"
+#: The Material block (one field per value of the material: its colour, then its params), declared once: the
+#: engine writes it into both languages (``#include "material.glsl"`` / ``"material.wgsl"``).
+LIT_MATERIAL = [("color", "vec4"), ("specular", "float"), ("shininess", "float")]
+EXPLODE_MATERIAL = [("color", "vec4"),
+                    ("explode_time", "float"),  # seconds on the explosion clock (set every frame by ExplodeSystem)
+                    ("amount", "float"),  # how far a face moves at the peak (world units)
+                    ("period", "float"),  # seconds from one whole mesh to the next
+                    ("specular", "float"), ("shininess", "float")]
 
 
 def impl_shader_dir(impl: ModuleType) -> Path:

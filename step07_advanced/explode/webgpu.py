@@ -13,15 +13,15 @@ from gandalf_core import Application, Scene
 from gandalf_core.app.cli import Backend, launcher
 
 from .scene import LIT_SHADER, PART, PullingRoute, build_scene
-from .shaders import WGSL_LIT, WGSL_PULLED, impl_shader_dir
+from .shaders import EXPLODE_MATERIAL, LIT_MATERIAL, WGSL_LIT, WGSL_PULLED, impl_shader_dir
 
 
 # --8<-- [start:register]
 def register_shaders(app: Application, impl: ModuleType, pulling: bool = True) -> None:
     """The vertex-pulling module with ``impl``'s ``explode.wgsl`` (and the unexploded reference ``explode_lit``)."""
     include = [impl_shader_dir(impl)]
-    app.renderer.shaders.build("explode_pulled", WGSL_PULLED, include_dirs=include)
-    app.renderer.shaders.build(LIT_SHADER, WGSL_LIT, include_dirs=include)
+    app.renderer.shaders.build("explode_pulled", WGSL_PULLED, include_dirs=include, material=EXPLODE_MATERIAL)
+    app.renderer.shaders.build(LIT_SHADER, WGSL_LIT, include_dirs=include, material=LIT_MATERIAL)
 # --8<-- [end:register]
 
 

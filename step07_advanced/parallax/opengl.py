@@ -13,14 +13,14 @@ from gandalf_core import Application, Scene
 from gandalf_core.app.cli import Backend, launcher
 
 from .scene import PART, build_scene
-from .shaders import GL_FRAG, GL_VERT, SHADER, include_dirs
+from .shaders import GL_FRAG, GL_VERT, MATERIAL, SHADER, include_dirs
 
 
 # --8<-- [start:register]
 def register_shaders(app: Application, impl: ModuleType) -> None:
     """The parallax program: the showcase's vertex stage, this technique's fragment stage with ``impl``'s
     ``parallax.glsl``."""
-    app.renderer.shaders.build(SHADER, GL_VERT, GL_FRAG, include_dirs=include_dirs(impl))
+    app.renderer.shaders.build(SHADER, GL_VERT, GL_FRAG, include_dirs=include_dirs(impl), material=MATERIAL)
 # --8<-- [end:register]
 
 

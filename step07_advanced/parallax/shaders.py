@@ -17,6 +17,10 @@ SHADER = "parallax_surface"
 GL_VERT = SHOWCASE_SHADER_DIR / "surface.vert"
 GL_FRAG = SHADER_DIR / "parallax_surface.frag"
 WGSL = SHADER_DIR / "parallax_surface.wgsl"
+#: The Material block (one field per value of the material: its colour, then its params), declared once: the
+#: engine writes it into both languages (``#include "material.glsl"`` / ``"material.wgsl"``).
+MATERIAL = [("color", "vec4"), ("uv_scale", "vec2"), ("method", "float"), ("height_scale", "float"),
+            ("layers", "float"), ("specular", "float"), ("shininess", "float")]
 
 
 def impl_shader_dir(impl: ModuleType) -> Path:

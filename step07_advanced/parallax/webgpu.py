@@ -12,14 +12,14 @@ from gandalf_core import Application, Scene
 from gandalf_core.app.cli import Backend, launcher
 
 from .scene import PART, build_scene
-from .shaders import SHADER, WGSL, include_dirs
+from .shaders import MATERIAL, SHADER, WGSL, include_dirs
 
 
 # --8<-- [start:register]
 def register_shaders(app: Application, impl: ModuleType) -> None:
     """The parallax module (the showcase's vertex stage, this technique's fragment stage) with ``impl``'s
     ``parallax.wgsl``."""
-    app.renderer.shaders.build(SHADER, WGSL, include_dirs=include_dirs(impl))
+    app.renderer.shaders.build(SHADER, WGSL, include_dirs=include_dirs(impl), material=MATERIAL)
 # --8<-- [end:register]
 
 

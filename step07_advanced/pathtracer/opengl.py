@@ -13,7 +13,7 @@ from gandalf_core.app.cli import Backend, launcher
 
 from .compute_gl import GLPathTracer
 from .scene import ACCUM_BUFFER, PART, build_scene
-from .shaders import DISPLAY_SHADER, SHADER_DIR
+from .shaders import DISPLAY_MATERIAL, DISPLAY_SHADER, SHADER_DIR
 
 
 # --8<-- [start:setup]
@@ -23,7 +23,8 @@ def create_tracer(app: Application, impl: ModuleType) -> GLPathTracer:
     width, height = app.renderer.width, app.renderer.height
     accum = app.renderer.buffers.build(ACCUM_BUFFER, width * height * 16)  # vec4 per pixel, zeros
     tracer = GLPathTracer(app.renderer.ctx, impl, accum, width, height)  # first: it names a GL < 4.3 context
-    app.renderer.shaders.build(DISPLAY_SHADER, SHADER_DIR / "display.vert", SHADER_DIR / "display.frag")
+    app.renderer.shaders.build(DISPLAY_SHADER, SHADER_DIR / "display.vert", SHADER_DIR / "display.frag",
+                               material=DISPLAY_MATERIAL)
     return tracer
 # --8<-- [end:setup]
 

@@ -17,6 +17,9 @@ from gandalf_core.resources import ShaderSource
 SHADER_DIR = Path(__file__).resolve().parent / "shaders"
 #: The full-screen material that shows the accumulation (``display.vert`` + ``display.frag`` / ``display.wgsl``).
 DISPLAY_SHADER = "pathtracer_display"
+#: The Material block (one field per value of the material: its colour, then its params), declared once: the
+#: engine writes it into both languages (``#include "material.glsl"`` / ``"material.wgsl"``).
+DISPLAY_MATERIAL = [("color", "vec4"), ("exposure", "float"), ("trace_width", "float"), ("trace_height", "float")]
 KERNEL_GLSL = SHADER_DIR / "pathtrace.comp"
 KERNEL_WGSL = SHADER_DIR / "pathtrace.wgsl"
 

@@ -13,14 +13,14 @@ from gandalf_core.app.cli import Backend, launcher
 
 from .compute_wgpu import WGPUPathTracer
 from .scene import ACCUM_BUFFER, PART, build_scene
-from .shaders import DISPLAY_SHADER, SHADER_DIR
+from .shaders import DISPLAY_MATERIAL, DISPLAY_SHADER, SHADER_DIR
 
 
 # --8<-- [start:setup]
 def create_tracer(app: Application, impl: ModuleType) -> WGPUPathTracer:
     """The display shader, the accumulation buffer (renderer.buffers) and the kernel writing it (with ``impl``'s
     shader functions)."""
-    app.renderer.shaders.build(DISPLAY_SHADER, SHADER_DIR / "display.wgsl")
+    app.renderer.shaders.build(DISPLAY_SHADER, SHADER_DIR / "display.wgsl", material=DISPLAY_MATERIAL)
     width, height = app.renderer.width, app.renderer.height
     accum = app.renderer.buffers.build(ACCUM_BUFFER, width * height * 16)  # vec4 per pixel, zeros
     return WGPUPathTracer(app.renderer.device, impl, accum, width, height)

@@ -13,7 +13,7 @@ from gandalf_core import Application, Scene
 from gandalf_core.app.cli import Backend, launcher
 
 from .scene import PART, build_scene
-from .shaders import GL_FRAGMENT, GL_VERTEX, SHADER_NAME, include_dirs
+from .shaders import GL_FRAGMENT, GL_VERTEX, MATERIAL, SHADER_NAME, include_dirs
 
 #: glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS): filter across cube faces, as WebGPU always does.
 GL_TEXTURE_CUBE_MAP_SEAMLESS = 0x884F
@@ -22,7 +22,8 @@ GL_TEXTURE_CUBE_MAP_SEAMLESS = 0x884F
 # --8<-- [start:register]
 def register_shaders(app: Application, impl: ModuleType) -> None:
     """Build the model's GLSL program with ``impl``'s ``brdf.glsl`` and ``normal_map.glsl``."""
-    app.renderer.shaders.build(SHADER_NAME, GL_VERTEX, GL_FRAGMENT, include_dirs=include_dirs(impl))
+    app.renderer.shaders.build(SHADER_NAME, GL_VERTEX, GL_FRAGMENT, include_dirs=include_dirs(impl),
+                               material=MATERIAL)
     # The small prefiltered levels would show their face edges without seamless filtering.
     app.renderer.ctx.enable_direct(GL_TEXTURE_CUBE_MAP_SEAMLESS)
 # --8<-- [end:register]

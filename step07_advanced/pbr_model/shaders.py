@@ -17,6 +17,11 @@ SHADER_NAME = "pbr_model"
 GL_VERTEX = SHOWCASE_SHADER_DIR / "surface.vert"
 GL_FRAGMENT = SHADER_DIR / "pbr_model.frag"
 WGSL = SHADER_DIR / "pbr_model.wgsl"
+#: The Material block (one field per value of the material: its colour, then its params), declared once: the
+#: engine writes it into both languages (``#include "material.glsl"`` / ``"material.wgsl"``).
+MATERIAL = [("color", "vec4"), ("emissive", "vec4"), ("metallic", "float"), ("roughness", "float"),
+            ("normal_scale", "float"), ("occlusion_strength", "float"), ("env_strength", "float"),
+            ("prefiltered_levels", "float")]
 
 
 def include_dirs(impl: ModuleType) -> list[Path]:

@@ -13,13 +13,13 @@ from gandalf_core import Application, Scene
 from gandalf_core.app.cli import Backend, launcher
 
 from .scene import PART, build_scene
-from .shaders import SHADER_NAME, WGSL, include_dirs
+from .shaders import MATERIAL, SHADER_NAME, WGSL, include_dirs
 
 
 # --8<-- [start:register]
 def register_shaders(app: Application, impl: ModuleType) -> None:
     """Build the model's WGSL module with ``impl``'s ``brdf.wgsl`` and ``normal_map.wgsl``."""
-    app.renderer.shaders.build(SHADER_NAME, WGSL, include_dirs=include_dirs(impl))
+    app.renderer.shaders.build(SHADER_NAME, WGSL, include_dirs=include_dirs(impl), material=MATERIAL)
 # --8<-- [end:register]
 
 

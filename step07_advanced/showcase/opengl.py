@@ -9,7 +9,7 @@ from __future__ import annotations
 from types import ModuleType
 
 from gandalf_core import Application, Scene
-from gandalf_core.app.cli import Backend, launcher
+from gandalf_core.app.cli import Backend, build_shaders, launcher
 
 from .compute_gl import GLParticleKernel
 from .scene import PART, build_scene, fountain_state
@@ -21,8 +21,7 @@ GL_TEXTURE_CUBE_MAP_SEAMLESS = 0x884F
 
 def register_shaders(app: Application, impl: ModuleType) -> None:
     """Build the step's GLSL programs with ``impl``'s ``brdf.glsl`` and ``normal_map.glsl``."""
-    for name, (vert, frag) in SHADERS.items():
-        app.renderer.shaders.build(name, SHADER_DIR / vert, SHADER_DIR / frag, include_dirs=[impl_shader_dir(impl)])
+    build_shaders(app, SHADERS, SHADER_DIR, [impl_shader_dir(impl)])
     # Rough materials read the sky's small mip levels, where unfiltered face edges would show as seams.
     app.renderer.ctx.enable_direct(GL_TEXTURE_CUBE_MAP_SEAMLESS)
 

@@ -38,6 +38,8 @@ import numpy as np
 
 from gandalf_tools.studies import frame_ms, pyplot, run_info, write_study
 
+from .shaders import STUDY_SHADOW_MATERIAL
+
 STEM = "step07_study_shadows"
 SHADER_DIR = Path(__file__).resolve().parent / "shaders"
 TOWARDS = np.array([1.0, 2.0, 0.6])
@@ -137,9 +139,10 @@ def _app(backend: str, size: tuple[int, int]):
 
     app = Application(backend, *size, headless=True, fixed_dt=1 / 60)
     if backend == "opengl":
-        app.renderer.shaders.build("study_shadow", SHADER_DIR / "study_shadow.vert", SHADER_DIR / "study_shadow.frag")
+        app.renderer.shaders.build("study_shadow", SHADER_DIR / "study_shadow.vert", SHADER_DIR / "study_shadow.frag",
+                                   material=STUDY_SHADOW_MATERIAL)
     else:
-        app.renderer.shaders.build("study_shadow", SHADER_DIR / "study_shadow.wgsl")
+        app.renderer.shaders.build("study_shadow", SHADER_DIR / "study_shadow.wgsl", material=STUDY_SHADOW_MATERIAL)
     return app
 
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 from types import ModuleType
 
 from gandalf_core import Application, Scene
-from gandalf_core.app.cli import Backend, launcher
+from gandalf_core.app.cli import Backend, build_shaders, launcher
 
 from .compute_wgpu import WGPUParticleKernel
 from .scene import PART, build_scene, fountain_state
@@ -18,8 +18,7 @@ from .shaders import SHADER_DIR, SHADERS, impl_shader_dir
 
 def register_shaders(app: Application, impl: ModuleType) -> None:
     """Build the step's WGSL modules with ``impl``'s ``brdf.wgsl`` and ``normal_map.wgsl``."""
-    for name in SHADERS:
-        app.renderer.shaders.build(name, SHADER_DIR / f"{name}.wgsl", include_dirs=[impl_shader_dir(impl)])
+    build_shaders(app, SHADERS, SHADER_DIR, [impl_shader_dir(impl)])
 
 
 class WebGPU(Backend):

@@ -19,7 +19,7 @@ from gandalf_core.resources import MaterialData, MeshData
 
 from .patches import GUARANTEED_MAX_LEVEL, TerrainParams, check_levels, patch_mesh
 from .scene import PARAMS, PART, build_scene
-from .shaders import GL_STAGES, SHADER_DIR, SHADER_NAME, impl_shader_dir
+from .shaders import GL_STAGES, MATERIAL, SHADER_DIR, SHADER_NAME, impl_shader_dir
 
 GL_MAX_TESS_GEN_LEVEL = 0x8E7E
 
@@ -47,7 +47,7 @@ class GLTerrain:
         stages = {stage: SHADER_DIR / file for stage, file in GL_STAGES.items()}
         app.renderer.shaders.build(SHADER_NAME, stages["vertex"], stages["fragment"],
                                    tess_control=stages["tess_control"], tess_evaluation=stages["tess_evaluation"],
-                                   include_dirs=[impl_shader_dir(impl)])
+                                   include_dirs=[impl_shader_dir(impl)], material=MATERIAL)
         # --8<-- [end:build]
         self.params = params
 

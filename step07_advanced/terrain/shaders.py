@@ -13,6 +13,11 @@ GL_STAGES = {"vertex": "terrain.vert", "tess_control": "terrain.tesc", "tess_eva
 WGSL_RENDER = SHADER_DIR / "terrain_render.wgsl"
 WGSL_TESSELLATE = SHADER_DIR / "tessellate.wgsl"
 SHADER_NAME = "terrain"
+#: The Material block (one field per value of the material: its colour, then its params), declared once: the
+#: engine writes it into both languages (``#include "material.glsl"`` / ``"material.wgsl"``).
+MATERIAL = [("color", "vec4"),  # the haze (the sky's colour), linear
+            ("size", "float"), ("height_scale", "float"),
+            ("lod", "vec4")]  # scale, min level, max level (OpenGL's tessellation; WebGPU's compute pass has its own)
 
 
 def impl_shader_dir(impl: ModuleType) -> Path:

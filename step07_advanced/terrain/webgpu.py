@@ -20,7 +20,7 @@ from gandalf_core.resources import MaterialData, MeshData
 from .heightfield import encode_heights
 from .patches import TerrainParams
 from .scene import PARAMS, PART, build_scene, terrain_heights
-from .shaders import SHADER_NAME, WGSL_RENDER, impl_shader_dir
+from .shaders import MATERIAL, SHADER_NAME, WGSL_RENDER, impl_shader_dir
 from .tessellate_wgpu import VERTEX_BUFFER, WGPUTessellator
 
 
@@ -29,7 +29,8 @@ class WGPUTerrain:
 
     def __init__(self, app: Application, impl: ModuleType, params: TerrainParams = PARAMS,
                  heights: np.ndarray | None = None) -> None:
-        app.renderer.shaders.build(SHADER_NAME, WGSL_RENDER, include_dirs=[impl_shader_dir(impl)])
+        app.renderer.shaders.build(SHADER_NAME, WGSL_RENDER, include_dirs=[impl_shader_dir(impl)],
+                                   material=MATERIAL)
         heightmap = encode_heights(terrain_heights() if heights is None else heights)
         self.tessellator = WGPUTessellator(app.renderer, impl, params, heightmap)
         self.params = params
@@ -42,10 +43,9 @@ class WGPUTerrain:
         # --8<-- [end:mesh]
 
     def material(self, base: MaterialData) -> MaterialData:
-        # The level of detail is the compute tessellator's (it gets its own copy each frame), not the render
-        # shader's: the WGSL material has no "lod", and a parameter nothing reads is an error.
-        params = {key: value for key, value in base.params.items() if key != "lod"}
-        return MaterialData(base.shader, base.textures, color=base.color, params=params, cull=base.cull,
+        # The level of detail is the compute tessellator's (it gets its own copy each frame): the render shader's
+        # "lod" field is declared for both APIs, and only OpenGL's tessellation stages read it.
+        return MaterialData(base.shader, base.textures, color=base.color, params=base.params, cull=base.cull,
                             name=base.name, buffers=(VERTEX_BUFFER,))
 
     def update(self, eye: np.ndarray) -> None:

@@ -165,11 +165,12 @@ def test_frame_and_lights_blocks_match_the_glsl_programs_offsets():
     moderngl = pytest.importorskip("moderngl")
     from gandalf_core.render.opengl.raw_gl import block_members
     from gandalf_core.render.shader_files import SNIPPETS_DIR
+    from gandalf_core.resources import ShaderSource
     from gandalf_core.resources.blocks import GLSL_MEMBERS
 
     ctx = moderngl.create_standalone_context(backend="egl", require=330)
     try:
-        src = (SNIPPETS_DIR / "frame.glsl").read_text()
+        src = ShaderSource.from_text((SNIPPETS_DIR / "frame.glsl").read_text(), "glsl", "vertex").text
         # std140 blocks keep every member active, read or not
         main = "void main() { gl_Position = u_view[0] + u_shadow; }"
         program = ctx.program(vertex_shader=f"#version 330\n{src}\n{main}",
@@ -189,15 +190,48 @@ def test_frame_and_lights_blocks_match_the_glsl_programs_offsets():
 
 
 def test_frame_and_lights_blocks_match_the_wgsl_structs():
+    """A compute shader reads the first number of every member of frame.wgsl's structs from blocks whose 32-bit
+    words hold their own index: what it reads is each member's offset in WGSL, which must be the declared one."""
+    wgpu = pytest.importorskip("wgpu")
     from gandalf_core.render.shader_files import SNIPPETS_DIR
-    from gandalf_core.render.wgsl_reflect import reflect
+    from gandalf_core.resources import ShaderSource
 
-    reflection = reflect((SNIPPETS_DIR / "frame.wgsl").read_text(), "frame.wgsl")
-    for block, layout in _engine_layouts().items():
-        struct = reflection.structs[block]
-        assert [f.name for f in struct.fields] == layout.names(), block
-        assert {f.name: f.offset for f in struct.fields} == {f.name: f.offset for f in layout.fields}, block
-        assert struct.size == layout.size, block
+    device = wgpu.utils.get_default_device()
+    leaves = [(block, path, offset, kind) for block, layout in _engine_layouts().items()
+              for path, offset, kind in layout.leaves()]
+    reads = []
+    for i, (block, path, _offset, kind) in enumerate(leaves):
+        first = "[0][0]" if kind.startswith("mat") else ".x" if "vec" in kind else ""
+        value = f"{block.lower()}.{path}{first}"
+        value = f"bitcast<f32>({value})" if kind.startswith("i") else value
+        reads.append(f"    out[{i}] = f32({value});")
+    text = ShaderSource.from_file(SNIPPETS_DIR / "frame.wgsl").text + (
+        "@group(1) @binding(0) var<storage, read_write> out: array<f32>;\n"
+        "@compute @workgroup_size(1) fn main() {\n" + "\n".join(reads) + "\n}\n")
+    module = device.create_shader_module(code=text)
+    pipeline = device.create_compute_pipeline(layout="auto", compute={"module": module, "entry_point": "main"})
+    usage = wgpu.BufferUsage
+    blocks = []
+    for layout in _engine_layouts().values():
+        words = np.arange(layout.size // 4, dtype=np.float32)
+        blocks.append(device.create_buffer_with_data(data=words, usage=usage.UNIFORM))
+    out = device.create_buffer(size=4 * len(leaves), usage=usage.STORAGE | usage.COPY_SRC)
+    groups = [device.create_bind_group(layout=pipeline.get_bind_group_layout(0), entries=[
+        {"binding": 0, "resource": {"buffer": blocks[0]}}, {"binding": 1, "resource": {"buffer": blocks[1]}}]),
+        device.create_bind_group(layout=pipeline.get_bind_group_layout(1),
+                                 entries=[{"binding": 0, "resource": {"buffer": out}}])]
+    encoder = device.create_command_encoder()
+    cpass = encoder.begin_compute_pass()
+    cpass.set_pipeline(pipeline)
+    for index, group in enumerate(groups):
+        cpass.set_bind_group(index, group)
+    cpass.dispatch_workgroups(1)
+    cpass.end()
+    device.queue.submit([encoder.finish()])
+    got = np.frombuffer(device.queue.read_buffer(out), np.float32)
+    for (block, path, offset, _kind), value in zip(leaves, got):
+        word = offset // 4  # an integer member's bits are the float's: bitcast back above
+        assert value == word, f"{block}.{path}: WGSL reads word {value}, the declaration puts it at {word}"
 
 
 def test_pack_frame_and_lights_put_values_at_the_declared_offsets():

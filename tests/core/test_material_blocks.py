@@ -1,9 +1,10 @@
 """A material's values are one ``Material`` block with the same bytes in both APIs (GLSL std140 = WGSL uniform),
 and a material is checked against its shader when it is built.
 
-Checked here: the bytes of the same material in OpenGL and WebGPU are identical; the layout the engine reads
-from a GLSL block matches the driver's own offsets, and the one it reads from a WGSL struct matches the reflector's;
-every GLSL material shader in the project declares a block whose fields sit where its WGSL twin's do; and each build
+The block is declared once in Python with its shader (``shaders.build(..., material=...)``) and written into
+both languages (``#include "material.glsl"`` / ``"material.wgsl"``). Checked here: the bytes of the same material in
+OpenGL and WebGPU are identical; the declared layout is the driver's own; no shader in the project declares the
+block by hand; and each build
 check (unknown parameter, missing field, wrong size, ``u_`` prefix, wrong texture kind, a varying the vertex stage
 never writes) is an error naming the material or shader, the shader file and the field. No pictures here.
 """
@@ -18,11 +19,9 @@ import pytest
 
 from gandalf_core import Application
 from gandalf_core.render.errors import ShaderCompileError
-from gandalf_core.render.material_block import glsl_material_fields, wgsl_material_layout
 from gandalf_core.render.shader_files import SNIPPETS_DIR
-from gandalf_core.render.wgsl_reflect import reflect
 from gandalf_core.resources import MaterialData, ResourceError, ShaderSource, checkerboard, sky_cube
-from gandalf_core.resources.layout import BlockLayout
+from gandalf_core.resources.blocks import material_layout, material_snippets
 from gandalf_tools.tour import REPO_ROOT
 
 SHADERS = Path(__file__).parent / "shaders"
@@ -40,22 +39,14 @@ void main() {
 """
 GL_FRAG = """#version 330 core
 in vec3 v_world;
-layout(std140) uniform Material {
-    vec4 color;
-    vec3 tint;
-    float gain;
-    mat3 m;
-    vec2 offset;
-    float _pad;
-} material;
+#include "material.glsl"
 out vec4 f_color;
 void main() { f_color = material.color * vec4(material.tint * material.gain + material.m[1], 1.0)
                         + vec4(material.offset, 0.0, 0.0) + vec4(v_world, 0.0) * 0.0; }
 """
 WGSL = """#include "frame.wgsl"
 #include "instance.wgsl"
-struct Material { color: vec4<f32>, tint: vec3<f32>, gain: f32, m: mat3x3<f32>, offset: vec2<f32>, _pad: f32 };
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"
 struct VOut { @builtin(position) position: vec4<f32>, @location(0) world: vec3<f32> };
 @vertex fn vs_main(@location(0) position: vec3<f32>, inst: Instance) -> VOut {
     let world = instance_model(inst) * vec4<f32>(position, 1.0);
@@ -66,18 +57,22 @@ struct VOut { @builtin(position) position: vec4<f32>, @location(0) world: vec3<f
         + vec4<f32>(material.offset, 0.0, 0.0);
 }
 """
+MATERIAL = [("color", "vec4"), ("tint", "vec3"), ("gain", "float"), ("m", "mat3"), ("offset", "vec2"),
+            ("_pad", "float", 0.0)]
 PARAMS = {"tint": (0.25, 0.5, 0.75), "gain": 2.0, "m": np.arange(9.0), "offset": (0.125, -0.5)}
 
 
 def build_shader(app: Application, name: str = "probe", frag: str = GL_FRAG, vert: str = GL_VERT,
-                 wgsl: str = WGSL):
+                 wgsl: str = WGSL, material=MATERIAL):
     r, inc = app.renderer, [SNIPPETS_DIR]
+    block = material_snippets(material_layout(material))
     if app.backend == "opengl":
         return r.shaders.build(name, ShaderSource.from_text(vert, "glsl", "vertex", filename="probe.vert",
-                                                            include_dirs=inc),
+                                                            include_dirs=inc, generated=block),
                                ShaderSource.from_text(frag, "glsl", "fragment", filename="probe.frag",
-                                                      include_dirs=inc))
-    return r.shaders.build(name, ShaderSource.from_text(wgsl, "wgsl", filename="probe.wgsl", include_dirs=inc))
+                                                      include_dirs=inc, generated=block), material=material)
+    return r.shaders.build(name, ShaderSource.from_text(wgsl, "wgsl", filename="probe.wgsl", include_dirs=inc,
+                                                        generated=block), material=material)
 
 
 def test_the_same_material_is_the_same_bytes_in_both_apis():
@@ -94,7 +89,7 @@ def test_the_same_material_is_the_same_bytes_in_both_apis():
     np.testing.assert_allclose(floats[20:23], (0.125, -0.5, 0.0))
 
 
-def test_the_glsl_block_layout_is_the_drivers_and_the_wgsl_one_the_reflectors():
+def test_the_declared_block_is_the_drivers_layout():
     from gandalf_core.render.opengl.libs import make_current
     from gandalf_core.render.opengl.raw_gl import block_members
 
@@ -106,44 +101,21 @@ def test_the_glsl_block_layout_is_the_drivers_and_the_wgsl_one_the_reflectors():
         declared = {path: offset for path, offset, _t in layout.leaves()}
         assert {name.split(".", 1)[1]: off for name, (off, _s) in driver.items()} == declared
         assert shader.program["Material"].size == layout.size
-    reflection = reflect(WGSL.split("\n", 2)[2], "probe.wgsl")
-    struct = reflection.structs["Material"]
-    wgsl = wgsl_material_layout(struct, "probe", "probe.wgsl")
-    assert [(f.name, f.offset) for f in struct.fields] == [(f.name, f.offset) for f in wgsl.fields]
-    assert [(f.name, f.offset) for f in wgsl.fields] == [(f.name, f.offset) for f in layout.fields]
 
 
-def _glsl_material_files() -> list[Path]:
-    roots = [REPO_ROOT / "gandalf_core", *sorted(REPO_ROOT.glob("step*")), REPO_ROOT / "tests" / "core" / "shaders"]
-    files = []
-    for root in roots:
-        for path in sorted(root.rglob("*")):
-            if path.suffix in (".frag", ".vert", ".geom", ".tesc", ".tese", ".glsl") and ".snap" not in path.parts:
-                if re.search(r"\buniform\s+Material\b", path.read_text()):
-                    files.append(path)
-    return files
+def _shader_files() -> list[Path]:
+    roots = [REPO_ROOT / "gandalf_core", *sorted(REPO_ROOT.glob("step*")), REPO_ROOT / "tests" / "core" / "shaders",
+             REPO_ROOT / "benchmarks", REPO_ROOT / "notebooks"]
+    suffixes = (".frag", ".vert", ".geom", ".tesc", ".tese", ".glsl", ".wgsl")
+    return [p for root in roots for p in sorted(root.rglob("*")) if p.suffix in suffixes and ".snap" not in p.parts]
 
 
-GLSL_MATERIALS = _glsl_material_files()
-# GLSL programs whose WGSL twin has another name (the rest: the same stem, .wgsl).
-TWINS = {"explode.frag": "explode_pulled.wgsl", "explode_material.glsl": "explode_pulled.wgsl",
-         "terrain_material.glsl": "terrain_render.wgsl"}
-
-
-@pytest.mark.parametrize("path", GLSL_MATERIALS, ids=lambda p: str(p.relative_to(REPO_ROOT)))
-def test_every_glsl_material_block_lays_out_like_its_wgsl_twin(path):
-    """The same fields at the same offsets (a GL-only field may follow them: the terrain's tessellation ``lod``)."""
-    fields = glsl_material_fields(path.read_text(), path.name)
-    assert fields, f"{path}: no Material block found"
-    glsl = BlockLayout("Material", fields, rules="std140")
-    BlockLayout("Material", fields)  # valid under both rules
-    twin = path.with_name(TWINS.get(path.name, path.stem + ".wgsl"))
-    if not twin.exists():
-        pytest.skip(f"{path.name} has no WGSL twin")
-    reflection = reflect(re.sub(r"(?m)^#include.*$", "", twin.read_text()), twin.name)
-    wgsl = wgsl_material_layout(reflection.structs["Material"], twin.stem, twin.name)
-    pairs = [(f.name, f.offset) for f in wgsl.fields]
-    assert [(f.name, f.offset) for f in glsl.fields][:len(pairs)] == pairs, f"{path.name} vs {twin.name}"
+def test_no_shader_declares_the_material_block_by_hand():
+    """The Material block is declared in Python with the shader and written by the engine: no shader file holds a
+    ``uniform Material`` block or a ``struct Material`` of its own."""
+    by_hand = re.compile(r"\buniform\s+Material\b|\bstruct\s+Material\b")
+    found = [str(p.relative_to(REPO_ROOT)) for p in _shader_files() if by_hand.search(p.read_text())]
+    assert not found, f"Material blocks declared by hand (use #include \"material.glsl\" / \"material.wgsl\"): {found}"
 
 
 def test_no_loose_material_uniforms_are_left_in_the_project_shaders():
@@ -185,10 +157,10 @@ def test_a_u_prefixed_parameter_says_to_leave_the_prefix_out():
 
 
 def test_padding_fields_have_a_default_and_the_colour_is_optional(backend):
-    frag = GL_FRAG.replace("vec4 color;", "").replace("material.color * ", "")
-    wgsl = WGSL.replace("color: vec4<f32>, ", "").replace("material.color * ", "")
+    frag = GL_FRAG.replace("material.color * ", "")
+    wgsl = WGSL.replace("material.color * ", "")
     with Application(backend, 16, 12, headless=True) as app:
-        build_shader(app, frag=frag, wgsl=wgsl)
+        build_shader(app, frag=frag, wgsl=wgsl, material=MATERIAL[1:])
         material = app.renderer.materials.build("M", MaterialData("probe", color=(1, 0, 0), params=PARAMS))
         assert len(material.block_bytes) == 80  # tint, gain, m (48), offset, _pad
 
@@ -252,20 +224,28 @@ def test_wgsl_a_fragment_input_of_another_type_is_an_error():
             build_shader(app, wgsl=wgsl)
 
 
-def test_a_block_that_differs_between_glsl_stages_names_both_files():
-    vert = GL_VERT.replace("out vec3 v_world;", "out vec3 v_world;\nlayout(std140) uniform Material { vec4 color; "
-                           "} material;")
-    with Application("opengl", 16, 12, headless=True) as app:
-        with pytest.raises(ShaderCompileError, match=r"shader 'probe': probe\.frag declares the Material block "
-                                                     r"differently from probe\.vert"):
-            build_shader(app, vert=vert)
+def test_a_declared_block_no_stage_includes_names_the_shader_and_files(backend):
+    frag = GL_FRAG.replace('#include "material.glsl"\n', "").replace(
+        "f_color = material.color * vec4(material.tint * material.gain + material.m[1], 1.0)\n"
+        "                        + vec4(material.offset, 0.0, 0.0) + ", "f_color = vec4(1.0) + ")
+    wgsl = WGSL.replace('#include "material.wgsl"\n', "").replace(
+        "return material.color * vec4<f32>(material.tint * material.gain + material.m[1], 1.0)\n"
+        "        + vec4<f32>(material.offset, 0.0, 0.0);", "return vec4<f32>(1.0);")
+    with Application(backend, 16, 12, headless=True) as app:
+        with pytest.raises(ShaderCompileError, match=r"shader 'probe' \(probe\.\w+.*\): material= declares a Material "
+                                                     r"block, but no stage includes it"):
+            build_shader(app, frag=frag, wgsl=wgsl)
 
 
-def test_a_glsl_block_that_wgsl_could_not_share_is_refused_by_the_both_rule():
-    fields = glsl_material_fields("layout(std140) uniform Material { float a; mat2 m; } material;", "x.frag")
-    assert BlockLayout("Material", fields, rules="std140").offset("m") == 16
-    with pytest.raises(ValueError, match=r"block 'Material' field 'm': std140 puts it at offset 16"):
-        BlockLayout("Material", fields)
+def test_a_block_that_wgsl_could_not_share_is_refused_naming_shader_and_field(backend):
+    with Application(backend, 16, 12, headless=True) as app:
+        with pytest.raises(ShaderCompileError, match=r"shader 'probe': material=: block 'Material' field 'm': std140 "
+                                                     r"puts it at offset 16"):
+            shaders, material = app.renderer.shaders, [("a", "float"), ("m", "mat2")]
+            if backend == "opengl":
+                shaders.build("probe", GL_VERT, GL_FRAG, material=material)
+            else:
+                shaders.build("probe", WGSL, material=material)
 
 
 def test_changing_values_rewrites_the_block_without_a_new_buffer(backend):
@@ -310,4 +290,4 @@ def test_loose_material_uniforms_are_refused_naming_shader_files_and_uniforms():
             "void main() { f_color = u_color * vec4(u_tint, 1.0) + vec4(v_world, 0.0) * 0.0; }\n")
     needle = r"shader 'probe' \(probe\.vert, probe\.frag\): declares loose material uniforms \(u_color, u_tint\)"
     with Application("opengl", 16, 12, headless=True) as app, pytest.raises(ShaderCompileError, match=needle):
-        build_shader(app, frag=frag)
+        build_shader(app, frag=frag, material=None)

@@ -48,7 +48,7 @@ SHADOWED_FRAG = """#version 330 core
 #include "shadow.glsl"
 in vec3 v_world;
 in vec3 v_normal;
-layout(std140) uniform Material { vec4 color; } material;
+#include "material.glsl"
 out vec4 f_color;
 void main() {
     vec3 n = normalize(v_normal);
@@ -64,8 +64,7 @@ SHADOWED_WGSL = """
 #include "frame.wgsl"
 #include "instance.wgsl"
 #include "shadow.wgsl"
-struct Material { color: vec4<f32> };
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"
 struct VOut { @builtin(position) position: vec4<f32>, @location(0) world: vec3<f32>, @location(1) normal: vec3<f32> };
 @vertex fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, inst: Instance) -> VOut {
     var out: VOut;
@@ -346,7 +345,7 @@ def test_the_light_box_maps_onto_the_whole_clip_volume(depth_range):
 
 def test_the_shadow_map_keeps_its_own_texture_unit_in_opengl():
     """u_shadow_map (declared first, through shadow.glsl) is no material texture: the material's start at 0."""
-    frag = SHADOWED_FRAG.replace("} material;", "} material;\nuniform sampler2D u_detail;")
+    frag = SHADOWED_FRAG.replace("out vec4 f_color;", "uniform sampler2D u_detail;\nout vec4 f_color;")
     with Application("opengl", 8, 8, headless=True) as app:
         shader = app.renderer.shaders.build("textured", SHADOWED_VERT, frag)
         assert shader.samplers == ["u_detail"]
@@ -358,7 +357,7 @@ def test_textures_built_during_a_frame_do_not_replace_the_shadow_map():
     from gandalf_core.components import MaterialComponent, MeshComponent, TransformComponent
     from gandalf_core.resources import MaterialData, solid
 
-    frag = SHADOWED_FRAG.replace("} material;", "} material;\nuniform sampler2D u_tex;").replace(
+    frag = SHADOWED_FRAG.replace("out vec4 f_color;", "uniform sampler2D u_tex;\nout vec4 f_color;").replace(
         "f_color = vec4(c, 1.0);", "f_color = vec4(c * texture(u_tex, vec2(0.5)).rgb, 1.0);")
     scene = shadow_scene()
     scene.assets.texture("white", solid((1.0, 1.0, 1.0), 4))

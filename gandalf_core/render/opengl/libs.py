@@ -19,12 +19,12 @@ import moderngl
 import numpy as np
 
 from ...resources import CubeTextureData, MaterialData, MeshData, ResourceError, ShaderSource, TextureData
-from ...resources.blocks import BLOCK_BINDINGS
+from ...resources.blocks import BLOCK_BINDINGS, MaterialDeclaration
 from ...resources.layout import BlockLayout, LayoutError
 from ..builtin_materials import prepare as prepare_builtin
 from ..errors import ShaderCompileError
 from ..library import ResourceLib
-from ..material_block import MATERIAL_BLOCK, block_values, check_glsl_varyings, glsl_material_layout
+from ..material_block import MATERIAL_BLOCK, block_values, check_glsl_varyings, declared_block, used_block
 from ..material_checks import check_parameters
 from ..material_values import MaterialValues
 from ..patches import declared_patch_size
@@ -175,21 +175,25 @@ class ShaderLib(ResourceLib[GLShader]):
         tess_evaluation: str | Path | ShaderSource | None = None,
         *,
         include_dirs: Sequence[str | Path] = (),
+        material: MaterialDeclaration | None = None,
     ) -> GLShader:
         """Compile and link a program from files (or ShaderSource); cached by ``name``.
 
-        ``include_dirs`` are searched for ``#include`` files after the shader's own folder.
+        ``include_dirs`` are searched for ``#include`` files after the shader's own folder. ``material`` declares
+        the program's Material block (fields, or a BlockLayout; by default the colour alone), which the stages
+        declare with ``#include "material.glsl"``.
         """
         if name in self._items:
             return self._items[name]
         make_current(self.ctx)  # this renderer's context, whichever another Application made current
-        return self._build(name, vertex, fragment, geometry, tess_control, tess_evaluation, include_dirs)
+        return self._build(name, vertex, fragment, geometry, tess_control, tess_evaluation, include_dirs, material)
 
     def _build(self, name: str, vertex: Any, fragment: Any, geometry: Any, tess_control: Any, tess_evaluation: Any,
-               include_dirs: Sequence[str | Path]) -> GLShader:
+               include_dirs: Sequence[str | Path], material: MaterialDeclaration | None) -> GLShader:
+        layout, generated = declared_block(name, material)
         stages = {
-            "vertex_shader": load_shader(vertex, "vertex", "glsl", include_dirs),
-            "fragment_shader": load_shader(fragment, "fragment", "glsl", include_dirs),
+            "vertex_shader": load_shader(vertex, "vertex", "glsl", include_dirs, generated),
+            "fragment_shader": load_shader(fragment, "fragment", "glsl", include_dirs, generated),
         }
         for key, src, stage in (
             ("geometry_shader", geometry, "geometry"),
@@ -197,11 +201,8 @@ class ShaderLib(ResourceLib[GLShader]):
             ("tess_evaluation_shader", tess_evaluation, "tess_evaluation"),
         ):
             if src is not None:
-                stages[key] = load_shader(src, stage, "glsl", include_dirs)
-        try:
-            material_block = glsl_material_layout(stages, name)
-        except LayoutError as exc:
-            raise ShaderCompileError(str(exc)) from None
+                stages[key] = load_shader(src, stage, "glsl", include_dirs, generated)
+        material_block = used_block(name, layout, list(stages.values()), material is not None)
         if (varying := check_glsl_varyings(name, stages)) is not None:
             raise ShaderCompileError(varying)
         patch_vertices = None

@@ -3,11 +3,7 @@
 #include "builtin_lighting.glsl"
 in vec3 v_world;
 in vec3 v_normal;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-    float specular;
-    float shininess;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 out vec4 f_color;
 void main() {
     vec3 lit = gandalf_builtin_lighting(v_world, v_normal, material.color.rgb, material.specular,

@@ -1,8 +1,7 @@
 // Built-in material gandalf.blinn_phong, colour only: the scene's lights on the material colour.
 #include "instance.wgsl"
 #include "builtin_lighting.wgsl"
-struct Material { color: vec4<f32>, specular: f32, shininess: f32 };
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 struct LitOut { @builtin(position) position: vec4<f32>, @location(0) world: vec3<f32>,
     @location(1) normal: vec3<f32> };
 @vertex fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>,

@@ -5,11 +5,7 @@
 in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-    float specular;
-    float shininess;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 uniform sampler2D u_texture;
 out vec4 f_color;
 void main() {

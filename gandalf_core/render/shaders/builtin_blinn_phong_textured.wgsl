@@ -2,8 +2,7 @@
 // lights on the colour times the texture.
 #include "instance.wgsl"
 #include "builtin_lighting.wgsl"
-struct Material { color: vec4<f32>, specular: f32, shininess: f32 };
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 @group(1) @binding(1) var color_texture: texture_2d<f32>;
 @group(1) @binding(2) var color_sampler: sampler;
 struct LitOut {

@@ -1,7 +1,5 @@
 #version 330 core
 // Built-in material gandalf.unlit, colour only: the material colour (linear), no light.
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 out vec4 f_color;
 void main() { f_color = material.color; }

@@ -1,8 +1,7 @@
 // Built-in material gandalf.unlit, colour only: the material colour (linear), no light.
 #include "frame.wgsl"
 #include "instance.wgsl"
-struct Material { color: vec4<f32> };
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 @vertex fn vs_main(@location(0) position: vec3<f32>,
     inst: Instance) -> @builtin(position) vec4<f32> {
     return frame.projection * frame.view * instance_model(inst) * vec4<f32>(position, 1.0);

@@ -1,9 +1,7 @@
 #version 330 core
 // Built-in material gandalf.unlit with a texture: the material colour times the texture, no light.
 in vec2 v_uv;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 uniform sampler2D u_texture;
 out vec4 f_color;
 void main() { f_color = material.color * texture(u_texture, v_uv); }

@@ -22,12 +22,12 @@ import numpy as np
 import wgpu
 
 from ...resources import CubeTextureData, MaterialData, MeshData, ResourceError, ShaderSource, TextureData
-from ...resources.blocks import WGSL_BINDINGS
+from ...resources.blocks import WGSL_BINDINGS, MaterialDeclaration
 from ...resources.layout import BlockLayout, LayoutError
 from ..builtin_materials import prepare as prepare_builtin
 from ..errors import ShaderCompileError
 from ..library import ResourceLib
-from ..material_block import block_values, check_wgsl_varyings, wgsl_material_layout
+from ..material_block import block_values, check_wgsl_varyings, declared_block, used_block
 from ..material_checks import check_parameters
 from ..material_values import MaterialValues
 from ..shader_files import load_shader
@@ -190,14 +190,19 @@ class ShaderLib(ResourceLib[WGPUShader]):
         self.device = device
 
     def build(self, name: str, source: str | Path | ShaderSource, *, vertex_entry: str | None = None,
-              fragment_entry: str | None = None, include_dirs: Sequence[str | Path] = ()) -> WGPUShader:
+              fragment_entry: str | None = None, include_dirs: Sequence[str | Path] = (),
+              material: MaterialDeclaration | None = None) -> WGPUShader:
         """Compile a WGSL module (a ``.wgsl`` path or ShaderSource) and reflect it; cached by ``name``.
 
-        ``include_dirs`` are searched for ``#include`` files after the shader's own folder.
+        ``include_dirs`` are searched for ``#include`` files after the shader's own folder. ``material`` declares
+        the module's Material block (fields, or a BlockLayout; by default the colour alone), which it declares with
+        ``#include "material.wgsl"``.
         """
         if name in self._items:
             return self._items[name]
-        src = load_shader(source, None, "wgsl", include_dirs)
+        declared, generated = declared_block(name, material)
+        src = load_shader(source, None, "wgsl", include_dirs, generated)
+        block = used_block(name, declared, [src], material is not None)
         try:
             reflection = reflect(src.text, src.filename)
         except WGSLReflectError as exc:
@@ -214,13 +219,6 @@ class ShaderLib(ResourceLib[WGPUShader]):
         if (varying := check_wgsl_varyings(name, src.filename, reflection, vs, fs)) is not None:
             raise ShaderCompileError(varying)
         material_bindings = reflection.group(MATERIAL_GROUP)
-        uniform = next((b for b in material_bindings if b.kind == "uniform"), None)
-        block = None
-        if uniform is not None and uniform.struct in reflection.structs:
-            try:
-                block = wgsl_material_layout(reflection.structs[uniform.struct], name, src.filename)
-            except LayoutError as exc:
-                raise ShaderCompileError(str(exc)) from None
         layout = None
         if material_bindings:
             layout = self.device.create_bind_group_layout(

@@ -9,7 +9,7 @@ in vec3 g_world[];
 in vec3 g_normal[];
 out vec3 v_world;
 out vec3 v_normal;
-#include "explode_material.glsl"
+#include "material.glsl"  // the Material block, declared in Python with the shader
 void main() {
     // The student's function (exercises/ or solutions/explode.glsl):
     // the same offset for all three corners.

@@ -5,11 +5,7 @@
 #include "explode_shading.glsl"
 in vec3 v_world;
 in vec3 v_normal;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-    float specular;
-    float shininess;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 out vec4 f_color;
 void main() {
     vec3 lit = shade(v_world, v_normal, material.color.rgb, material.specular, material.shininess);

@@ -3,12 +3,7 @@
 #include "explode_shading.wgsl"
 #include "instance.wgsl"
 
-struct Material {
-    color: vec4<f32>,
-    specular: f32,
-    shininess: f32,
-};
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 
 @vertex
 fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>,

@@ -7,7 +7,7 @@
 layout(std430, binding = 0) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = 1) readonly buffer Normals { vec4 normals[]; };
 layout(std430, binding = 2) readonly buffer Indices { uint indices[]; };
-#include "explode_material.glsl"
+#include "material.glsl"  // the Material block, declared in Python with the shader
 out vec3 v_world;
 out vec3 v_normal;
 void main() {

@@ -5,15 +5,7 @@
 #include "instance.wgsl"
 #include "explode.wgsl"
 
-struct Material {
-    color: vec4<f32>,
-    explode_time: f32,  // seconds on the explosion clock (set every frame by ExplodeSystem)
-    amount: f32,        // how far a face moves at the peak (world units)
-    period: f32,        // seconds from one whole mesh to the next
-    specular: f32,
-    shininess: f32,
-};
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 
 // --8<-- [start:pulling]
 // xyz: model-space corner, w: 1

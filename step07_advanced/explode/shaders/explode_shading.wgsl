@@ -3,8 +3,8 @@
 #include "frame.wgsl"
 #include "../../shaders/blinn_phong.wgsl"
 
-// The including file declares `struct Material`
-// (with color, specular and shininess) at @group(1) @binding(0):
+// The including file includes "material.wgsl", the Material block declared in Python
+// (shaders.py: color, specular and shininess at @group(1) @binding(0)):
 // the exploding shader's has the explosion's values too, the
 // unexploded reference's only what it reads.
 

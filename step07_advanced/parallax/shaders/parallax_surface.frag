@@ -8,15 +8,7 @@ in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_tangent;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-    vec2 uv_scale;       // texture repeats across the surface (u, v)
-    float method;        // 0 normal mapping, 1 parallax offset, 2 steep, 3 occlusion
-    float height_scale;  // the depth of height 0 in (repeated) uv units
-    float layers;        // layers of the steep / occlusion march
-    float specular;
-    float shininess;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 uniform sampler2D u_albedo;
 uniform sampler2D u_normal_map;
 uniform sampler2D u_height_map;

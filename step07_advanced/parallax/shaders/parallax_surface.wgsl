@@ -5,16 +5,7 @@
 #include "surface_vertex.wgsl"
 #include "parallax_shading.wgsl"
 
-struct Material {
-    color: vec4<f32>,
-    uv_scale: vec2<f32>,  // texture repeats across the surface (u, v)
-    method: f32,          // 0 normal mapping, 1 parallax offset, 2 steep, 3 occlusion
-    height_scale: f32,    // the depth of height 0 in (repeated) uv units
-    layers: f32,          // layers of the steep / occlusion march
-    specular: f32,
-    shininess: f32,
-};
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 @group(1) @binding(1) var albedo_map: texture_2d<f32>;
 @group(1) @binding(2) var albedo_sampler: sampler;
 @group(1) @binding(3) var normal_map: texture_2d<f32>;

@@ -3,12 +3,7 @@
 // tonemapped; the sRGB framebuffer encodes it.
 #include "tonemap.glsl"
 layout(std430, binding = 0) readonly buffer Accum { vec4 accum[]; };  // the material's buffer 0
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-    float exposure;
-    float trace_width;
-    float trace_height;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 in vec2 v_uv;
 out vec4 f_color;
 

@@ -1,13 +1,7 @@
 // Step 07 path tracer, WebGPU: one attribute-less triangle that covers
 // the screen shows the accumulation's mean, tonemapped; the sRGB target
 // encodes it. uv = (0, 0) is the top-left corner, as in display.vert.
-struct Material {
-    color: vec4<f32>,
-    exposure: f32,
-    trace_width: f32,
-    trace_height: f32,
-};
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 @group(1) @binding(1) var<storage, read> accum: array<vec4<f32>>;  // the material's buffer 0
 
 struct VertexOut {

@@ -10,16 +10,7 @@ in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_tangent;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;                // glTF baseColorFactor
-    vec4 emissive;             // emissiveFactor
-    float metallic;            // metallicFactor
-    float roughness;           // roughnessFactor
-    float normal_scale;
-    float occlusion_strength;
-    float env_strength;
-    float prefiltered_levels;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 uniform sampler2D u_base_color_map;
 uniform sampler2D u_metallic_roughness_map;
 uniform sampler2D u_normal_map;

@@ -7,17 +7,7 @@
 #include "normal_map.wgsl"
 #include "ibl.wgsl"
 
-struct Material {
-    color: vec4<f32>,
-    emissive: vec4<f32>,
-    metallic: f32,
-    roughness: f32,
-    normal_scale: f32,
-    occlusion_strength: f32,
-    env_strength: f32,
-    prefiltered_levels: f32,
-};
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 @group(1) @binding(1) var base_color_map: texture_2d<f32>;
 @group(1) @binding(2) var base_color_sampler: sampler;
 @group(1) @binding(3) var metallic_roughness_map: texture_2d<f32>;

@@ -8,14 +8,7 @@ in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_tangent;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-    float metallic;
-    float roughness;
-    float env_strength;
-    float height_scale;  // parallax depth in UV units (0: normal mapping only)
-    float uv_scale;      // texture repeats across the surface
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 uniform sampler2D u_albedo;
 uniform sampler2D u_normal_map;
 uniform sampler2D u_height_map;

@@ -5,15 +5,7 @@
 #include "normal_map.wgsl"
 #include "parallax.wgsl"
 
-struct Material {
-    color: vec4<f32>,
-    metallic: f32,
-    roughness: f32,
-    env_strength: f32,
-    height_scale: f32,  // parallax depth in UV units (0: normal mapping only)
-    uv_scale: f32,      // texture repeats across the surface
-};
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 @group(1) @binding(1) var albedo: texture_2d<f32>;
 @group(1) @binding(2) var albedo_sampler: sampler;
 @group(1) @binding(3) var normal_map: texture_2d<f32>;

@@ -6,12 +6,7 @@ in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_tangent;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-    float metallic;
-    float roughness;
-    float env_strength;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 uniform samplerCube u_env;
 out vec4 f_color;
 void main() {

@@ -3,13 +3,7 @@
 #include "surface_vertex.wgsl"
 #include "pbr_lighting.wgsl"
 
-struct Material {
-    color: vec4<f32>,
-    metallic: f32,
-    roughness: f32,
-    env_strength: f32,
-};
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 @group(1) @binding(1) var env: texture_cube<f32>;
 @group(1) @binding(2) var env_sampler: sampler;
 

@@ -5,10 +5,7 @@
 #include "shadow.glsl"
 in vec3 v_world;
 in vec3 v_normal;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-    float pcf;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 out vec4 f_color;
 
 float study_shadow(vec3 world_position, vec3 normal, int r) {

@@ -4,11 +4,7 @@
 #include "frame.wgsl"
 #include "instance.wgsl"
 #include "shadow.wgsl"
-struct Material {
-    color: vec4<f32>,
-    pcf: f32,
-};
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 
 struct VOut {
     @builtin(position) position: vec4<f32>,

@@ -6,7 +6,7 @@
 #include "terrain.glsl"
 #include "terrain_shading.glsl"
 in vec2 v_uv;
-#include "terrain_material.glsl"
+#include "material.glsl"  // the Material block, declared in Python with the shader
 out vec4 f_color;
 void main() {
     vec3 n = terrain_normal(v_uv, vec2(material.size, material.height_scale));

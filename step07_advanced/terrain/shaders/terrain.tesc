@@ -10,7 +10,7 @@
 layout(vertices = 4) out;
 in vec2 vc_uv[];
 out vec2 tc_uv[];
-#include "terrain_material.glsl"
+#include "material.glsl"  // the Material block, declared in Python with the shader
 
 vec3 corner(int i) {
     vec2 uv = vc_uv[i];

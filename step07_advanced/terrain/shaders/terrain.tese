@@ -8,7 +8,7 @@
 layout(quads, equal_spacing, ccw) in;
 in vec2 tc_uv[];
 out vec2 v_uv;
-#include "terrain_material.glsl"
+#include "material.glsl"  // the Material block, declared in Python with the shader
 
 void main() {
     vec2 s = gl_TessCoord.xy;

@@ -5,12 +5,7 @@
 #include "terrain.wgsl"
 #include "terrain_shading.wgsl"
 
-struct Material {
-    color: vec4<f32>,  // the haze (the sky's colour), linear
-    size: f32,
-    height_scale: f32,
-};
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 @group(1) @binding(1) var heightmap: texture_2d<f32>;
 @group(1) @binding(2) var heightmap_sampler: sampler;  // unused: texels are read with textureLoad
 // (u, v, world y, 1); unused slots 0

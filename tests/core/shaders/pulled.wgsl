@@ -2,8 +2,7 @@
 // storage buffer by vertex_index.
 #include "frame.wgsl"
 #include "instance.wgsl"
-struct Material { color: vec4<f32> };
-@group(1) @binding(0) var<uniform> material: Material;
+#include "material.wgsl"  // the Material block, declared in Python with the shader
 @group(1) @binding(1) var<storage, read> positions: array<vec4<f32>>;
 @vertex fn vs_main(@builtin(vertex_index) index: u32,
     inst: Instance) -> @builtin(position) vec4<f32> {

@@ -1,9 +1,7 @@
 #version 330 core
 // Test shader: textured, tinted by the material colour.
 in vec2 v_uv;
-layout(std140) uniform Material {  // the material's values, the same bytes as WGSL's struct
-    vec4 color;
-} material;
+#include "material.glsl"  // the Material block, declared in Python with the shader
 uniform sampler2D u_albedo;
 out vec4 f_color;
 void main() { f_color = material.color * texture(u_albedo, v_uv); }
