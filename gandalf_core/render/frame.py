@@ -21,6 +21,7 @@ exact to 1% for ever (at 3e7 s a plain float32 time steps by 2 s); ``time.z`` co
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -128,14 +129,18 @@ def clip_scale(projection: np.ndarray, near_ndc: float) -> float:
     (z / w) and the same perspective-correct varyings. But the GPU's own set-up arithmetic (clipping, edge
     equations) multiplies clip coordinates together, and a scene of size 1e-20 (near plane 1e-21) makes products
     near 1e-40, below float32's smallest normal number (1.2e-38): an NVIDIA GPU flushes them to zero and draws
-    nothing. Scaled by 1 / (w at the near plane), clip w runs from 1 to far / near whatever the scene's size.
+    nothing. Scaled by about 1 / (w at the near plane), clip w runs from about 1 to far / near whatever the scene's
+    size. The factor is a power of two, so the scaling is exact in float32: every quotient the GPU forms from clip
+    coordinates is bit for bit what it was, and a scene of ordinary size draws exactly the same pixels.
     1 for an orthographic projection (w is 1 already) or a matrix whose near plane cannot be read off.
     """
     if projection[3, 3] != 0.0 or projection[2, 3] == 0.0:
         return 1.0
     # z_ndc = (P22 z + P23) / (P32 z) = near_ndc at the near plane: w there is P32 z = -P23 P32 / (P22 - near_ndc P32).
     w_near = abs(projection[2, 3] * projection[3, 2] / (projection[2, 2] - near_ndc * projection[3, 2]))
-    return 1.0 / w_near if np.isfinite(w_near) and w_near > 0.0 and np.isfinite(1.0 / w_near) else 1.0
+    if not (np.isfinite(w_near) and w_near > 0.0):
+        return 1.0
+    return math.ldexp(1.0, -math.frexp(w_near)[1])  # 2^-e with w_near = m 2^e, m in [0.5, 1): w from 0.5 to 1
 
 
 def _clip_to_direction(projection: np.ndarray, rotation: np.ndarray) -> np.ndarray:
