@@ -19,6 +19,8 @@ from pathlib import Path
 
 from gandalf_core.render.base import BACKENDS
 
+from .testing import LocalDifferences, psnr
+
 REPO_ROOT = Path(__file__).resolve().parent.parent
 STEP_PATTERN = re.compile(r"^step\d\d_[a-z0-9_]+$")
 
@@ -63,6 +65,7 @@ def main(argv: list[str] | None = None) -> int:
 
     headless = args.headless or not display_available()
     out_dir = Path(args.out)
+    disagree = []
     for part in (p for step in steps for p in step_parts(step)):
         images = {}
         for backend in args.backends:
@@ -76,21 +79,45 @@ def main(argv: list[str] | None = None) -> int:
                 with importlib.import_module(f"{part}.{backend}").create_app(headless=False) as app:
                     app.run()
         if len(images) == 2:
-            print(f"{part:<26} OpenGL vs WebGPU: {_agreement(*images.values())}")
+            verdict, problems = _agreement(part, *images.values())
+            print(f"{part:<26} OpenGL vs WebGPU: {verdict}")
+            if problems:
+                disagree.append(part)
+    if disagree:
+        print(f"the two APIs' pictures differ beyond their stated bound for: {', '.join(disagree)}")
+        return 1
     return 0
 
 
-def _agreement(a: Path, b: Path) -> str:
-    """How closely the two backends' pictures agree (PSNR over RGB, largest channel difference)."""
+#: What the two APIs' pictures of a part may differ by (:class:`~gandalf_tools.testing.LocalDifferences`): by
+#: default a level of 4 on 99.9 % of pixels (float32 arithmetic and texture filtering round differently; measured
+#: on llvmpipe / lavapipe: at most 0.02 % of pixels beyond 2 levels, apart from the parts below), no 8 x 8 square
+#: off by more than 12 on average.
+AGREEMENT = LocalDifferences(level=4, share=0.999)
+#: Parts whose two variants draw legitimately different geometry, and why.
+AGREEMENT_BY_PART = {
+    # OpenGL tessellates the patches in hardware, WebGPU in a compute kernel: the two cut a patch into other
+    # triangles, so the silhouette and the shading between vertices differ a little (measured: 1.2 % of pixels
+    # beyond 4 levels, worst 8 x 8 square 11.3).
+    "step07_advanced.terrain": LocalDifferences(level=4, share=0.97, block_mean=24.0),
+}
+
+
+def _agreement(part: str, a: Path, b: Path) -> tuple[str, list[str]]:
+    """How closely the two backends' pictures agree (PSNR, largest channel difference), the verdict against
+    the part's bound, and what breaks it (empty when within)."""
     import numpy as np
     from PIL import Image
 
-    from .testing import psnr
-
     x, y = (np.asarray(Image.open(p).convert("RGBA")) for p in (a, b))
     worst = int(np.abs(x[..., :3].astype(int) - y[..., :3].astype(int)).max())
-    value = psnr(x, y)
-    return "identical" if worst == 0 else f"PSNR {value:.1f} dB, largest channel difference {worst}/255"
+    bound = AGREEMENT_BY_PART.get(part, AGREEMENT)
+    problems = bound.violations(x, y)
+    if worst == 0:
+        return "identical", []
+    verdict = (f"within the bound ({bound.share:.1%} of pixels within {bound.level} levels)" if not problems
+               else "DIFFERENT: " + "; ".join(problems))
+    return f"PSNR {psnr(x, y):.1f} dB, largest channel difference {worst}/255: {verdict}", problems
 
 
 if __name__ == "__main__":
