@@ -1,13 +1,17 @@
-"""What every error-against-run-time study shares: its run's metadata, matplotlib without a display, and its outputs.
+"""What every error-against-run-time study shares: its command line, its run's metadata, matplotlib without a
+display, and its outputs.
 
 A study script measures its own cases (timing its frames with :func:`frame_runs_ms` / :func:`frame_ms`); this
-module writes what it found the same way for all of them:
+module reads its options the same way for all of them (:class:`StudyParser`: ``--out``, ``--quick`` and the
+``--backends``/``--size``/``--frames``/``--repeats`` a study takes), draws the frame of its plot (:func:`figure`,
+:func:`label_axes`, :func:`save_figure`) and writes what it found:
 ``DIR/<stem>.json`` (the result), ``DIR/<stem>.md`` (its table, included by the step's page) and ``DIR/<stem>.png``
 (its plot), then prints the table.
 """
 
 from __future__ import annotations
 
+import argparse
 import json
 import platform
 import statistics
@@ -48,6 +52,89 @@ def pyplot() -> Any:
     import matplotlib.pyplot as plt
 
     return plt
+
+
+Size = tuple[int, int]
+#: The APIs a study can measure.
+BACKENDS = ("opengl", "webgpu")
+
+
+class StudyParser(argparse.ArgumentParser):
+    """A study's command line: ``--out FOLDER`` and ``--quick``, plus those of ``--backends``, ``--size W H``,
+    ``--frames`` and ``--repeats`` that the study takes.
+
+    ``size``, ``frames`` and ``repeats`` are (full, quick) pairs: the default of the option without and with
+    ``--quick``. :meth:`parse_args` fills them in, makes ``size`` a tuple of ints and rejects a number below 1.
+    """
+
+    def __init__(self, module: str, doc: str, *, outputs: str, quick: str,
+                 backends: tuple[str, ...] | None = BACKENDS, size: tuple[Size, Size] | None = None,
+                 frames: tuple[int, int] | None = None, repeats: tuple[int, int] | None = None,
+                 out_required: bool = False) -> None:
+        super().__init__(prog=f"python -m {module}", description=doc,
+                         formatter_class=argparse.RawDescriptionHelpFormatter)
+        out_default = {"required": True} if out_required else {"default": Path("out")}
+        self.add_argument("--out", type=Path, help=f"folder for {outputs}", **out_default)
+        if backends:
+            self.add_argument("--backends", nargs="+", choices=backends, default=list(backends))
+        self.add_argument("--quick", action="store_true", help=quick)
+        self._by_quick = {name: pair for name, pair in (("size", size), ("frames", frames), ("repeats", repeats))
+                          if pair is not None}
+        if size is not None:
+            self.add_argument("--size", type=int, nargs=2, default=None, metavar=("W", "H"),
+                              help=f"default {_pair(*size, ' ')}")
+        if frames is not None:
+            self.add_argument("--frames", type=int, default=None,
+                              help=f"frames per timed run (default {_pair(*frames)})")
+        if repeats is not None:
+            self.add_argument("--repeats", type=int, default=None,
+                              help=f"timed runs per case (default {_pair(*repeats)})")
+
+    def parse_args(self, args=None, namespace=None):  # noqa: ANN001, ANN201 (argparse's signature)
+        parsed = super().parse_args(args, namespace)
+        for name, (full, quick) in self._by_quick.items():
+            if getattr(parsed, name) is None:
+                setattr(parsed, name, quick if parsed.quick else full)
+        if "size" in self._by_quick:
+            parsed.size = (int(parsed.size[0]), int(parsed.size[1]))
+        numbers = [n for name in self._by_quick for n in (parsed.size if name == "size" else [getattr(parsed, name)])]
+        if min(numbers, default=1) < 1:
+            self.error(f"{', '.join('--' + name for name in self._by_quick)} must be at least 1")
+        return parsed
+
+
+def _pair(full: object, quick: object, join: str = "") -> str:
+    """``"5, quick 2"``, or ``"5"`` where the quick default is the same; tuples joined with ``join``."""
+    def text(value: object) -> str:
+        return join.join(map(str, value)) if isinstance(value, tuple) else str(value)
+
+    return text(full) if full == quick else f"{text(full)}, quick {text(quick)}"
+
+
+def figure(*grid: int, **kwargs: Any) -> tuple[Any, Any]:
+    """``pyplot().subplots(*grid, **kwargs)`` at 100 dpi unless ``dpi`` is given: a study's (figure, axes)."""
+    kwargs.setdefault("dpi", 100)
+    return pyplot().subplots(*grid, **kwargs)
+
+
+def label_axes(ax: Any, xlabel: str, ylabel: str, title: str | None = None, *, legend: float | None = 8) -> None:
+    """Name ``ax``'s axes (and title it, at 10 pt), draw its grid and, unless ``legend`` is None, its legend at that
+    font size."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    if title is not None:
+        ax.set_title(title, fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    if legend is not None:
+        ax.legend(fontsize=legend)
+
+
+def save_figure(fig: Any, path: Path, **kwargs: Any) -> Path:
+    """Lay ``fig`` out, write it to ``path`` (``kwargs`` go to ``savefig``), close it; returns ``path``."""
+    fig.tight_layout()
+    fig.savefig(path, **kwargs)
+    pyplot().close(fig)
+    return path
 
 
 def write_study(out: Path, stem: str, result: dict[str, Any], table: str,

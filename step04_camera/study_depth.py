@@ -26,13 +26,12 @@ the bounds) to ``--out``. Runs headless and prints progress.
 
 from __future__ import annotations
 
-import argparse
 import math
 from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import frame_ms, pyplot, run_info, write_study
+from gandalf_tools.studies import StudyParser, figure, frame_ms, label_axes, run_info, save_figure, write_study
 
 STEM = "step04_study_depth"
 #: (label, near, far, reverse_z)
@@ -207,8 +206,7 @@ def markdown(result: dict) -> str:
 
 
 def plot(result: dict, path: Path) -> None:
-    plt = pyplot()
-    fig, ax = plt.subplots(figsize=(7.0, 4.6), dpi=100)
+    fig, ax = figure(figsize=(7.0, 4.6))
     colours = dict(zip(dict.fromkeys(r["mapping"] for r in result["rows"]),
                        ("tab:red", "tab:orange", "tab:blue", "tab:green", "tab:purple")))
     styles = {"opengl": ("o", "-"), "webgpu": ("s", "--")}
@@ -221,32 +219,22 @@ def plot(result: dict, path: Path) -> None:
     for mapping in colours:
         mine = [r for r in result["rows"] if r["mapping"] == mapping and r["backend"] == result["rows"][0]["backend"]]
         ax.loglog([r["distance"] for r in mine], [r["bound"] for r in mine], ":", color=colours[mapping], lw=1)
-    ax.set_xlabel("distance d of the front plane")
-    ax.set_ylabel("smallest separation without z-fighting")
-    ax.set_title("Depth precision, float32 depth buffer (dotted: the float32 bound)", fontsize=10)
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    label_axes(ax, "distance d of the front plane", "smallest separation without z-fighting",
+               "Depth precision, float32 depth buffer (dotted: the float32 bound)", legend=7)
+    save_figure(fig, path)
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m step04_camera.study_depth", description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--out", type=Path, default=Path("out"), help=f"folder for {STEM}.json/.md/.png")
-    parser.add_argument("--backends", nargs="+", choices=("opengl", "webgpu"), default=["opengl", "webgpu"])
-    parser.add_argument("--quick", action="store_true", help="two mappings, one distance a decade, coarser search")
+    parser = StudyParser("step04_camera.study_depth", __doc__, outputs=f"{STEM}.json/.md/.png",
+                         quick="two mappings, one distance a decade, coarser search", frames=(10, 10), repeats=(5, 5))
     parser.add_argument("--per-decade", type=int, default=None, help="distances a decade (default 2, quick 1)")
     parser.add_argument("--resolution", type=float, default=None,
                         help="bisection stops at this many octaves (default 0.25, quick 1)")
-    parser.add_argument("--frames", type=int, default=10, help="frames per timed run")
-    parser.add_argument("--repeats", type=int, default=5, help="timed runs per mapping")
     args = parser.parse_args(argv)
     per_decade = args.per_decade or (1 if args.quick else 2)
     resolution = args.resolution or (1.0 if args.quick else 0.25)
-    if per_decade < 1 or resolution <= 0 or args.frames < 1 or args.repeats < 1:
-        parser.error("--per-decade, --frames and --repeats must be at least 1, --resolution positive")
+    if per_decade < 1 or resolution <= 0:
+        parser.error("--per-decade must be at least 1, --resolution positive")
     mappings = QUICK_MAPPINGS if args.quick else MAPPINGS
     print(f"depth study: {len(mappings)} mappings, {', '.join(args.backends)}, {per_decade} distances a decade",
           flush=True)

@@ -20,14 +20,13 @@ takes minutes on a software rasteriser); pass ``--max-taps 0`` for no limit. Wri
 
 from __future__ import annotations
 
-import argparse
 import statistics
 import time
 from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import pyplot, run_info, write_study
+from gandalf_tools.studies import StudyParser, figure, run_info, save_figure, write_study
 
 from . import reference
 from .kernels import OPERATIONS
@@ -130,10 +129,9 @@ def markdown(result: dict) -> str:
 
 
 def plot(result: dict, path: Path) -> None:
-    plt = pyplot()
     backends = list(dict.fromkeys(r["backend"] for r in result["rows"]))
     sizes = sorted({r["size"] for r in result["rows"]})
-    fig, axes = plt.subplots(1, len(backends), figsize=(6.2 * len(backends), 4.4), squeeze=False, sharey=True)
+    fig, axes = figure(1, len(backends), figsize=(6.2 * len(backends), 4.4), squeeze=False, sharey=True)
     colours = {"naive": "tab:red", "separable": "tab:blue", "tiled": "tab:green"}
     styles = ["-", "--", ":", "-."]
     for ax, backend in zip(axes[0], backends):
@@ -152,18 +150,12 @@ def plot(result: dict, path: Path) -> None:
         ax.grid(True, which="both", alpha=0.3)
     axes[0][0].set_ylabel("GPU time per blur (ms, median)")
     axes[0][-1].legend(fontsize=7, ncol=len(METHODS))
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(fig, path, dpi=110)
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m step07_advanced.filter.study", description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--out", default="out", help="folder for filter_study.json/.md/.png (default: out)")
-    parser.add_argument("--backends", nargs="+", default=["opengl", "webgpu"], choices=["opengl", "webgpu"])
-    parser.add_argument("--quick", action="store_true", help=f"sizes {QUICK_SIZES} and radii {QUICK_RADII} only")
-    parser.add_argument("--repeats", type=int, default=None, help="timed runs per case (default 5, quick 3)")
+    parser = StudyParser("step07_advanced.filter.study", __doc__, outputs="filter_study.json/.md/.png (default: out)",
+                         quick=f"sizes {QUICK_SIZES} and radii {QUICK_RADII} only", repeats=(5, 3))
     parser.add_argument("--batch", type=int, default=1,
                         help="dispatches per wait; the time is per dispatch (default 1: includes the wait)")
     parser.add_argument("--max-taps", type=float, default=3e8,
@@ -171,11 +163,10 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     assert set(METHODS) <= set(OPERATIONS)
     sizes, radii = (QUICK_SIZES, QUICK_RADII) if args.quick else (SIZES, RADII)
-    repeats = args.repeats or (3 if args.quick else 5)
-    if args.repeats is not None and args.repeats < 1 or args.batch < 1:
-        parser.error("--repeats and --batch must be >= 1")
-    result = run_study(args.backends, sizes, radii, repeats, args.max_taps, args.batch)
-    write_study(Path(args.out), "filter_study", result, markdown(result), plot)
+    if args.batch < 1:
+        parser.error("--batch must be >= 1")
+    result = run_study(args.backends, sizes, radii, args.repeats, args.max_taps, args.batch)
+    write_study(args.out, "filter_study", result, markdown(result), plot)
     return 0
 
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from lesson_checks import check_main_writes_a_png_and_help_only_helps
+from cli_checks import check_main_writes_a_png_and_help_only_helps
 
 from step01_window import clear_gl, clear_wgpu
 

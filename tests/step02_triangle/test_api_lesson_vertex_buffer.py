@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from lesson_checks import check_main_writes_a_png_and_help_only_helps
+from cli_checks import check_main_writes_a_png_and_help_only_helps
 
 from step02_triangle import vertex_buffer_gl, vertex_buffer_wgpu
 

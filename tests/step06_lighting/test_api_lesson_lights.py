@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from lesson_checks import check_main_writes_a_png_and_help_only_helps
+from cli_checks import check_main_writes_a_png_and_help_only_helps
 
 from step06_lighting.lights import lights_gl, lights_wgpu
 
