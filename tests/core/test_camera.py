@@ -7,10 +7,10 @@ cameras with the same world pose (reached differently) give PSNR >= 60 dB; matri
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
+from core_shaders import build_shaders
 
 from gandalf_core import Application, LinkComponent, Scene
 from gandalf_core.components import (
@@ -32,16 +32,12 @@ from gandalf_core.systems.camera_controllers import (
 )
 from gandalf_tools.testing import compare_images, psnr
 
-SHADERS = Path(__file__).parent / "shaders"
 W, H = 96, 72
 
 
 def make_app(backend: str, width: int = W, height: int = H) -> Application:
     app = Application(backend, width, height, headless=True, fixed_dt=1 / 60)
-    if backend == "opengl":
-        app.renderer.shaders.build("unlit", SHADERS / "unlit.vert", SHADERS / "unlit.frag")
-    else:
-        app.renderer.shaders.build("unlit", SHADERS / "unlit.wgsl")
+    build_shaders(app.renderer.shaders, backend, "unlit")
     return app
 
 

@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from core_shaders import build_shaders
 
 from gandalf_core import Application
 from gandalf_core.render.errors import ShaderCompileError
@@ -24,8 +25,6 @@ from gandalf_core.render.wgsl_reflect import reflect
 from gandalf_core.resources import MaterialData, ResourceError, ShaderSource, checkerboard, sky_cube
 from gandalf_core.resources.layout import BlockLayout
 from gandalf_tools.tour import REPO_ROOT
-
-SHADERS = Path(__file__).parent / "shaders"
 
 GL_VERT = """#version 330 core
 #include "frame.glsl"
@@ -196,10 +195,7 @@ def test_padding_fields_have_a_default_and_the_colour_is_optional(backend):
 def test_a_cube_map_in_a_2d_slot_of_a_block_material_names_the_slot(backend):
     with Application(backend, 16, 12, headless=True) as app:
         r = app.renderer
-        if backend == "opengl":
-            r.shaders.build("unlit", SHADERS / "unlit.vert", SHADERS / "unlit.frag")
-        else:
-            r.shaders.build("unlit", SHADERS / "unlit.wgsl")
+        build_shaders(r.shaders, backend, "unlit")
         r.textures.build("sky", sky_cube(8))
         r.textures.build("flat", checkerboard(8, 2))
         r.materials.build("ok", MaterialData("unlit", ["flat"]))

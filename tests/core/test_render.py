@@ -8,10 +8,10 @@ on a few lit pixels).
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 import numpy as np
 import pytest
+from core_shaders import SHADERS, build_shaders
 
 from gandalf_core import Application, Scene
 from gandalf_core.components import (
@@ -28,18 +28,12 @@ from gandalf_core.render.errors import MissingResourceError, ShaderCompileError
 from gandalf_core.resources import MaterialData, checkerboard, cube, sky_cube, uv_sphere
 from gandalf_tools.testing import compare_images
 
-SHADERS = Path(__file__).parent / "shaders"
 W, H = 96, 72
 
 
 def make_app(backend: str, **kwargs) -> Application:
     app = Application(backend, W, H, headless=True, fixed_dt=1 / 60, **kwargs)
-    if backend == "opengl":
-        app.renderer.shaders.build("unlit", SHADERS / "unlit.vert", SHADERS / "unlit.frag")
-        app.renderer.shaders.build("lit", SHADERS / "lit.vert", SHADERS / "lit.frag")
-    else:
-        app.renderer.shaders.build("unlit", SHADERS / "unlit.wgsl")
-        app.renderer.shaders.build("lit", SHADERS / "lit.wgsl")
+    build_shaders(app.renderer.shaders, backend, "unlit", "lit")
     return app
 
 

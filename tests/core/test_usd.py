@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from core_shaders import build_shaders
 
 from gandalf_core import Application, Scene, TransformSystem
 from gandalf_core.components import (
@@ -52,7 +53,6 @@ from step07_advanced.usd import (
 pxr = pytest.importorskip("pxr")
 from pxr import Sdf, Usd, UsdGeom  # noqa: E402
 
-SHADERS = Path(__file__).parent / "shaders"
 W, H = 96, 72
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -272,12 +272,7 @@ def test_without_assets_no_texture_files_are_written(tmp_path):
 
 def render(backend: str, scene: Scene) -> np.ndarray:
     with Application(backend, W, H, headless=True, fixed_dt=1 / 60) as app:
-        if backend == "opengl":
-            app.renderer.shaders.build("unlit", SHADERS / "unlit.vert", SHADERS / "unlit.frag")
-            app.renderer.shaders.build("lit", SHADERS / "lit.vert", SHADERS / "lit.frag")
-        else:
-            app.renderer.shaders.build("unlit", SHADERS / "unlit.wgsl")
-            app.renderer.shaders.build("lit", SHADERS / "lit.wgsl")
+        build_shaders(app.renderer.shaders, backend, "unlit", "lit")
         app.add_scene(scene)
         app.run(frames=2)
         return app.capture()

@@ -14,6 +14,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from core_shaders import build_shaders
 
 from gandalf_core import Application, Scene, TransformSystem
 from gandalf_core.components import (
@@ -34,7 +35,6 @@ from step07_advanced.usd.foreign import PreviewSurface, decompose
 pxr = pytest.importorskip("pxr")
 from pxr import Gf, Sdf, Usd, UsdGeom, UsdLux, UsdShade, Vt  # noqa: E402
 
-SHADERS = Path(__file__).parent / "shaders"
 W, H = 96, 72
 T = Sdf.ValueTypeNames
 
@@ -475,12 +475,7 @@ def hand_scene(folder: Path) -> Scene:
 
 def render(backend: str, scene: Scene) -> np.ndarray:
     with Application(backend, W, H, headless=True, fixed_dt=1 / 60) as app:
-        if backend == "opengl":
-            app.renderer.shaders.build("unlit", SHADERS / "unlit.vert", SHADERS / "unlit.frag")
-            app.renderer.shaders.build("lit", SHADERS / "lit.vert", SHADERS / "lit.frag")
-        else:
-            app.renderer.shaders.build("unlit", SHADERS / "unlit.wgsl")
-            app.renderer.shaders.build("lit", SHADERS / "lit.wgsl")
+        build_shaders(app.renderer.shaders, backend, "unlit", "lit")
         app.add_scene(scene)
         app.run(frames=2)
         return app.capture()
