@@ -31,16 +31,14 @@ import json
 import math
 import os
 import platform
-import resource
 import statistics
-import subprocess
 import sys
 import time
 from pathlib import Path
 from typing import Any
 
-HERE = Path(__file__).resolve().parent
-ROOT = HERE.parent
+from bench_common import HERE, ROOT, grid_positions, rss_mb, run_child, sky_files
+
 SHADERS = HERE / "shaders"
 
 #: scene -> (models, rotating): the paper's scenes 1-5
@@ -66,32 +64,6 @@ REF_RSS: dict[tuple[str, str], float] = {("opengl", "small"): 437.0, ("webgpu", 
                                          ("opengl", "large"): 692.0, ("webgpu", "large"): 692.0}
 
 
-def rss_mb() -> float:
-    rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
-    return round(rss / (1024 * 1024 if sys.platform == "darwin" else 1024), 1)
-
-
-def sky_files(cache: Path, size: int) -> list[Path]:
-    """Six ``size``² PNG faces of a sky (with a little noise, so they are real-sized files), written once."""
-    import numpy as np
-    from PIL import Image
-
-    from gandalf_core.resources import sky_cube
-
-    cache.mkdir(parents=True, exist_ok=True)
-    paths = [cache / f"sky{size}_{face}.png" for face in ("px", "nx", "py", "ny", "pz", "nz")]
-    if all(p.is_file() for p in paths):
-        return paths
-    base = sky_cube(min(size, 256))
-    rng = np.random.default_rng(7)
-    for path, face in zip(paths, base.faces):
-        arr = np.asarray(Image.fromarray(face).resize((size, size), Image.BILINEAR)).copy()
-        noise = rng.integers(-3, 4, arr[..., :3].shape)
-        arr[..., :3] = np.clip(arr[..., :3].astype(np.int16) + noise, 0, 255)
-        Image.fromarray(arr.astype(np.uint8)).save(path, compress_level=1)
-    return paths
-
-
 def model_mesh(model: str) -> Any:
     """The small model: a 48-triangle sphere; the large one: a 70,000-triangle torus."""
     from gandalf_core.resources import primitives
@@ -99,14 +71,6 @@ def model_mesh(model: str) -> Any:
     if model == "small":
         return primitives.uv_sphere(0.6, 8, 4)
     return primitives.torus(0.45, 0.18, 350, 100)
-
-
-def grid_positions(n: int) -> Any:
-    import numpy as np
-
-    g = math.ceil(round(n ** (1.0 / 3.0), 9))
-    i = np.arange(n)
-    return np.stack([(i % g) - (g - 1) / 2, (i // g % g) - (g - 1) / 2, -(i // (g * g)) - 2.0], 1) * 1.8
 
 
 # ------------------------------------------------------------------------------------------------
@@ -297,16 +261,12 @@ def main(argv: list[str] | None = None) -> int:
         cfg = {"backend": backend, "scene": scene, "model": model, "size": list(size), "frames": frames,
                "warmup": warmup, "max_seconds": max_seconds, "sky": sky, "sky_size": sky_size,
                "offscreen": offscreen, "repeat": rep, "png": args.png}
-        proc = subprocess.run([sys.executable, str(Path(__file__).resolve()), "--child", json.dumps(cfg)],
-                              cwd=ROOT, stdout=subprocess.PIPE, text=True)
-        lines = [ln for ln in proc.stdout.splitlines() if ln.startswith("{")]
-        if proc.returncode != 0 or not lines:
+        record = run_child(__file__, cfg, {"bench": "pygandalf-work", "backend": backend, "scene": scene,
+                                           "model": model})
+        if record is None:
             failures += 1
-            print(json.dumps({"bench": "pygandalf-work", "backend": backend, "scene": scene, "model": model,
-                              "error": f"child exited with {proc.returncode}"}), flush=True)
             continue
-        print(lines[-1], flush=True)
-        records.append(json.loads(lines[-1]))
+        records.append(record)
     for line in summarize(records):
         print(json.dumps(line), flush=True)
     return 1 if failures else 0
