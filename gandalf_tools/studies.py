@@ -1,10 +1,9 @@
-"""What every error-against-run-time study shares: its command line, its run's metadata, matplotlib without a
-display, and its outputs.
+"""What every error-against-run-time study shares: its command line, its run's metadata, its table and its outputs.
 
 A study script measures its own cases (timing its frames with :func:`frame_runs_ms` / :func:`frame_ms`); this
 module reads its options the same way for all of them (:class:`StudyParser`: ``--out``, ``--quick`` and the
-``--backends``/``--size``/``--frames``/``--repeats`` a study takes), draws the frame of its plot (:func:`figure`,
-:func:`label_axes`, :func:`save_figure`) and writes what it found:
+``--backends``/``--size``/``--frames``/``--repeats`` a study takes), lays out its table (:func:`markdown_table`,
+rows grouped with :func:`groups`) and writes what it found (the plot drawn with :mod:`gandalf_tools.plots`):
 ``DIR/<stem>.json`` (the result), ``DIR/<stem>.md`` (its table, included by the step's page) and ``DIR/<stem>.png``
 (its plot), then prints the table.
 """
@@ -16,7 +15,7 @@ import json
 import platform
 import statistics
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -42,16 +41,6 @@ def frame_runs_ms(app: Any, frames: int, repeats: int) -> list[float]:
 def frame_ms(app: Any, frames: int, repeats: int) -> float:
     """The median of :func:`frame_runs_ms`: a study's frame time."""
     return statistics.median(frame_runs_ms(app, frames, repeats))
-
-
-def pyplot() -> Any:
-    """``matplotlib.pyplot`` on the Agg backend (studies run headless; matplotlib is imported only when plotting)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
 
 
 Size = tuple[int, int]
@@ -111,30 +100,18 @@ def _pair(full: object, quick: object, join: str = "") -> str:
     return text(full) if full == quick else f"{text(full)}, quick {text(quick)}"
 
 
-def figure(*grid: int, **kwargs: Any) -> tuple[Any, Any]:
-    """``pyplot().subplots(*grid, **kwargs)`` at 100 dpi unless ``dpi`` is given: a study's (figure, axes)."""
-    kwargs.setdefault("dpi", 100)
-    return pyplot().subplots(*grid, **kwargs)
+def markdown_table(header: Sequence[str], rows: Iterable[Sequence[object]], left: int = 1) -> str:
+    """A markdown table: the ``header`` cells, a rule that aligns the first ``left`` columns left and the others
+    right, and a line of cells (formatted already, else written with ``str``) for each of ``rows``."""
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * left + "---:|" * (len(header) - left)]
+    lines += ["| " + " | ".join(map(str, row)) + " |" for row in rows]
+    return "\n".join(lines) + "\n"
 
 
-def label_axes(ax: Any, xlabel: str, ylabel: str, title: str | None = None, *, legend: float | None = 8) -> None:
-    """Name ``ax``'s axes (and title it, at 10 pt), draw its grid and, unless ``legend`` is None, its legend at that
-    font size."""
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    if title is not None:
-        ax.set_title(title, fontsize=10)
-    ax.grid(True, which="both", alpha=0.3)
-    if legend is not None:
-        ax.legend(fontsize=legend)
-
-
-def save_figure(fig: Any, path: Path, **kwargs: Any) -> Path:
-    """Lay ``fig`` out, write it to ``path`` (``kwargs`` go to ``savefig``), close it; returns ``path``."""
-    fig.tight_layout()
-    fig.savefig(path, **kwargs)
-    pyplot().close(fig)
-    return path
+def groups(rows: Iterable[dict[str, Any]], key: str) -> list[tuple[Any, list[dict[str, Any]]]]:
+    """``rows`` grouped by their ``key``: (value, its rows) in the order the values first appear."""
+    rows = list(rows)
+    return [(value, [r for r in rows if r[key] == value]) for value in dict.fromkeys(r[key] for r in rows)]
 
 
 def write_study(out: Path, stem: str, result: dict[str, Any], table: str,

@@ -29,7 +29,8 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import StudyParser, figure, frame_ms, label_axes, run_info, save_figure, write_study
+from gandalf_tools.plots import figure, label_axes, save_figure
+from gandalf_tools.studies import StudyParser, frame_ms, markdown_table, run_info, write_study
 
 STEM = "step03_study_mipmaps"
 SAMPLERS = {"nearest": ("nearest", False, 1), "linear": ("linear", False, 1), "nearest + mipmaps": ("nearest", True, 1),
@@ -160,12 +161,10 @@ def run_study(backends, size, ss: int, frames: int, repeats: int) -> dict:
 
 
 def markdown(result: dict) -> str:
-    lines = ["| API | sampler | mean error (8-bit) | far half | near half | frame time (ms) |",
-             "|---|---|---:|---:|---:|---:|"]
-    for r in result["rows"]:
-        lines.append(f"| {r['backend']} | {r['sampler']} | {r['mean_error']:.2f} | {r['far_error']:.2f} | "
-                     f"{r['near_error']:.2f} | {r['frame_ms']:.2f} |")
-    return "\n".join(lines) + "\n"
+    return markdown_table(
+        ["API", "sampler", "mean error (8-bit)", "far half", "near half", "frame time (ms)"],
+        ([r["backend"], r["sampler"], f"{r['mean_error']:.2f}", f"{r['far_error']:.2f}", f"{r['near_error']:.2f}",
+          f"{r['frame_ms']:.2f}"] for r in result["rows"]), left=2)
 
 
 def plot(result: dict, path: Path) -> None:

@@ -31,7 +31,8 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import StudyParser, figure, frame_ms, label_axes, run_info, save_figure, write_study
+from gandalf_tools.plots import figure, label_axes, save_figure
+from gandalf_tools.studies import StudyParser, frame_ms, groups, markdown_table, run_info, write_study
 
 STEM = "step04_study_depth"
 #: (label, near, far, reverse_z)
@@ -183,26 +184,22 @@ def run_study(backends, mappings, per_decade: int, resolution: float, frames: in
 
 def markdown(result: dict) -> str:
     """One row per distance: the smallest clean separation per API and mapping, and the bound, as s / d."""
-    mappings = list(dict.fromkeys(r["mapping"] for r in result["rows"]))
     backends = list(dict.fromkeys(r["backend"] for r in result["rows"]))
-    lines = []
-    for mapping in mappings:
-        mine = [r for r in result["rows"] if r["mapping"] == mapping]
-        lines += [f"**{mapping}** (smallest clean separation s, and s / d)", "",
-                  "| d | " + " | ".join(backends) + " | float32 bound |",
-                  "|---:|" + "---:|" * (len(backends) + 1)]
-        for d in dict.fromkeys(r["distance"] for r in mine):
-            cells = []
-            for backend in backends:
-                row = next(r for r in mine if r["distance"] == d and r["backend"] == backend)
-                s = row["min_separation"]
-                cells.append("z-fights at every s" if s is None else f"{s:.2e} ({s / d:.1e})")
-            b = next(r for r in mine if r["distance"] == d)["bound"]
-            lines.append(f"| {d:.3g} | " + " | ".join(cells) + f" | {b:.2e} ({b / d:.1e}) |")
-        lines.append("")
-    lines += ["| API | mapping | frame time (ms) |", "|---|---|---:|"]
-    lines += [f"| {t['backend']} | {t['mapping']} | {t['frame_ms']:.2f} |" for t in result["timing"]]
-    return "\n".join(lines) + "\n"
+
+    def separation(s: float | None, d: float) -> str:
+        return "z-fights at every s" if s is None else f"{s:.2e} ({s / d:.1e})"
+
+    text = ""
+    for mapping, mine in groups(result["rows"], "mapping"):
+        rows = []
+        for d, at_d in groups(mine, "distance"):
+            by_backend = {r["backend"]: r for r in at_d}
+            rows.append([f"{d:.3g}", *(separation(by_backend[b]["min_separation"], d) for b in backends),
+                         f"{at_d[0]['bound']:.2e} ({at_d[0]['bound'] / d:.1e})"])
+        text += (f"**{mapping}** (smallest clean separation s, and s / d)\n\n"
+                 + markdown_table(["d", *backends, "float32 bound"], rows, left=0) + "\n")
+    timing = ([t["backend"], t["mapping"], f"{t['frame_ms']:.2f}"] for t in result["timing"])
+    return text + markdown_table(["API", "mapping", "frame time (ms)"], timing, left=2)
 
 
 def plot(result: dict, path: Path) -> None:

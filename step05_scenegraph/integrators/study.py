@@ -17,7 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import figure, label_axes, save_figure
+from gandalf_tools.plots import figure, label_axes, save_figure
 
 from ..solutions.integrators import rk4_step, semi_implicit_euler_step
 from .methods import (

@@ -28,7 +28,8 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import StudyParser, figure, label_axes, run_info, save_figure, write_study
+from gandalf_tools.plots import figure, label_axes, save_figure
+from gandalf_tools.studies import StudyParser, groups, markdown_table, run_info, write_study
 
 from ..custom_systems.fixed_step import FixedStep
 from ..solutions.integrators import semi_implicit_euler_step
@@ -112,18 +113,15 @@ def run_study(dts, max_steps_list, repeats: int, duration: float = DURATION) -> 
 
 
 def markdown(result: dict) -> str:
-    lines = ["| max_steps | dt (s) | largest error seen (m) | time dropped (s) | CPU ms per simulated second |",
-             "|---:|---:|---:|---:|---:|"]
-    for r in result["rows"]:
-        lines.append(f"| {r['max_steps']} | 1/{1 / r['dt']:.0f} | {r['max_error_m']:.2e} | {r['dropped_s']:.3f} | "
-                     f"{r['ms_per_simulated_second']:.3f} |")
-    return "\n".join(lines) + "\n"
+    return markdown_table(
+        ["max_steps", "dt (s)", "largest error seen (m)", "time dropped (s)", "CPU ms per simulated second"],
+        ([r["max_steps"], f"1/{1 / r['dt']:.0f}", f"{r['max_error_m']:.2e}", f"{r['dropped_s']:.3f}",
+          f"{r['ms_per_simulated_second']:.3f}"] for r in result["rows"]), left=0)
 
 
 def plot(result: dict, path: Path) -> None:
     fig, ax = figure(figsize=(6.4, 4.2))
-    for max_steps in dict.fromkeys(r["max_steps"] for r in result["rows"]):
-        mine = [r for r in result["rows"] if r["max_steps"] == max_steps]
+    for max_steps, mine in groups(result["rows"], "max_steps"):
         ax.loglog([r["ms_per_simulated_second"] for r in mine], [r["max_error_m"] for r in mine], "o-",
                   label=f"max_steps = {max_steps}", ms=4)
         for r in mine:

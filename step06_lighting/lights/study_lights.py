@@ -25,7 +25,8 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import StudyParser, figure, frame_ms, label_axes, run_info, save_figure, write_study
+from gandalf_tools.plots import figure, label_axes, save_figure
+from gandalf_tools.studies import StudyParser, frame_ms, groups, markdown_table, run_info, write_study
 
 STEM = "step06_study_lights"
 COUNTS = (0, 1, 2, 4, 8, 16, 32, 64)
@@ -115,18 +116,15 @@ def run_study(backends, counts, size, frames: int, repeats: int) -> dict:
 
 
 def markdown(result: dict) -> str:
-    lines = ["| API | lights kept | intensity kept | frame time (ms) | mean error (8-bit) | 99th percentile (8-bit) |",
-             "|---|---:|---:|---:|---:|---:|"]
-    for r in result["rows"]:
-        lines.append(f"| {r['backend']} | {r['lights']} | {100 * r['intensity_kept']:.0f} % | {r['frame_ms']:.2f} | "
-                     f"{r['mean_error_8bit']:.2f} | {r['p99_error_8bit']:.1f} |")
-    return "\n".join(lines) + "\n"
+    return markdown_table(
+        ["API", "lights kept", "intensity kept", "frame time (ms)", "mean error (8-bit)", "99th percentile (8-bit)"],
+        ([r["backend"], r["lights"], f"{100 * r['intensity_kept']:.0f} %", f"{r['frame_ms']:.2f}",
+          f"{r['mean_error_8bit']:.2f}", f"{r['p99_error_8bit']:.1f}"] for r in result["rows"]))
 
 
 def plot(result: dict, path: Path) -> None:
     fig, axes = figure(1, 2, figsize=(10.0, 4.0))
-    for backend in dict.fromkeys(r["backend"] for r in result["rows"]):
-        mine = [r for r in result["rows"] if r["backend"] == backend]
+    for backend, mine in groups(result["rows"], "backend"):
         axes[0].plot([r["lights"] for r in mine], [r["frame_ms"] for r in mine], "o-", ms=4, label=backend)
         partial = [r for r in mine if r["lights"] < result["total_lights"]]  # all of them: no error to plot
         axes[1].semilogy([r["frame_ms"] for r in partial], [max(r["mean_error_8bit"], 1e-3) for r in partial], "o-",

@@ -27,7 +27,8 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import StudyParser, figure, frame_ms, label_axes, run_info, save_figure, write_study
+from gandalf_tools.plots import figure, label_axes, save_figure
+from gandalf_tools.studies import StudyParser, frame_ms, groups, markdown_table, run_info, write_study
 
 STEM = "step06_study_mesh_resolution"
 SPHERES = ((6, 3), (8, 4), (12, 6), (16, 8), (24, 12), (32, 16), (64, 32), (128, 64), (256, 128))
@@ -151,18 +152,16 @@ def run_study(backends, spheres, size, instances: int, frames: int, repeats: int
 
 
 def markdown(result: dict) -> str:
-    lines = ["| API | segments × rings | triangles | silhouette error (px) | r(1 − cos π/segments) (px) "
-             "| shading error (8-bit) | frame time (ms) |", "|---|---:|---:|---:|---:|---:|---:|"]
-    for r in result["rows"]:
-        lines.append(f"| {r['backend']} | {r['segments']} × {r['rings']} | {r['triangles']} | {r['silhouette_px']:.3f}"
-                     f" | {r['polygon_bound_px']:.3f} | {r['shading_8bit']:.2f} | {r['frame_ms']:.2f} |")
-    return "\n".join(lines) + "\n"
+    return markdown_table(
+        ["API", "segments × rings", "triangles", "silhouette error (px)", "r(1 − cos π/segments) (px)",
+         "shading error (8-bit)", "frame time (ms)"],
+        ([r["backend"], f"{r['segments']} × {r['rings']}", r["triangles"], f"{r['silhouette_px']:.3f}",
+          f"{r['polygon_bound_px']:.3f}", f"{r['shading_8bit']:.2f}", f"{r['frame_ms']:.2f}"] for r in result["rows"]))
 
 
 def plot(result: dict, path: Path) -> None:
     fig, axes = figure(1, 2, figsize=(10.0, 4.0))
-    for backend in dict.fromkeys(r["backend"] for r in result["rows"]):
-        mine = [r for r in result["rows"] if r["backend"] == backend]
+    for backend, mine in groups(result["rows"], "backend"):
         for ax, key in zip(axes, ("silhouette_px", "shading_8bit")):
             ax.loglog([r["frame_ms"] for r in mine], [max(r[key], 1e-3) for r in mine], "o-", ms=4, label=backend)
             for r in mine:

@@ -26,7 +26,8 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import StudyParser, figure, frame_runs_ms, label_axes, save_figure, write_study
+from gandalf_tools.plots import figure, label_axes, save_figure
+from gandalf_tools.studies import StudyParser, frame_runs_ms, groups, markdown_table, write_study
 
 #: (segments, rings) of the UV spheres: 960, 3968, 16128, 65024 and 199808 triangles.
 SPHERES = ((32, 16), (64, 32), (128, 64), (256, 128), (448, 224))
@@ -137,19 +138,18 @@ def _finite(value: float) -> float | str:
 
 
 def format_table(rows: list[dict]) -> str:
-    lines = ["| route | triangles | frame time (ms, median) | silhouette box error (px) | PSNR to gl-geometry (dB) |",
-             "|---|---:|---:|---:|---:|"]
-    for r in rows:
-        p = r["psnr_to_gl_geometry_db"]
-        p_text = "—" if p is None else (p if isinstance(p, str) else f"{p:.1f}")
-        lines.append(f"| {r['route']} | {r['triangles']} | {r['frame_ms']:.2f} | {r['box_error_px']:.2f} | {p_text} |")
-    return "\n".join(lines) + "\n"
+    def psnr(p: float | str | None) -> str:
+        return "—" if p is None else (p if isinstance(p, str) else f"{p:.1f}")
+
+    return markdown_table(
+        ["route", "triangles", "frame time (ms, median)", "silhouette box error (px)", "PSNR to gl-geometry (dB)"],
+        ([r["route"], r["triangles"], f"{r['frame_ms']:.2f}", f"{r['box_error_px']:.2f}",
+          psnr(r["psnr_to_gl_geometry_db"])] for r in rows))
 
 
 def plot(rows: list[dict], path: Path, title: str) -> Path:
     fig, ax = figure(figsize=(6.4, 4.2))
-    for route in dict.fromkeys(r["route"] for r in rows):
-        mine = [r for r in rows if r["route"] == route]
+    for route, mine in groups(rows, "route"):
         ax.loglog([r["triangles"] for r in mine], [r["frame_ms"] for r in mine], "o-", label=route)
     label_axes(ax, "triangles", "frame time (ms, median)", title, legend=None)
     ax.legend()

@@ -26,7 +26,8 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import StudyParser, figure, run_info, save_figure, write_study
+from gandalf_tools.plots import figure, save_figure
+from gandalf_tools.studies import StudyParser, markdown_table, run_info, write_study
 
 from . import reference
 from .kernels import OPERATIONS
@@ -111,21 +112,21 @@ def run_study(backends: list[str], sizes: tuple[int, ...], radii: tuple[int, ...
 
 def markdown(result: dict) -> str:
     """One row per API, size and radius: time (ms) and max / RMS error (8-bit steps) of each method."""
-    head = "| API | size | radius | " + " | ".join(f"{m} ms | {m} max / rms" for m in METHODS) + " |"
-    lines = [head, "|" + "---|" * (3 + 2 * len(METHODS))]
+    header = ["API", "size", "radius", *(cell for m in METHODS for cell in (f"{m} ms", f"{m} max / rms"))]
     table: dict[tuple, dict] = {}
     for row in result["rows"]:
         table.setdefault((row["backend"], row["size"], row["radius"]), {})[row["method"]] = row
+    lines = []
     for (backend, size, radius), by_method in table.items():
-        cells = []
+        cells = [backend, f"{size}²", radius]
         for m in METHODS:
             row = by_method.get(m)
             if row is None or row.get("skipped"):
                 cells += ["—", "—"]
             else:
                 cells += [f"{row['time_ms']:.2f}", f"{row['max_error']:.2f} / {row['rms_error']:.2f}"]
-        lines.append(f"| {backend} | {size}² | {radius} | " + " | ".join(cells) + " |")
-    return "\n".join(lines) + "\n"
+        lines.append(cells)
+    return markdown_table(header, lines, left=len(header))
 
 
 def plot(result: dict, path: Path) -> None:

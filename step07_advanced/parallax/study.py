@@ -32,7 +32,7 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import figure, save_figure
+from gandalf_tools.plots import figure, save_figure
 
 from .reference import bilinear_sampler, march_np, parallax_offset_np
 from .scene import (

@@ -30,7 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import figure, save_figure
+from gandalf_tools.plots import figure, save_figure
 
 REFERENCE_SEED = 90210
 SEED = 1

@@ -31,7 +31,7 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import figure, save_figure
+from gandalf_tools.plots import figure, save_figure
 
 SAMPLES = (4, 8, 16, 32, 64, 128, 256, 512)
 QUICK_SAMPLES = (4, 8, 16, 32, 64)

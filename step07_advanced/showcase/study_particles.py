@@ -27,7 +27,8 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import StudyParser, figure, label_axes, run_info, save_figure, write_study
+from gandalf_tools.plots import figure, label_axes, save_figure
+from gandalf_tools.studies import StudyParser, groups, markdown_table, run_info, write_study
 
 from .particles import SimParams, particle_step_np
 
@@ -175,19 +176,15 @@ def run_study(backends, dts, particles: int, duration: float, repeats: int) -> d
 
 
 def markdown(result: dict) -> str:
-    lines = ["| backend | dt (s) | steps | max position error (m) | Euler bound g·dt·t/2 (m) "
-             "| ms per simulated second |",
-             "|---|---:|---:|---:|---:|---:|"]
-    for r in result["rows"]:
-        lines.append(f"| {r['backend']} | 1/{1 / r['dt']:.0f} | {r['steps']} | {r['max_error_m']:.2e} | "
-                     f"{r['predicted_error_m']:.2e} | {r['ms_per_simulated_second']:.2f} |")
-    return "\n".join(lines) + "\n"
+    return markdown_table(
+        ["backend", "dt (s)", "steps", "max position error (m)", "Euler bound g·dt·t/2 (m)", "ms per simulated second"],
+        ([r["backend"], f"1/{1 / r['dt']:.0f}", r["steps"], f"{r['max_error_m']:.2e}", f"{r['predicted_error_m']:.2e}",
+          f"{r['ms_per_simulated_second']:.2f}"] for r in result["rows"]))
 
 
 def plot(result: dict, path: Path) -> None:
     fig, ax = figure(figsize=(6.4, 4.2))
-    for backend in dict.fromkeys(r["backend"] for r in result["rows"]):
-        mine = [r for r in result["rows"] if r["backend"] == backend]
+    for backend, mine in groups(result["rows"], "backend"):
         ax.loglog([r["ms_per_simulated_second"] for r in mine], [r["max_error_m"] for r in mine], "o-",
                   label=backend, ms=4)
         for r in mine:

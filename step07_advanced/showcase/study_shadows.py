@@ -35,7 +35,8 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import StudyParser, figure, frame_ms, run_info, save_figure, write_study
+from gandalf_tools.plots import figure, save_figure
+from gandalf_tools.studies import StudyParser, frame_ms, markdown_table, run_info, write_study
 
 STEM = "step07_study_shadows"
 SHADER_DIR = Path(__file__).resolve().parent / "shaders"
@@ -184,13 +185,12 @@ def run_study(backends, sweeps, size, frames: int, repeats: int) -> dict:
 
 
 def markdown(result: dict) -> str:
-    lines = ["| API | knob | map size | taps | bias | wrong (% of the shadow) | false shadow (%) | missing shadow (%) "
-             "| frame time (ms) |", "|---|---|---:|---:|---:|---:|---:|---:|---:|"]
-    for r in result["rows"]:
-        lines.append(f"| {r['backend']} | {r['knob']} | {r['map_size']} | {r['taps']} | {r['bias']:g} | "
-                     f"{100 * r['wrong_share']:.2f} | {100 * r['false_shadow_share']:.2f} | "
-                     f"{100 * r['missing_shadow_share']:.2f} | {r['frame_ms']:.2f} |")
-    return "\n".join(lines) + "\n"
+    return markdown_table(
+        ["API", "knob", "map size", "taps", "bias", "wrong (% of the shadow)", "false shadow (%)", "missing shadow (%)",
+         "frame time (ms)"],
+        ([r["backend"], r["knob"], r["map_size"], r["taps"], f"{r['bias']:g}", f"{100 * r['wrong_share']:.2f}",
+          f"{100 * r['false_shadow_share']:.2f}", f"{100 * r['missing_shadow_share']:.2f}", f"{r['frame_ms']:.2f}"]
+         for r in result["rows"]), left=2)
 
 
 def plot(result: dict, path: Path) -> None:

@@ -35,7 +35,7 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import figure, save_figure
+from gandalf_tools.plots import figure, save_figure
 
 LEVELS = (1, 2, 4, 8, 16, 32, 64)
 QUICK_LEVELS = (1, 4, 16)
