@@ -12,14 +12,8 @@ import numpy as np
 import pytest
 from core_shaders import build_shaders
 
-from gandalf_core import Application, LinkComponent, Scene
-from gandalf_core.components import (
-    CameraComponent,
-    ClearColorComponent,
-    MaterialComponent,
-    MeshComponent,
-    TransformComponent,
-)
+from gandalf_core import Application, ClearColorComponent, LinkComponent, Scene, TransformComponent
+from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import invert_affine, look_at, look_at_rotation, quat_from_euler, trs
 from gandalf_core.render import RenderSystem
 from gandalf_core.resources import MaterialData, checkerboard, cube, plane

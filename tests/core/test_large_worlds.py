@@ -14,14 +14,8 @@ import numpy as np
 import pytest
 from core_shaders import build_shaders
 
-from gandalf_core import Application, Scene
-from gandalf_core.components import (
-    CameraComponent,
-    LightComponent,
-    MaterialComponent,
-    MeshComponent,
-    TransformComponent,
-)
+from gandalf_core import Application, Scene, TransformComponent
+from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.render.frame import TIME_WRAP, pack_frame
 from gandalf_core.resources import MaterialData, cube, plane, uv_sphere

@@ -13,16 +13,8 @@ import numpy as np
 import pytest
 from core_shaders import SHADERS, build_shaders
 
-from gandalf_core import Application, Scene
-from gandalf_core.components import (
-    CameraComponent,
-    ClearColorComponent,
-    LightComponent,
-    MaterialComponent,
-    MeshComponent,
-    SkyboxComponent,
-    TransformComponent,
-)
+from gandalf_core import Application, ClearColorComponent, Scene, TransformComponent
+from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent, SkyboxComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.render.errors import MissingResourceError, ShaderCompileError
 from gandalf_core.resources import MaterialData, checkerboard, cube, sky_cube, uv_sphere

@@ -12,14 +12,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from gandalf_core import Scene
-from gandalf_core.components import (
-    CameraComponent,
-    MaterialComponent,
-    MeshComponent,
-    SkyboxComponent,
-    TransformComponent,
-)
+from gandalf_core import Scene, TransformComponent
+from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent, SkyboxComponent
 from gandalf_core.render.errors import MissingResourceError
 from gandalf_core.resources import MaterialData, ResourceError, checkerboard, cube, sky_cube
 from gandalf_core.resources.assets import Assets
