@@ -18,6 +18,35 @@ FILES = {
     "flat": ("unlit.vert", "flat.frag", "flat.wgsl"),
 }
 
+#: A probe shader per API with a colour, a vec4 'tint' and a mat4 'm' (the same values in GLSL uniforms and WGSL):
+#: it draws color.rgb * tint.rgb + (0, 0, m[1][0]) at the material's alpha.
+FLAT_WGSL = """
+#include "frame.wgsl"
+#include "instance.wgsl"
+struct Material { color: vec4<f32>, tint: vec4<f32>, m: mat4x4<f32> };
+@group(1) @binding(0) var<uniform> material: Material;
+@vertex fn vs_main(@location(0) position: vec3<f32>, inst: Instance) -> @builtin(position) vec4<f32> {
+    return frame.projection * frame.view * instance_model(inst) * vec4<f32>(position, 1.0);
+}
+@fragment fn fs_main() -> @location(0) vec4<f32> {
+    return vec4<f32>(material.color.rgb * material.tint.rgb + vec3<f32>(0.0, 0.0, material.m[1].x),
+                     material.color.a);
+}
+"""
+FLAT_VERT = """#version 330 core
+#include "frame.glsl"
+#include "instance.glsl"
+layout(location = 0) in vec3 a_position;
+void main() { gl_Position = u_projection * u_view * instance_model() * vec4(a_position, 1.0); }
+"""
+FLAT_FRAG = """#version 330 core
+layout(std140) uniform Material { vec4 color; vec4 tint; mat4 m; } material;
+out vec4 f_color;
+void main() {
+    f_color = vec4(material.color.rgb * material.tint.rgb + vec3(0.0, 0.0, material.m[1].x), material.color.a);
+}
+"""
+
 
 def build_shaders(shaders: Any, backend: str, *names: str) -> None:
     """Build each of ``names`` (keys of :data:`FILES`) in a renderer's shader library ``shaders`` for ``backend``:

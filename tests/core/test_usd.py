@@ -22,15 +22,7 @@ from gandalf_core import ClearColorComponent, InfoComponent, LinkComponent, Scen
 from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent, SkyboxComponent
 from gandalf_core.ecs import Component
 from gandalf_core.math import look_at_rotation
-from gandalf_core.resources import (
-    MaterialData,
-    MeshData,
-    TextureData,
-    checkerboard,
-    cube,
-    sky_cube,
-    uv_sphere,
-)
+from gandalf_core.resources import MaterialData, MeshData, TextureData, checkerboard, cube, sky_cube, uv_sphere
 from step07_advanced.usd import (
     USDSceneError,
     USDSceneWarning,

@@ -19,14 +19,7 @@ from light_reference import incoming, radiance, to_srgb8
 from gandalf_core import Application, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
-from gandalf_core.resources import (
-    MaterialData,
-    MeshData,
-    TextureData,
-    sky_cube,
-    srgb_to_linear,
-    uv_sphere,
-)
+from gandalf_core.resources import MaterialData, MeshData, TextureData, sky_cube, srgb_to_linear, uv_sphere
 from gandalf_tools import testing
 
 REFERENCES = Path(__file__).resolve().parent / "references"
