@@ -1,6 +1,6 @@
-"""What the benchmark scripts share: one fresh process per configuration, peak memory, the sky's PNG faces and the
-grid the models stand on. A script imports it by name (``python benchmarks/<script>.py`` puts this folder on the
-path)."""
+"""What the benchmark scripts share: the paper's scenes, one fresh process per configuration, peak memory, the sky's
+PNG faces and the grid the models stand on. A script imports it by name (``python benchmarks/<script>.py`` puts
+this folder on the path)."""
 
 from __future__ import annotations
 
@@ -14,6 +14,16 @@ from typing import Any
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
+SHADERS = HERE / "shaders"
+BACKENDS = ("opengl", "webgpu")
+#: scene -> (models, whether they rotate): the paper's scenes 1-5
+PAPER_SCENES: dict[str, tuple[int, bool]] = {
+    "scene1": (1, False),
+    "scene2": (10, False),
+    "scene3": (50, False),
+    "scene4": (50, True),
+    "scene5": (100, True),
+}
 
 
 def run_child(script: str, cfg: dict[str, Any], failure: dict[str, Any]) -> dict[str, Any] | None:

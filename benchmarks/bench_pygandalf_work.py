@@ -1,6 +1,6 @@
 """The pyGANDALF comparison work, exactly: the paper's five scenes with a skybox, per API, fps and peak memory.
 
-The work (the same as the side-by-side runs with pyGANDALF described in issue 13 and DESIGN.md):
+The work (the same as the side-by-side runs with pyGANDALF described in DESIGN.md):
 
 * scenes 1-5 of the paper: 1, 10, 50, 50 rotating and 100 rotating models;
 * a skybox from six 2048² images (PNG files, decoded by the engine: ``CubeTextureData.from_files``);
@@ -37,22 +37,12 @@ import time
 from pathlib import Path
 from typing import Any
 
-from bench_common import HERE, ROOT, grid_positions, rss_mb, run_child, sky_files
+from bench_common import BACKENDS, PAPER_SCENES, ROOT, SHADERS, grid_positions, rss_mb, run_child, sky_files
 
-SHADERS = HERE / "shaders"
-
-#: scene -> (models, rotating): the paper's scenes 1-5
-SCENES: dict[str, tuple[int, bool]] = {
-    "scene1": (1, False),
-    "scene2": (10, False),
-    "scene3": (50, False),
-    "scene4": (50, True),
-    "scene5": (100, True),
-}
-BACKENDS = ("opengl", "webgpu")
+SCENES = PAPER_SCENES
 MODELS = ("small", "large")
 
-#: pyGANDALF on a machine like ours (llvmpipe/lavapipe, 1280x720 window under Xvfb, median of 3), from issue 13
+#: pyGANDALF on a machine like ours (llvmpipe/lavapipe, 1280x720 window under Xvfb, median of 3), measured side by side
 REF_FPS: dict[tuple[str, str], dict[str, float]] = {
     ("opengl", "small"): {"scene1": 34.9, "scene2": 28.6, "scene3": 14.9, "scene4": 20.4, "scene5": 13.3},
     ("webgpu", "small"): {"scene1": 33.6, "scene2": 24.4, "scene3": 20.3, "scene4": 26.0, "scene5": 20.6},

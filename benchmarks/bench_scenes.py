@@ -56,22 +56,15 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-from bench_common import HERE, ROOT, grid_positions, rss_mb, run_child
+from bench_common import BACKENDS, PAPER_SCENES, ROOT, SHADERS, grid_positions, rss_mb, run_child
 
-SHADERS = HERE / "shaders"
-
-#: scene name -> (number of models, whether they rotate)
+#: scene name -> (number of models, whether they rotate): the paper's scenes, then many rotating cubes
 SCENES: dict[str, tuple[int, bool]] = {
-    "scene1": (1, False),
-    "scene2": (10, False),
-    "scene3": (50, False),
-    "scene4": (50, True),
-    "scene5": (100, True),
+    **PAPER_SCENES,
     "cubes1k": (1_000, True),
     "cubes10k": (10_000, True),
     "cubes100k": (100_000, True),
 }
-BACKENDS = ("opengl", "webgpu")
 MODELS = ("cube", "sphere")
 ROTATE_MODES = ("batch", "entity", "angle")
 SYNC_MODES = ("pixel", "full", "none")
