@@ -1,6 +1,6 @@
 """The pyGANDALF comparison work, exactly: the paper's five scenes with a skybox, per API, fps and peak memory.
 
-The work (the same as the side-by-side runs with pyGANDALF described in issue 13 and DESIGN.md):
+The work (the same as the side-by-side runs with pyGANDALF described in DESIGN.md):
 
 * scenes 1-5 of the paper: 1, 10, 50, 50 rotating and 100 rotating models;
 * a skybox from six 2048² images (PNG files, decoded by the engine: ``CubeTextureData.from_files``);
@@ -31,30 +31,18 @@ import json
 import math
 import os
 import platform
-import resource
 import statistics
-import subprocess
 import sys
 import time
 from pathlib import Path
 from typing import Any
 
-HERE = Path(__file__).resolve().parent
-ROOT = HERE.parent
-SHADERS = HERE / "shaders"
+from bench_common import BACKENDS, PAPER_SCENES, ROOT, SHADERS, grid_positions, rss_mb, run_child, sky_files
 
-#: scene -> (models, rotating): the paper's scenes 1-5
-SCENES: dict[str, tuple[int, bool]] = {
-    "scene1": (1, False),
-    "scene2": (10, False),
-    "scene3": (50, False),
-    "scene4": (50, True),
-    "scene5": (100, True),
-}
-BACKENDS = ("opengl", "webgpu")
+SCENES = PAPER_SCENES
 MODELS = ("small", "large")
 
-#: pyGANDALF on a machine like ours (llvmpipe/lavapipe, 1280x720 window under Xvfb, median of 3), from issue 13
+#: pyGANDALF on a machine like ours (llvmpipe/lavapipe, 1280x720 window under Xvfb, median of 3), measured side by side
 REF_FPS: dict[tuple[str, str], dict[str, float]] = {
     ("opengl", "small"): {"scene1": 34.9, "scene2": 28.6, "scene3": 14.9, "scene4": 20.4, "scene5": 13.3},
     ("webgpu", "small"): {"scene1": 33.6, "scene2": 24.4, "scene3": 20.3, "scene4": 26.0, "scene5": 20.6},
@@ -66,32 +54,6 @@ REF_RSS: dict[tuple[str, str], float] = {("opengl", "small"): 437.0, ("webgpu", 
                                          ("opengl", "large"): 692.0, ("webgpu", "large"): 692.0}
 
 
-def rss_mb() -> float:
-    rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
-    return round(rss / (1024 * 1024 if sys.platform == "darwin" else 1024), 1)
-
-
-def sky_files(cache: Path, size: int) -> list[Path]:
-    """Six ``size``² PNG faces of a sky (with a little noise, so they are real-sized files), written once."""
-    import numpy as np
-    from PIL import Image
-
-    from gandalf_core.resources import sky_cube
-
-    cache.mkdir(parents=True, exist_ok=True)
-    paths = [cache / f"sky{size}_{face}.png" for face in ("px", "nx", "py", "ny", "pz", "nz")]
-    if all(p.is_file() for p in paths):
-        return paths
-    base = sky_cube(min(size, 256))
-    rng = np.random.default_rng(7)
-    for path, face in zip(paths, base.faces):
-        arr = np.asarray(Image.fromarray(face).resize((size, size), Image.BILINEAR)).copy()
-        noise = rng.integers(-3, 4, arr[..., :3].shape)
-        arr[..., :3] = np.clip(arr[..., :3].astype(np.int16) + noise, 0, 255)
-        Image.fromarray(arr.astype(np.uint8)).save(path, compress_level=1)
-    return paths
-
-
 def model_mesh(model: str) -> Any:
     """The small model: a 48-triangle sphere; the large one: a 70,000-triangle torus."""
     from gandalf_core.resources import primitives
@@ -99,14 +61,6 @@ def model_mesh(model: str) -> Any:
     if model == "small":
         return primitives.uv_sphere(0.6, 8, 4)
     return primitives.torus(0.45, 0.18, 350, 100)
-
-
-def grid_positions(n: int) -> Any:
-    import numpy as np
-
-    g = math.ceil(round(n ** (1.0 / 3.0), 9))
-    i = np.arange(n)
-    return np.stack([(i % g) - (g - 1) / 2, (i // g % g) - (g - 1) / 2, -(i // (g * g)) - 2.0], 1) * 1.8
 
 
 # ------------------------------------------------------------------------------------------------
@@ -297,16 +251,12 @@ def main(argv: list[str] | None = None) -> int:
         cfg = {"backend": backend, "scene": scene, "model": model, "size": list(size), "frames": frames,
                "warmup": warmup, "max_seconds": max_seconds, "sky": sky, "sky_size": sky_size,
                "offscreen": offscreen, "repeat": rep, "png": args.png}
-        proc = subprocess.run([sys.executable, str(Path(__file__).resolve()), "--child", json.dumps(cfg)],
-                              cwd=ROOT, stdout=subprocess.PIPE, text=True)
-        lines = [ln for ln in proc.stdout.splitlines() if ln.startswith("{")]
-        if proc.returncode != 0 or not lines:
+        record = run_child(__file__, cfg, {"bench": "pygandalf-work", "backend": backend, "scene": scene,
+                                           "model": model})
+        if record is None:
             failures += 1
-            print(json.dumps({"bench": "pygandalf-work", "backend": backend, "scene": scene, "model": model,
-                              "error": f"child exited with {proc.returncode}"}), flush=True)
             continue
-        print(lines[-1], flush=True)
-        records.append(json.loads(lines[-1]))
+        records.append(record)
     for line in summarize(records):
         print(json.dumps(line), flush=True)
     return 1 if failures else 0

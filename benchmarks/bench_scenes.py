@@ -50,31 +50,21 @@ import json
 import math
 import os
 import platform
-import resource
-import subprocess
 import sys
 import time
 from pathlib import Path
 from typing import Any
 
 import numpy as np
+from bench_common import BACKENDS, PAPER_SCENES, ROOT, SHADERS, grid_positions, rss_mb, run_child
 
-HERE = Path(__file__).resolve().parent
-ROOT = HERE.parent
-SHADERS = HERE / "shaders"
-
-#: scene name -> (number of models, whether they rotate)
+#: scene name -> (number of models, whether they rotate): the paper's scenes, then many rotating cubes
 SCENES: dict[str, tuple[int, bool]] = {
-    "scene1": (1, False),
-    "scene2": (10, False),
-    "scene3": (50, False),
-    "scene4": (50, True),
-    "scene5": (100, True),
+    **PAPER_SCENES,
     "cubes1k": (1_000, True),
     "cubes10k": (10_000, True),
     "cubes100k": (100_000, True),
 }
-BACKENDS = ("opengl", "webgpu")
 MODELS = ("cube", "sphere")
 ROTATE_MODES = ("batch", "entity", "angle")
 SYNC_MODES = ("pixel", "full", "none")
@@ -83,13 +73,6 @@ SYNC_MODES = ("pixel", "full", "none")
 # ------------------------------------------------------------------------------------------------
 # The scene (runs in the child process)
 # ------------------------------------------------------------------------------------------------
-def grid_positions(n: int) -> np.ndarray:
-    """``n`` positions on a cubic grid of spacing 1.8 in front of the camera (same layout as raw_ceiling.py)."""
-    g = math.ceil(round(n ** (1.0 / 3.0), 9))
-    i = np.arange(n)
-    return np.stack([(i % g) - (g - 1) / 2, (i // g % g) - (g - 1) / 2, -(i // (g * g)) - 2.0], 1) * 1.8
-
-
 def build_scene(n: int, rotating: bool, model: str, rotate_mode: str, spawn: str = "bulk") -> tuple[Any, Any]:
     """The benchmark scene and its model's MeshData: ``n`` lit models on a grid, a camera that sees them all."""
     from gandalf_core import Component, Scene, System, TransformComponent
@@ -343,8 +326,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
     }
     app.close()
     # Linux reports ru_maxrss in KiB (macOS in bytes).
-    rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
-    record["peak_rss_mb"] = round(rss / (1024 * 1024 if sys.platform == "darwin" else 1024), 1)
+    record["peak_rss_mb"] = rss_mb()
     return record
 
 
@@ -418,15 +400,8 @@ def main(argv: list[str] | None = None) -> int:
         cfg = {"backend": backend, "scene": scene, "size": size, "frames": frames, "warmup": warmup,
                "max_seconds": args.max_seconds, "model": args.model, "rotate": args.rotate,
                "sync": args.sync, "profile": args.profile, "png": args.png, "spawn": args.spawn}
-        proc = subprocess.run([sys.executable, str(Path(__file__).resolve()), "--child", json.dumps(cfg)],
-                              cwd=ROOT, stdout=subprocess.PIPE, text=True)
-        lines = [ln for ln in proc.stdout.splitlines() if ln.startswith("{")]
-        if proc.returncode != 0 or not lines:
+        if run_child(__file__, cfg, {"bench": "gandalf-scenes", "backend": backend, "scene": scene}) is None:
             failures += 1
-            print(json.dumps({"bench": "gandalf-scenes", "backend": backend, "scene": scene,
-                              "error": f"child exited with {proc.returncode}"}), flush=True)
-            continue
-        print(lines[-1], flush=True)
     return 1 if failures else 0
 
 

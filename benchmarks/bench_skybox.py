@@ -15,47 +15,15 @@ from __future__ import annotations
 
 import argparse
 import json
-import resource
-import subprocess
 import sys
 import time
 from pathlib import Path
 from typing import Any
 
-HERE = Path(__file__).resolve().parent
-ROOT = HERE.parent
+from bench_common import HERE, ROOT, rss_mb, run_child, sky_files
 
 
-def rss_mb() -> float:
-    """Peak resident set size of this process so far, in MiB (Linux reports KiB, macOS bytes)."""
-    rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
-    return round(rss / (1024 * 1024 if sys.platform == "darwin" else 1024), 1)
-
-
-def face_files(cache: Path, size: int) -> list[Path]:
-    """Six PNG faces of ``size``² (a sky with noise, so PNG cannot compress them away), written once."""
-    import numpy as np
-    from PIL import Image
-
-    from gandalf_core.resources import CUBE_FACE_NAMES, sky_cube
-
-    cache.mkdir(parents=True, exist_ok=True)
-    names = ["px", "nx", "py", "ny", "pz", "nz"]
-    paths = [cache / f"sky{size}_{n}.png" for n in names]
-    if all(p.is_file() for p in paths):
-        return paths
-    base = sky_cube(min(size, 256))
-    rng = np.random.default_rng(7)
-    for path, face in zip(paths, base.faces):
-        img = Image.fromarray(face).resize((size, size), Image.BILINEAR)
-        arr = np.asarray(img).copy()
-        arr[..., :3] = np.clip(arr[..., :3].astype(np.int16) + rng.integers(-3, 4, arr[..., :3].shape), 0, 255)
-        Image.fromarray(arr.astype(np.uint8)).save(path, compress_level=1)
-    assert len(CUBE_FACE_NAMES) == 6
-    return paths
-
-
-def run_child(cfg: dict[str, Any]) -> dict[str, Any]:
+def child(cfg: dict[str, Any]) -> dict[str, Any]:
     import numpy as np
 
     from gandalf_core import Application, Scene, TransformComponent
@@ -123,25 +91,18 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--child", default=None, help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.child is not None:
-        print(json.dumps(run_child(json.loads(args.child))), flush=True)
+        print(json.dumps(child(json.loads(args.child))), flush=True)
         return 0
     width, height = (int(v) for v in args.window.lower().split("x"))
     print(f"# writing/reading six {args.size}² faces in {args.cache}", file=sys.stderr, flush=True)
-    faces = [str(p) for p in face_files(Path(args.cache), args.size)]
+    faces = [str(p) for p in sky_files(Path(args.cache), args.size)]
     failures = 0
     for backend in [b.strip() for b in args.backends.split(",") if b.strip()]:
         print(f"# {backend} ...", file=sys.stderr, flush=True)
         cfg = {"backend": backend, "faces": faces, "size": args.size, "window": [width, height],
                "frames": args.frames}
-        proc = subprocess.run([sys.executable, str(Path(__file__).resolve()), "--child", json.dumps(cfg)],
-                              cwd=ROOT, stdout=subprocess.PIPE, text=True)
-        lines = [ln for ln in proc.stdout.splitlines() if ln.startswith("{")]
-        if proc.returncode != 0 or not lines:
+        if run_child(__file__, cfg, {"bench": "gandalf-skybox", "backend": backend}) is None:
             failures += 1
-            print(json.dumps({"bench": "gandalf-skybox", "backend": backend,
-                              "error": f"child exited with {proc.returncode}"}), flush=True)
-            continue
-        print(lines[-1], flush=True)
     return 1 if failures else 0
 
 

@@ -10,32 +10,18 @@ The engine imports no ImGui, USD, course step or tool: the editor and USD scenes
 
 from __future__ import annotations
 
-import importlib
-from typing import Any
-
 from .components import ClearColorComponent, InfoComponent, LinkComponent, TransformComponent
 from .ecs import Component, Scene, SceneManager, System
+from .lazy import lazy_attributes
 
 __version__ = "0.1.0"
 
 # name -> module that defines it, imported on first access
-_LAZY = {"Application": ".app", "TransformSystem": ".systems"}
+_LAZY = {"Application": "app", "TransformSystem": "systems"}
 _SUBPACKAGES = ("app", "components", "ecs", "math", "render", "resources", "systems")
 
 
-def __getattr__(name: str) -> Any:
-    if name in _LAZY:
-        value = getattr(importlib.import_module(_LAZY[name], __name__), name)
-    elif name in _SUBPACKAGES:
-        value = importlib.import_module(f".{name}", __name__)
-    else:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    globals()[name] = value
-    return value
-
-
-def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(_LAZY) | set(_SUBPACKAGES))
+__getattr__, __dir__ = lazy_attributes(__name__, _LAZY, _SUBPACKAGES)
 
 
 __all__ = [

@@ -8,11 +8,10 @@ Compare with ``clear_wgpu.py``: the picture is the same, the route is not.
 
 from __future__ import annotations
 
-import argparse
-
 import moderngl
 import numpy as np
-from PIL import Image
+
+from gandalf_tools import lesson
 
 #: The clear colour, linear RGBA; 0.2, 0.4 and 0.8 are exact multiples of 1/255 (51, 102, 204).
 COLOR = (0.2, 0.4, 0.8, 1.0)
@@ -31,19 +30,11 @@ def render(width: int = 64, height: int = 48, color: tuple = COLOR) -> np.ndarra
     finally:
         ctx.release()
     # --8<-- [end:frame]
-    image = np.frombuffer(pixels, dtype=np.uint8).reshape(height, width, 4)
-    return image[::-1].copy()  # OpenGL's rows start at the bottom
+    return lesson.image(pixels, width, height, bottom_up=True)  # OpenGL's rows start at the bottom
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default="clear_gl.png", help="PNG file to write (default: clear_gl.png)")
-    parser.add_argument("--size", default="640x480", help="WIDTHxHEIGHT (default: 640x480)")
-    args = parser.parse_args(argv)
-    width, height = (int(v) for v in args.size.lower().split("x"))
-    Image.fromarray(render(width, height)).save(args.out)
-    print(f"wrote {args.out}")
-    return 0
+    return lesson.main(render, __doc__, "clear_gl.png", argv=argv)
 
 
 if __name__ == "__main__":

@@ -9,11 +9,10 @@ Compare with ``clear_gl.py``: the picture is the same, the route is not.
 
 from __future__ import annotations
 
-import argparse
-
 import numpy as np
 import wgpu
-from PIL import Image
+
+from gandalf_tools import lesson
 
 #: The clear colour, linear RGBA; 0.2, 0.4 and 0.8 are exact multiples of 1/255 (51, 102, 204).
 COLOR = (0.2, 0.4, 0.8, 1.0)
@@ -38,18 +37,11 @@ def render(width: int = 64, height: int = 48, color: tuple = COLOR) -> np.ndarra
                                        (width, height, 1))
     device.destroy()
     # --8<-- [end:frame]
-    return np.frombuffer(pixels, dtype=np.uint8).reshape(height, width, 4).copy()  # rows top-down
+    return lesson.image(pixels, width, height, bottom_up=False)  # rows top-down
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default="clear_wgpu.png", help="PNG file to write (default: clear_wgpu.png)")
-    parser.add_argument("--size", default="640x480", help="WIDTHxHEIGHT (default: 640x480)")
-    args = parser.parse_args(argv)
-    width, height = (int(v) for v in args.size.lower().split("x"))
-    Image.fromarray(render(width, height)).save(args.out)
-    print(f"wrote {args.out}")
-    return 0
+    return lesson.main(render, __doc__, "clear_wgpu.png", argv=argv)
 
 
 if __name__ == "__main__":

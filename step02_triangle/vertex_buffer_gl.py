@@ -9,11 +9,10 @@ offset and a shader *location*, fixed in the pipeline.
 
 from __future__ import annotations
 
-import argparse
-
 import moderngl
 import numpy as np
-from PIL import Image
+
+from gandalf_tools import lesson
 
 #: x, y, r, g, b per vertex, counter-clockwise.
 VERTICES = np.array([
@@ -55,18 +54,11 @@ def render(width: int = 64, height: int = 64) -> np.ndarray:
         pixels = fbo.read(components=4)
     finally:
         ctx.release()
-    return np.frombuffer(pixels, dtype=np.uint8).reshape(height, width, 4)[::-1].copy()
+    return lesson.image(pixels, width, height, bottom_up=True)
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default="vertex_buffer_gl.png", help="PNG file to write")
-    parser.add_argument("--size", default="640x480", help="WIDTHxHEIGHT (default: 640x480)")
-    args = parser.parse_args(argv)
-    width, height = (int(v) for v in args.size.lower().split("x"))
-    Image.fromarray(render(width, height)).save(args.out)
-    print(f"wrote {args.out}")
-    return 0
+    return lesson.main(render, __doc__, "vertex_buffer_gl.png", argv=argv)
 
 
 if __name__ == "__main__":

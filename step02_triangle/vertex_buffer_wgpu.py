@@ -8,11 +8,10 @@ Compare with ``vertex_buffer_gl.py``, where the layout is a format string and in
 
 from __future__ import annotations
 
-import argparse
-
 import numpy as np
 import wgpu
-from PIL import Image
+
+from gandalf_tools import lesson
 
 #: x, y, r, g, b per vertex, counter-clockwise.
 VERTICES = np.array([
@@ -60,18 +59,11 @@ def render(width: int = 64, height: int = 64) -> np.ndarray:
     pixels = device.queue.read_texture({"texture": target}, {"bytes_per_row": 4 * width, "rows_per_image": height},
                                        (width, height, 1))
     device.destroy()
-    return np.frombuffer(pixels, dtype=np.uint8).reshape(height, width, 4).copy()
+    return lesson.image(pixels, width, height, bottom_up=False)
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default="vertex_buffer_wgpu.png", help="PNG file to write")
-    parser.add_argument("--size", default="640x480", help="WIDTHxHEIGHT (default: 640x480)")
-    args = parser.parse_args(argv)
-    width, height = (int(v) for v in args.size.lower().split("x"))
-    Image.fromarray(render(width, height)).save(args.out)
-    print(f"wrote {args.out}")
-    return 0
+    return lesson.main(render, __doc__, "vertex_buffer_wgpu.png", argv=argv)
 
 
 if __name__ == "__main__":

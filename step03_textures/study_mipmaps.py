@@ -25,12 +25,12 @@ Runs headless and prints progress.
 
 from __future__ import annotations
 
-import argparse
 from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import frame_ms, pyplot, run_info, write_study
+from gandalf_tools.plots import figure, label_axes, save_figure
+from gandalf_tools.studies import StudyParser, frame_ms, markdown_table, run_info, write_study
 
 STEM = "step03_study_mipmaps"
 SAMPLERS = {"nearest": ("nearest", False, 1), "linear": ("linear", False, 1), "nearest + mipmaps": ("nearest", True, 1),
@@ -161,52 +161,38 @@ def run_study(backends, size, ss: int, frames: int, repeats: int) -> dict:
 
 
 def markdown(result: dict) -> str:
-    lines = ["| API | sampler | mean error (8-bit) | far half | near half | frame time (ms) |",
-             "|---|---|---:|---:|---:|---:|"]
-    for r in result["rows"]:
-        lines.append(f"| {r['backend']} | {r['sampler']} | {r['mean_error']:.2f} | {r['far_error']:.2f} | "
-                     f"{r['near_error']:.2f} | {r['frame_ms']:.2f} |")
-    return "\n".join(lines) + "\n"
+    return markdown_table(
+        ["API", "sampler", "mean error (8-bit)", "far half", "near half", "frame time (ms)"],
+        ([r["backend"], r["sampler"], f"{r['mean_error']:.2f}", f"{r['far_error']:.2f}", f"{r['near_error']:.2f}",
+          f"{r['frame_ms']:.2f}"] for r in result["rows"]), left=2)
 
 
 def plot(result: dict, path: Path) -> None:
-    plt = pyplot()
-    fig, ax = plt.subplots(figsize=(8.4, 4.2), dpi=100)
+    fig, ax = figure(figsize=(8.4, 4.2))
     markers = {"opengl": "o", "webgpu": "s"}
     colours = dict(zip(SAMPLERS, ("tab:red", "tab:orange", "tab:blue", "tab:green", "tab:purple", "tab:brown")))
     for r in result["rows"]:
         ax.scatter(r["frame_ms"], r["mean_error"], marker=markers[r["backend"]], color=colours[r["sampler"]],
                    label=f"{r['backend']}: {r['sampler']}")
     ax.set_yscale("log")
-    ax.set_xlabel("frame time (ms, median)")
-    ax.set_ylabel("mean error against the box-filtered reference (8-bit)")
-    ax.set_title(f"Checkerboard floor at a grazing angle, {result['size'][0]}×{result['size'][1]}", fontsize=10)
-    ax.grid(True, which="both", alpha=0.3)
+    label_axes(ax, "frame time (ms, median)", "mean error against the box-filtered reference (8-bit)",
+               f"Checkerboard floor at a grazing angle, {result['size'][0]}×{result['size'][1]}", legend=None)
     ax.legend(fontsize=7, bbox_to_anchor=(1.02, 1.0), loc="upper left")
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    save_figure(fig, path)
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m step03_textures.study_mipmaps", description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--out", type=Path, default=Path("out"), help=f"folder for {STEM}.json/.md/.png")
-    parser.add_argument("--backends", nargs="+", choices=("opengl", "webgpu"), default=["opengl", "webgpu"])
-    parser.add_argument("--quick", action="store_true", help="96x72 pixels, 8x8 reference rays, fewer frames")
-    parser.add_argument("--size", type=int, nargs=2, default=None, metavar=("W", "H"), help="default 320 240")
+    parser = StudyParser("step03_textures.study_mipmaps", __doc__, outputs=f"{STEM}.json/.md/.png",
+                         quick="96x72 pixels, 8x8 reference rays, fewer frames", size=((320, 240), (96, 72)),
+                         frames=(20, 3), repeats=(5, 2))
     parser.add_argument("--ss", type=int, default=None, help="reference rays per pixel side (default 16, quick 8)")
-    parser.add_argument("--frames", type=int, default=None, help="frames per timed run (default 20, quick 3)")
-    parser.add_argument("--repeats", type=int, default=None, help="timed runs per case (default 5, quick 2)")
     args = parser.parse_args(argv)
-    size = tuple(args.size) if args.size else ((96, 72) if args.quick else (320, 240))
     ss = args.ss or (8 if args.quick else 16)
-    frames = args.frames or (3 if args.quick else 20)
-    repeats = args.repeats or (2 if args.quick else 5)
-    if min(frames, repeats, ss, *size) < 1:
-        parser.error("--size, --ss, --frames and --repeats must be at least 1")
-    print(f"mipmap study: {len(SAMPLERS)} samplers, {', '.join(args.backends)}, {size[0]}x{size[1]}", flush=True)
-    result = run_study(args.backends, (int(size[0]), int(size[1])), ss, frames, repeats)
+    if ss < 1:
+        parser.error("--ss must be at least 1")
+    print(f"mipmap study: {len(SAMPLERS)} samplers, {', '.join(args.backends)}, {args.size[0]}x{args.size[1]}",
+          flush=True)
+    result = run_study(args.backends, args.size, ss, args.frames, args.repeats)
     write_study(args.out, STEM, result, markdown(result), plot)
     return 0
 

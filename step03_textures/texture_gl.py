@@ -8,11 +8,10 @@ Compare with ``texture_wgpu.py``, where the texture view and the sampler are two
 
 from __future__ import annotations
 
-import argparse
-
 import moderngl
 import numpy as np
-from PIL import Image
+
+from gandalf_tools import lesson
 
 #: The texture, top row first: red, green / blue, white.
 TEXELS = np.array([[[255, 0, 0, 255], [0, 255, 0, 255]], [[0, 0, 255, 255], [255, 255, 255, 255]]], np.uint8)
@@ -53,18 +52,11 @@ def render(width: int = 64, height: int = 64) -> np.ndarray:
         pixels = fbo.read(components=4)
     finally:
         ctx.release()
-    return np.frombuffer(pixels, dtype=np.uint8).reshape(height, width, 4)[::-1].copy()
+    return lesson.image(pixels, width, height, bottom_up=True)
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default="texture_gl.png", help="PNG file to write")
-    parser.add_argument("--size", default="640x480", help="WIDTHxHEIGHT (default: 640x480)")
-    args = parser.parse_args(argv)
-    width, height = (int(v) for v in args.size.lower().split("x"))
-    Image.fromarray(render(width, height)).save(args.out)
-    print(f"wrote {args.out}")
-    return 0
+    return lesson.main(render, __doc__, "texture_gl.png", argv=argv)
 
 
 if __name__ == "__main__":

@@ -26,13 +26,13 @@ the bounds) to ``--out``. Runs headless and prints progress.
 
 from __future__ import annotations
 
-import argparse
 import math
 from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import frame_ms, pyplot, run_info, write_study
+from gandalf_tools.plots import figure, label_axes, save_figure
+from gandalf_tools.studies import StudyParser, frame_ms, groups, markdown_table, run_info, write_study
 
 STEM = "step04_study_depth"
 #: (label, near, far, reverse_z)
@@ -184,31 +184,26 @@ def run_study(backends, mappings, per_decade: int, resolution: float, frames: in
 
 def markdown(result: dict) -> str:
     """One row per distance: the smallest clean separation per API and mapping, and the bound, as s / d."""
-    mappings = list(dict.fromkeys(r["mapping"] for r in result["rows"]))
     backends = list(dict.fromkeys(r["backend"] for r in result["rows"]))
-    lines = []
-    for mapping in mappings:
-        mine = [r for r in result["rows"] if r["mapping"] == mapping]
-        lines += [f"**{mapping}** (smallest clean separation s, and s / d)", "",
-                  "| d | " + " | ".join(backends) + " | float32 bound |",
-                  "|---:|" + "---:|" * (len(backends) + 1)]
-        for d in dict.fromkeys(r["distance"] for r in mine):
-            cells = []
-            for backend in backends:
-                row = next(r for r in mine if r["distance"] == d and r["backend"] == backend)
-                s = row["min_separation"]
-                cells.append("z-fights at every s" if s is None else f"{s:.2e} ({s / d:.1e})")
-            b = next(r for r in mine if r["distance"] == d)["bound"]
-            lines.append(f"| {d:.3g} | " + " | ".join(cells) + f" | {b:.2e} ({b / d:.1e}) |")
-        lines.append("")
-    lines += ["| API | mapping | frame time (ms) |", "|---|---|---:|"]
-    lines += [f"| {t['backend']} | {t['mapping']} | {t['frame_ms']:.2f} |" for t in result["timing"]]
-    return "\n".join(lines) + "\n"
+
+    def separation(s: float | None, d: float) -> str:
+        return "z-fights at every s" if s is None else f"{s:.2e} ({s / d:.1e})"
+
+    text = ""
+    for mapping, mine in groups(result["rows"], "mapping"):
+        rows = []
+        for d, at_d in groups(mine, "distance"):
+            by_backend = {r["backend"]: r for r in at_d}
+            rows.append([f"{d:.3g}", *(separation(by_backend[b]["min_separation"], d) for b in backends),
+                         f"{at_d[0]['bound']:.2e} ({at_d[0]['bound'] / d:.1e})"])
+        text += (f"**{mapping}** (smallest clean separation s, and s / d)\n\n"
+                 + markdown_table(["d", *backends, "float32 bound"], rows, left=0) + "\n")
+    timing = ([t["backend"], t["mapping"], f"{t['frame_ms']:.2f}"] for t in result["timing"])
+    return text + markdown_table(["API", "mapping", "frame time (ms)"], timing, left=2)
 
 
 def plot(result: dict, path: Path) -> None:
-    plt = pyplot()
-    fig, ax = plt.subplots(figsize=(7.0, 4.6), dpi=100)
+    fig, ax = figure(figsize=(7.0, 4.6))
     colours = dict(zip(dict.fromkeys(r["mapping"] for r in result["rows"]),
                        ("tab:red", "tab:orange", "tab:blue", "tab:green", "tab:purple")))
     styles = {"opengl": ("o", "-"), "webgpu": ("s", "--")}
@@ -221,32 +216,22 @@ def plot(result: dict, path: Path) -> None:
     for mapping in colours:
         mine = [r for r in result["rows"] if r["mapping"] == mapping and r["backend"] == result["rows"][0]["backend"]]
         ax.loglog([r["distance"] for r in mine], [r["bound"] for r in mine], ":", color=colours[mapping], lw=1)
-    ax.set_xlabel("distance d of the front plane")
-    ax.set_ylabel("smallest separation without z-fighting")
-    ax.set_title("Depth precision, float32 depth buffer (dotted: the float32 bound)", fontsize=10)
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    label_axes(ax, "distance d of the front plane", "smallest separation without z-fighting",
+               "Depth precision, float32 depth buffer (dotted: the float32 bound)", legend=7)
+    save_figure(fig, path)
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m step04_camera.study_depth", description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--out", type=Path, default=Path("out"), help=f"folder for {STEM}.json/.md/.png")
-    parser.add_argument("--backends", nargs="+", choices=("opengl", "webgpu"), default=["opengl", "webgpu"])
-    parser.add_argument("--quick", action="store_true", help="two mappings, one distance a decade, coarser search")
+    parser = StudyParser("step04_camera.study_depth", __doc__, outputs=f"{STEM}.json/.md/.png",
+                         quick="two mappings, one distance a decade, coarser search", frames=(10, 10), repeats=(5, 5))
     parser.add_argument("--per-decade", type=int, default=None, help="distances a decade (default 2, quick 1)")
     parser.add_argument("--resolution", type=float, default=None,
                         help="bisection stops at this many octaves (default 0.25, quick 1)")
-    parser.add_argument("--frames", type=int, default=10, help="frames per timed run")
-    parser.add_argument("--repeats", type=int, default=5, help="timed runs per mapping")
     args = parser.parse_args(argv)
     per_decade = args.per_decade or (1 if args.quick else 2)
     resolution = args.resolution or (1.0 if args.quick else 0.25)
-    if per_decade < 1 or resolution <= 0 or args.frames < 1 or args.repeats < 1:
-        parser.error("--per-decade, --frames and --repeats must be at least 1, --resolution positive")
+    if per_decade < 1 or resolution <= 0:
+        parser.error("--per-decade must be at least 1, --resolution positive")
     mappings = QUICK_MAPPINGS if args.quick else MAPPINGS
     print(f"depth study: {len(mappings)} mappings, {', '.join(args.backends)}, {per_decade} distances a decade",
           flush=True)

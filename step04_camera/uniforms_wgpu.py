@@ -10,11 +10,10 @@ Compare with ``uniforms_gl.py``.
 
 from __future__ import annotations
 
-import argparse
-
 import numpy as np
 import wgpu
-from PIL import Image
+
+from gandalf_tools import lesson
 
 TRIANGLE = np.array([[-0.8, -0.8, 0.0], [0.8, -0.8, 0.0], [0.0, 0.8, 0.0]])
 #: (translation, colour) per draw: red in front, drawn first.
@@ -81,18 +80,11 @@ def render(width: int = 64, height: int = 64) -> np.ndarray:
     pixels = device.queue.read_texture({"texture": target}, {"bytes_per_row": 4 * width, "rows_per_image": height},
                                        (width, height, 1))
     device.destroy()
-    return np.frombuffer(pixels, dtype=np.uint8).reshape(height, width, 4).copy()
+    return lesson.image(pixels, width, height, bottom_up=False)
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default="uniforms_wgpu.png", help="PNG file to write")
-    parser.add_argument("--size", default="640x480", help="WIDTHxHEIGHT (default: 640x480)")
-    args = parser.parse_args(argv)
-    width, height = (int(v) for v in args.size.lower().split("x"))
-    Image.fromarray(render(width, height)).save(args.out)
-    print(f"wrote {args.out}")
-    return 0
+    return lesson.main(render, __doc__, "uniforms_wgpu.png", argv=argv)
 
 
 if __name__ == "__main__":

@@ -53,14 +53,8 @@ class CameraComponent(Component):
         primary: bool = True,
         reverse_z: bool = False,
     ) -> None:
-        self.fov = fov
-        self.near = near
-        self.far = far
-        self.projection = projection
-        self.height = height
-        self.aspect = aspect
-        self.primary = primary
-        self.reverse_z = reverse_z
+        self._set_fields(fov=fov, near=near, far=far, projection=projection, height=height, aspect=aspect,
+                         primary=primary, reverse_z=reverse_z)
         self.projection_matrix("opengl", 1.0)  # validate now, naming the bad field
 
     def projection_matrix(self, depth_range: str, target_aspect: float) -> np.ndarray:

@@ -239,12 +239,7 @@ class Vector(RowField, Field):
                 return False
         elif not math.isfinite(sum(items)):
             return False
-        store = obj._store
-        if store is None:
-            obj._local[self.name] = value.copy()
-        else:
-            store.columns[self.name][obj._row] = value
-        return True
+        return self._store_fast(obj, value)
 
     def convert(self, value: Any) -> Any:
         arr = as_floats(value, self.column_shape, uniform=self.uniform)

@@ -41,14 +41,8 @@ class LightComponent(Component):
                  range: float = 0.0, cast_shadows: bool = False, shadow_extent: float = 10.0,
                  shadow_depth: float = 50.0, shadow_bias: float = 1.0) -> None:
         self._cast_shadows = False  # so that the kind check below can consult it
-        self.kind = kind
-        self.color = color
-        self.intensity = intensity
-        self.range = range
-        self.cast_shadows = cast_shadows
-        self.shadow_extent = shadow_extent
-        self.shadow_depth = shadow_depth
-        self.shadow_bias = shadow_bias
+        self._set_fields(kind=kind, color=color, intensity=intensity, range=range, cast_shadows=cast_shadows,
+                         shadow_extent=shadow_extent, shadow_depth=shadow_depth, shadow_bias=shadow_bias)
 
     @property
     def kind(self) -> str:

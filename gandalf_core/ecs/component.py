@@ -35,6 +35,11 @@ class Component:
         fields = ", ".join(f"{k}={v!r}" for k, v in vars(self).items() if not k.startswith("_"))
         return f"{type(self).__name__}({fields})"
 
+    def _set_fields(self, **values: Any) -> None:
+        """Set the fields in the order given, each through its own checks: a constructor's assignments."""
+        for name, value in values.items():
+            setattr(self, name, value)
+
 
 class RowField:
     """Base of the descriptors of a columnar component's numeric fields: reading gives a live view of the field's row
@@ -59,6 +64,15 @@ class RowField:
         else:
             store.columns[self.name][obj._row] = value
 
+    def _store_fast(self, obj: Any, value: np.ndarray) -> bool:
+        """Store the checked float64 ``value`` of a fast path (the component keeps a copy); True."""
+        store = obj._store
+        if store is None:
+            obj._local[self.name] = value.copy()
+        else:
+            store.columns[self.name][obj._row] = value
+        return True
+
 
 class _ColumnField(RowField):
     """Descriptor that reads/writes one row of a column, or local storage before the component joins a scene."""
@@ -76,12 +90,7 @@ class _ColumnField(RowField):
         """
         if not math.isfinite(sum(value.tolist())):
             return False
-        store = obj._store
-        if store is None:
-            obj._local[self.name] = value.copy()
-        else:
-            store.columns[self.name][obj._row] = value
-        return True
+        return self._store_fast(obj, value)
 
     def __set__(self, obj: ColumnarComponent, value: Any) -> None:
         if self.flat:

@@ -76,11 +76,7 @@ class Scene:
             if isinstance(component, ColumnarComponent):
                 self.store(component_type).attach(component)
             comps[component_type] = component
-            self.membership_version += 1
-            for system in self._systems_by_type.get(component_type, ()):
-                types = system.component_types
-                if all(t in comps for t in types):
-                    system._add_member(entity, tuple([comps[t] for t in types]))
+            self._joined(entity, comps, component_type)
         return entity
 
     def create_entities(self, n: int, *components: Component | ColumnBatch | Sequence[Component]) -> list[uuid.UUID]:
@@ -260,12 +256,17 @@ class Scene:
             for child in kept_children:
                 self._entities[child][LinkComponent]._parent = entity
                 component.children.append(child)
+        self._joined(entity, comps, component_type)
+        return component
+
+    def _joined(self, entity: uuid.UUID, comps: dict[type[Component], Component], component_type: type) -> None:
+        """``entity`` (its components ``comps``) has gained a ``component_type``: every system of that type whose
+        component types it now all has takes it in."""
         self.membership_version += 1
         for system in self._systems_by_type.get(component_type, ()):
             types = system.component_types
             if all(t in comps for t in types):
                 system._add_member(entity, tuple([comps[t] for t in types]))
-        return component
 
     def remove_component(self, entity: uuid.UUID, component_type: type[Component]) -> Component:
         """Detach and return the entity's component of ``component_type``."""

@@ -22,9 +22,11 @@ class DepthRange(NamedTuple):
 
 
 _NAMED_RANGES = {"opengl": DepthRange(-1.0, 1.0), "webgpu": DepthRange(0.0, 1.0)}
+#: What a ``depth_range`` argument may be: a name of :data:`_NAMED_RANGES` or a (lo, hi) pair.
+DepthRangeLike = str | tuple[float, float]
 
 
-def depth_range(value: str | tuple[float, float]) -> DepthRange:
+def depth_range(value: DepthRangeLike) -> DepthRange:
     """Resolve "opengl" ([-1, 1]), "webgpu" ([0, 1]) or a (lo, hi) tuple with lo < hi to a DepthRange."""
     if isinstance(value, str):
         try:
@@ -42,14 +44,8 @@ def depth_range(value: str | tuple[float, float]) -> DepthRange:
     return DepthRange(lo, hi)
 
 
-def perspective(
-    fovy_degrees: float,
-    aspect: float,
-    near: float,
-    far: float,
-    depth_range: str | tuple[float, float] = "opengl",
-    reverse_z: bool = False,
-) -> np.ndarray:
+def perspective(fovy_degrees: float, aspect: float, near: float, far: float, depth_range: DepthRangeLike = "opengl",
+                reverse_z: bool = False) -> np.ndarray:
     """Perspective projection (4x4) with vertical field of view `fovy_degrees` and `aspect` = width / height.
 
     A point at eye-space distance `near` in front of the camera lands on the depth range's near end, one at
@@ -78,16 +74,8 @@ def perspective(
     return m
 
 
-def orthographic(
-    left: float,
-    right: float,
-    bottom: float,
-    top: float,
-    near: float,
-    far: float,
-    depth_range: str | tuple[float, float] = "opengl",
-    reverse_z: bool = False,
-) -> np.ndarray:
+def orthographic(left: float, right: float, bottom: float, top: float, near: float, far: float,
+                 depth_range: DepthRangeLike = "opengl", reverse_z: bool = False) -> np.ndarray:
     """Orthographic projection (4x4) of the eye-space box [left, right] x [bottom, top] x [-far, -near]."""
     bounds = {"left": left, "right": right, "bottom": bottom, "top": top, "near": near, "far": far}
     for name, value in bounds.items():
@@ -109,7 +97,7 @@ def orthographic(
     return m
 
 
-def _depth_ends(value: str | tuple[float, float], reverse_z: bool) -> tuple[float, float]:
+def _depth_ends(value: DepthRangeLike, reverse_z: bool) -> tuple[float, float]:
     """NDC depth of the near and the far plane for this range and direction."""
     lo, hi = depth_range(value)
     return (hi, lo) if reverse_z else (lo, hi)

@@ -73,20 +73,9 @@ class OrbitControllerComponent(Component):
     ``exp(-zoom_speed)`` (scrolling up zooms in), clamped to [min_distance, max_distance].
     """
 
-    def __init__(
-        self,
-        target: Sequence[float] = (0.0, 0.0, 0.0),
-        distance: float = 5.0,
-        yaw: float = 0.0,
-        pitch: float = 20.0,
-        *,
-        sensitivity: float = 0.3,
-        zoom_speed: float = 0.1,
-        min_distance: float = 0.1,
-        max_distance: float = 1000.0,
-        min_pitch: float = -89.0,
-        max_pitch: float = 89.0,
-    ) -> None:
+    def __init__(self, target: Sequence[float] = (0.0, 0.0, 0.0), distance: float = 5.0, yaw: float = 0.0,
+                 pitch: float = 20.0, *, sensitivity: float = 0.3, zoom_speed: float = 0.1, min_distance: float = 0.1,
+                 max_distance: float = 1000.0, min_pitch: float = -89.0, max_pitch: float = 89.0) -> None:
         owner = "OrbitControllerComponent"
         self.target = np.asarray(target, dtype=np.float64)
         if self.target.shape != (3,) or not np.all(np.isfinite(self.target)):

@@ -17,6 +17,8 @@ from pathlib import Path
 
 import numpy as np
 
+from gandalf_tools.plots import figure, label_axes, save_figure
+
 from ..solutions.integrators import rk4_step, semi_implicit_euler_step
 from .methods import (
     damped_spring_exact,
@@ -131,35 +133,19 @@ def _format_sweep_table(ratios: Sequence[float], sweep: dict[str, np.ndarray]) -
 
 def plot_errors(rows: list[dict[str, float | str]], path: Path) -> Path:
     """Log-log plot of the largest error against the run time, one line per integrator."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, ax = plt.subplots(figsize=(6.0, 3.8), dpi=100)
+    fig, ax = figure(figsize=(6.0, 3.8), dpi=100)
     for name in INTEGRATOR_NAMES:
         mine = [r for r in rows if r["integrator"] == name and np.isfinite(r["max_error"]) and r["max_error"] < 10]
         ax.loglog([1000 * r["seconds"] for r in mine], [r["max_error"] for r in mine], "o-", label=name, ms=4)
-    ax.set_xlabel("run time for 10 s of simulation (ms)")
-    ax.set_ylabel("largest position error")
-    ax.set_title("Damped spring (k=10, m=1, c=0.4): error against cost", fontsize=10)
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
+    label_axes(ax, "run time for 10 s of simulation (ms)", "largest position error",
+               "Damped spring (k=10, m=1, c=0.4): error against cost")
     path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def plot_sweep(ratios: Sequence[float], sweep: dict[str, np.ndarray], path: Path) -> Path:
     """One row of markers per integrator: green bounded, red unstable, with the theoretical limits."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, ax = plt.subplots(figsize=(6.0, 2.8), dpi=100)
+    fig, ax = figure(figsize=(6.0, 2.8), dpi=100)
     for row, name in enumerate(INTEGRATOR_NAMES):
         ok = sweep[name]
         r = np.asarray(ratios)
@@ -172,11 +158,8 @@ def plot_sweep(ratios: Sequence[float], sweep: dict[str, np.ndarray], path: Path
     ax.set_yticks(range(len(INTEGRATOR_NAMES)), INTEGRATOR_NAMES, fontsize=8)
     ax.set_ylim(-0.6, len(INTEGRATOR_NAMES) - 0.1)
     ax.set_xlabel("k/m (1/s²), 60 Hz, 10,000 steps; green bounded, red unstable")
-    fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -21,7 +21,6 @@ Writes ``step05_study_fixed_step.json``, ``.md`` (the table) and ``.png`` (error
 
 from __future__ import annotations
 
-import argparse
 import statistics
 import time
 import warnings
@@ -29,7 +28,8 @@ from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import pyplot, run_info, write_study
+from gandalf_tools.plots import figure, label_axes, save_figure
+from gandalf_tools.studies import StudyParser, groups, markdown_table, run_info, write_study
 
 from ..custom_systems.fixed_step import FixedStep
 from ..solutions.integrators import semi_implicit_euler_step
@@ -113,44 +113,29 @@ def run_study(dts, max_steps_list, repeats: int, duration: float = DURATION) -> 
 
 
 def markdown(result: dict) -> str:
-    lines = ["| max_steps | dt (s) | largest error seen (m) | time dropped (s) | CPU ms per simulated second |",
-             "|---:|---:|---:|---:|---:|"]
-    for r in result["rows"]:
-        lines.append(f"| {r['max_steps']} | 1/{1 / r['dt']:.0f} | {r['max_error_m']:.2e} | {r['dropped_s']:.3f} | "
-                     f"{r['ms_per_simulated_second']:.3f} |")
-    return "\n".join(lines) + "\n"
+    return markdown_table(
+        ["max_steps", "dt (s)", "largest error seen (m)", "time dropped (s)", "CPU ms per simulated second"],
+        ([r["max_steps"], f"1/{1 / r['dt']:.0f}", f"{r['max_error_m']:.2e}", f"{r['dropped_s']:.3f}",
+          f"{r['ms_per_simulated_second']:.3f}"] for r in result["rows"]), left=0)
 
 
 def plot(result: dict, path: Path) -> None:
-    plt = pyplot()
-    fig, ax = plt.subplots(figsize=(6.4, 4.2), dpi=100)
-    for max_steps in dict.fromkeys(r["max_steps"] for r in result["rows"]):
-        mine = [r for r in result["rows"] if r["max_steps"] == max_steps]
+    fig, ax = figure(figsize=(6.4, 4.2))
+    for max_steps, mine in groups(result["rows"], "max_steps"):
         ax.loglog([r["ms_per_simulated_second"] for r in mine], [r["max_error_m"] for r in mine], "o-",
                   label=f"max_steps = {max_steps}", ms=4)
         for r in mine:
             ax.annotate(f"1/{1 / r['dt']:.0f}", (r["ms_per_simulated_second"], r["max_error_m"]), fontsize=6,
                         xytext=(3, 3), textcoords="offset points")
-    ax.set_xlabel("CPU time per simulated second (ms, median)")
-    ax.set_ylabel("largest error of the seen position (m)")
-    ax.set_title("FixedStep: projectile, jittery 60 Hz frames with 0.1 s hitches", fontsize=10)
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    label_axes(ax, "CPU time per simulated second (ms, median)", "largest error of the seen position (m)",
+               "FixedStep: projectile, jittery 60 Hz frames with 0.1 s hitches")
+    save_figure(fig, path)
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m step05_scenegraph.integrators.study_fixed_step",
-                                     description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--out", type=Path, default=Path("out"), help=f"folder for {STEM}.json/.md/.png")
-    parser.add_argument("--quick", action="store_true", help="three time steps and two max_steps")
-    parser.add_argument("--repeats", type=int, default=None, help="timed runs per case (default 9, quick 3)")
-    args = parser.parse_args(argv)
-    repeats = args.repeats or (3 if args.quick else 9)
-    if repeats < 1:
-        parser.error("--repeats must be at least 1")
+    args = StudyParser("step05_scenegraph.integrators.study_fixed_step", __doc__, outputs=f"{STEM}.json/.md/.png",
+                       quick="three time steps and two max_steps", backends=None, repeats=(9, 3)).parse_args(argv)
+    repeats = args.repeats
     dts, max_steps = (QUICK_DTS, QUICK_MAX_STEPS) if args.quick else (DTS, MAX_STEPS)
     print(f"fixed-step study: {len(dts)} time steps x {len(max_steps)} max_steps, {repeats} timed runs each",
           flush=True)

@@ -21,12 +21,12 @@ error of dropping the weakest lights) to ``--out``. Runs headless and prints pro
 
 from __future__ import annotations
 
-import argparse
 from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import frame_ms, pyplot, run_info, write_study
+from gandalf_tools.plots import figure, label_axes, save_figure
+from gandalf_tools.studies import StudyParser, frame_ms, groups, markdown_table, run_info, write_study
 
 STEM = "step06_study_lights"
 COUNTS = (0, 1, 2, 4, 8, 16, 32, 64)
@@ -116,19 +116,15 @@ def run_study(backends, counts, size, frames: int, repeats: int) -> dict:
 
 
 def markdown(result: dict) -> str:
-    lines = ["| API | lights kept | intensity kept | frame time (ms) | mean error (8-bit) | 99th percentile (8-bit) |",
-             "|---|---:|---:|---:|---:|---:|"]
-    for r in result["rows"]:
-        lines.append(f"| {r['backend']} | {r['lights']} | {100 * r['intensity_kept']:.0f} % | {r['frame_ms']:.2f} | "
-                     f"{r['mean_error_8bit']:.2f} | {r['p99_error_8bit']:.1f} |")
-    return "\n".join(lines) + "\n"
+    return markdown_table(
+        ["API", "lights kept", "intensity kept", "frame time (ms)", "mean error (8-bit)", "99th percentile (8-bit)"],
+        ([r["backend"], r["lights"], f"{100 * r['intensity_kept']:.0f} %", f"{r['frame_ms']:.2f}",
+          f"{r['mean_error_8bit']:.2f}", f"{r['p99_error_8bit']:.1f}"] for r in result["rows"]))
 
 
 def plot(result: dict, path: Path) -> None:
-    plt = pyplot()
-    fig, axes = plt.subplots(1, 2, figsize=(10.0, 4.0), dpi=100)
-    for backend in dict.fromkeys(r["backend"] for r in result["rows"]):
-        mine = [r for r in result["rows"] if r["backend"] == backend]
+    fig, axes = figure(1, 2, figsize=(10.0, 4.0))
+    for backend, mine in groups(result["rows"], "backend"):
         axes[0].plot([r["lights"] for r in mine], [r["frame_ms"] for r in mine], "o-", ms=4, label=backend)
         partial = [r for r in mine if r["lights"] < result["total_lights"]]  # all of them: no error to plot
         axes[1].semilogy([r["frame_ms"] for r in partial], [max(r["mean_error_8bit"], 1e-3) for r in partial], "o-",
@@ -138,35 +134,18 @@ def plot(result: dict, path: Path) -> None:
         for r in partial:
             axes[1].annotate(str(r["lights"]), (r["frame_ms"], max(r["mean_error_8bit"], 1e-3)), fontsize=6,
                              xytext=(3, 3), textcoords="offset points")
-    axes[0].set_xlabel("point lights")
-    axes[0].set_ylabel("frame time (ms, median)")
-    axes[1].set_xlabel("frame time (ms, median); labels: lights kept")
-    axes[1].set_ylabel("error against all 64 lights (8-bit)")
-    for ax in axes:
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=8)
+    label_axes(axes[0], "point lights", "frame time (ms, median)")
+    label_axes(axes[1], "frame time (ms, median); labels: lights kept", "error against all 64 lights (8-bit)")
     fig.suptitle(f"Light count ({result['size'][0]}×{result['size'][1]}): cost, and the error of keeping only the "
                  "strongest", fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    save_figure(fig, path)
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m step06_lighting.lights.study_lights", description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--out", type=Path, default=Path("out"), help=f"folder for {STEM}.json/.md/.png")
-    parser.add_argument("--backends", nargs="+", choices=("opengl", "webgpu"), default=["opengl", "webgpu"])
-    parser.add_argument("--quick", action="store_true", help=f"light counts {QUICK_COUNTS}, fewer frames")
-    parser.add_argument("--size", type=int, nargs=2, default=(320, 240), metavar=("W", "H"))
-    parser.add_argument("--frames", type=int, default=None, help="frames per timed run (default 8, quick 3)")
-    parser.add_argument("--repeats", type=int, default=None, help="timed runs per case (default 5, quick 2)")
-    args = parser.parse_args(argv)
-    frames = args.frames or (3 if args.quick else 8)
-    repeats = args.repeats or (2 if args.quick else 5)
-    if frames < 1 or repeats < 1:
-        parser.error("--frames and --repeats must be at least 1")
-    size = (int(args.size[0]), int(args.size[1]))
+    args = StudyParser("step06_lighting.lights.study_lights", __doc__, outputs=f"{STEM}.json/.md/.png",
+                       quick=f"light counts {QUICK_COUNTS}, fewer frames", size=((320, 240), (320, 240)),
+                       frames=(8, 3), repeats=(5, 2)).parse_args(argv)
+    size, frames, repeats = args.size, args.frames, args.repeats
     counts = QUICK_COUNTS if args.quick else COUNTS
     print(f"light-count study: {counts} of {TOTAL} lights, {', '.join(args.backends)}, {size[0]}x{size[1]}",
           flush=True)

@@ -22,13 +22,13 @@ Writes ``step06_study_mesh_resolution.json``, ``.md`` (the table) and ``.png`` (
 
 from __future__ import annotations
 
-import argparse
 import math
 from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import frame_ms, pyplot, run_info, write_study
+from gandalf_tools.plots import figure, label_axes, save_figure
+from gandalf_tools.studies import StudyParser, frame_ms, groups, markdown_table, run_info, write_study
 
 STEM = "step06_study_mesh_resolution"
 SPHERES = ((6, 3), (8, 4), (12, 6), (16, 8), (24, 12), (32, 16), (64, 32), (128, 64), (256, 128))
@@ -152,53 +152,38 @@ def run_study(backends, spheres, size, instances: int, frames: int, repeats: int
 
 
 def markdown(result: dict) -> str:
-    lines = ["| API | segments × rings | triangles | silhouette error (px) | r(1 − cos π/segments) (px) "
-             "| shading error (8-bit) | frame time (ms) |", "|---|---:|---:|---:|---:|---:|---:|"]
-    for r in result["rows"]:
-        lines.append(f"| {r['backend']} | {r['segments']} × {r['rings']} | {r['triangles']} | {r['silhouette_px']:.3f}"
-                     f" | {r['polygon_bound_px']:.3f} | {r['shading_8bit']:.2f} | {r['frame_ms']:.2f} |")
-    return "\n".join(lines) + "\n"
+    return markdown_table(
+        ["API", "segments × rings", "triangles", "silhouette error (px)", "r(1 − cos π/segments) (px)",
+         "shading error (8-bit)", "frame time (ms)"],
+        ([r["backend"], f"{r['segments']} × {r['rings']}", r["triangles"], f"{r['silhouette_px']:.3f}",
+          f"{r['polygon_bound_px']:.3f}", f"{r['shading_8bit']:.2f}", f"{r['frame_ms']:.2f}"] for r in result["rows"]))
 
 
 def plot(result: dict, path: Path) -> None:
-    plt = pyplot()
-    fig, axes = plt.subplots(1, 2, figsize=(10.0, 4.0), dpi=100)
-    for backend in dict.fromkeys(r["backend"] for r in result["rows"]):
-        mine = [r for r in result["rows"] if r["backend"] == backend]
+    fig, axes = figure(1, 2, figsize=(10.0, 4.0))
+    for backend, mine in groups(result["rows"], "backend"):
         for ax, key in zip(axes, ("silhouette_px", "shading_8bit")):
             ax.loglog([r["frame_ms"] for r in mine], [max(r[key], 1e-3) for r in mine], "o-", ms=4, label=backend)
             for r in mine:
                 ax.annotate(str(r["triangles"]), (r["frame_ms"], max(r[key], 1e-3)), fontsize=6, xytext=(3, 3),
                             textcoords="offset points")
-    axes[0].set_ylabel("silhouette error (mean outline distance, px)")
-    axes[1].set_ylabel("shading error (mean 8-bit difference)")
-    for ax in axes:
-        ax.set_xlabel(f"frame time, {result['instances']} spheres (ms, median)")
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=8)
+    for ax, ylabel in zip(axes, ("silhouette error (mean outline distance, px)",
+                                 "shading error (mean 8-bit difference)")):
+        label_axes(ax, f"frame time, {result['instances']} spheres (ms, median)", ylabel)
     fig.suptitle(f"uv_sphere resolution against the exact sphere ({result['size'][0]}×{result['size'][1]}; "
                  "labels: triangles)", fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    save_figure(fig, path)
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m step06_lighting.meshes.study_mesh_resolution", description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--out", type=Path, default=Path("out"), help=f"folder for {STEM}.json/.md/.png")
-    parser.add_argument("--backends", nargs="+", choices=("opengl", "webgpu"), default=["opengl", "webgpu"])
-    parser.add_argument("--quick", action="store_true", help="three spheres, fewer frames")
-    parser.add_argument("--size", type=int, nargs=2, default=(320, 240), metavar=("W", "H"))
+    parser = StudyParser("step06_lighting.meshes.study_mesh_resolution", __doc__, outputs=f"{STEM}.json/.md/.png",
+                         quick="three spheres, fewer frames", size=((320, 240), (320, 240)), frames=(10, 5),
+                         repeats=(5, 2))
     parser.add_argument("--instances", type=int, default=16, help="spheres in the timed grid (default 16)")
-    parser.add_argument("--frames", type=int, default=None, help="frames per timed run (default 10, quick 5)")
-    parser.add_argument("--repeats", type=int, default=None, help="timed runs per case (default 5, quick 2)")
     args = parser.parse_args(argv)
-    frames = args.frames or (5 if args.quick else 10)
-    repeats = args.repeats or (2 if args.quick else 5)
-    if frames < 1 or repeats < 1 or args.instances < 1:
-        parser.error("--frames, --repeats and --instances must be at least 1")
-    size = (int(args.size[0]), int(args.size[1]))
+    if args.instances < 1:
+        parser.error("--instances must be at least 1")
+    size, frames, repeats = args.size, args.frames, args.repeats
     spheres = QUICK_SPHERES if args.quick else SPHERES
     print(f"mesh-resolution study: {len(spheres)} spheres, {', '.join(args.backends)}, {size[0]}x{size[1]}",
           flush=True)

@@ -20,14 +20,14 @@ triangles, log-log) to ``--out``. Runs headless; prints progress.
 
 from __future__ import annotations
 
-import argparse
 import platform
 import statistics
 from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import frame_runs_ms, pyplot, write_study
+from gandalf_tools.plots import figure, label_axes, save_figure
+from gandalf_tools.studies import StudyParser, frame_runs_ms, groups, markdown_table, write_study
 
 #: (segments, rings) of the UV spheres: 960, 3968, 16128, 65024 and 199808 triangles.
 SPHERES = ((32, 16), (64, 32), (128, 64), (256, 128), (448, 224))
@@ -138,49 +138,31 @@ def _finite(value: float) -> float | str:
 
 
 def format_table(rows: list[dict]) -> str:
-    lines = ["| route | triangles | frame time (ms, median) | silhouette box error (px) | PSNR to gl-geometry (dB) |",
-             "|---|---:|---:|---:|---:|"]
-    for r in rows:
-        p = r["psnr_to_gl_geometry_db"]
-        p_text = "—" if p is None else (p if isinstance(p, str) else f"{p:.1f}")
-        lines.append(f"| {r['route']} | {r['triangles']} | {r['frame_ms']:.2f} | {r['box_error_px']:.2f} | {p_text} |")
-    return "\n".join(lines) + "\n"
+    def psnr(p: float | str | None) -> str:
+        return "—" if p is None else (p if isinstance(p, str) else f"{p:.1f}")
+
+    return markdown_table(
+        ["route", "triangles", "frame time (ms, median)", "silhouette box error (px)", "PSNR to gl-geometry (dB)"],
+        ([r["route"], r["triangles"], f"{r['frame_ms']:.2f}", f"{r['box_error_px']:.2f}",
+          psnr(r["psnr_to_gl_geometry_db"])] for r in rows))
 
 
 def plot(rows: list[dict], path: Path, title: str) -> Path:
-    plt = pyplot()
-    fig, ax = plt.subplots(figsize=(6.4, 4.2), dpi=100)
-    for route in dict.fromkeys(r["route"] for r in rows):
-        mine = [r for r in rows if r["route"] == route]
+    fig, ax = figure(figsize=(6.4, 4.2))
+    for route, mine in groups(rows, "route"):
         ax.loglog([r["triangles"] for r in mine], [r["frame_ms"] for r in mine], "o-", label=route)
-    ax.set_xlabel("triangles")
-    ax.set_ylabel("frame time (ms, median)")
-    ax.set_title(title)
-    ax.grid(True, which="both", alpha=0.3)
+    label_axes(ax, "triangles", "frame time (ms, median)", title, legend=None)
     ax.legend()
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return save_figure(fig, path)
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m step07_advanced.explode.study", description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--out", type=Path, default=Path("out"), help="folder for the JSON, table and plot")
-    parser.add_argument("--backends", nargs="+", choices=("opengl", "webgpu"), default=["opengl", "webgpu"],
-                        help="which APIs' routes to run (default both)")
-    parser.add_argument("--quick", action="store_true", help="three sphere sizes, fewer frames")
-    parser.add_argument("--size", type=int, nargs=2, default=(640, 480), metavar=("W", "H"), help="render target")
-    parser.add_argument("--frames", type=int, default=None, help="frames per timed run (default 20, quick 8)")
-    parser.add_argument("--repeats", type=int, default=5, help="timed runs per case; the median is reported")
-    args = parser.parse_args(argv)
-    frames = args.frames or (8 if args.quick else 20)
-    if frames < 1 or args.repeats < 1:
-        parser.error("--frames and --repeats must be at least 1")
+    args = StudyParser("step07_advanced.explode.study", __doc__, outputs="the JSON, table and plot",
+                       quick="three sphere sizes, fewer frames", size=((640, 480), (640, 480)), frames=(20, 8),
+                       repeats=(5, 5)).parse_args(argv)
+    frames, size = args.frames, args.size
     routes = [r for r, backend in ROUTES.items() if backend in args.backends]
     spheres = SPHERES[:3] if args.quick else SPHERES
-    size = (int(args.size[0]), int(args.size[1]))
     print(f"explode study: routes {', '.join(routes)}; {frames} frames x {args.repeats} runs at {size[0]}x{size[1]}",
           flush=True)
     rows = run_study(routes, spheres, size, frames, args.repeats)

@@ -20,14 +20,14 @@ takes minutes on a software rasteriser); pass ``--max-taps 0`` for no limit. Wri
 
 from __future__ import annotations
 
-import argparse
 import statistics
 import time
 from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import pyplot, run_info, write_study
+from gandalf_tools.plots import figure, save_figure
+from gandalf_tools.studies import StudyParser, markdown_table, run_info, write_study
 
 from . import reference
 from .kernels import OPERATIONS
@@ -112,28 +112,27 @@ def run_study(backends: list[str], sizes: tuple[int, ...], radii: tuple[int, ...
 
 def markdown(result: dict) -> str:
     """One row per API, size and radius: time (ms) and max / RMS error (8-bit steps) of each method."""
-    head = "| API | size | radius | " + " | ".join(f"{m} ms | {m} max / rms" for m in METHODS) + " |"
-    lines = [head, "|" + "---|" * (3 + 2 * len(METHODS))]
+    header = ["API", "size", "radius", *(cell for m in METHODS for cell in (f"{m} ms", f"{m} max / rms"))]
     table: dict[tuple, dict] = {}
     for row in result["rows"]:
         table.setdefault((row["backend"], row["size"], row["radius"]), {})[row["method"]] = row
+    lines = []
     for (backend, size, radius), by_method in table.items():
-        cells = []
+        cells = [backend, f"{size}²", radius]
         for m in METHODS:
             row = by_method.get(m)
             if row is None or row.get("skipped"):
                 cells += ["—", "—"]
             else:
                 cells += [f"{row['time_ms']:.2f}", f"{row['max_error']:.2f} / {row['rms_error']:.2f}"]
-        lines.append(f"| {backend} | {size}² | {radius} | " + " | ".join(cells) + " |")
-    return "\n".join(lines) + "\n"
+        lines.append(cells)
+    return markdown_table(header, lines, left=len(header))
 
 
 def plot(result: dict, path: Path) -> None:
-    plt = pyplot()
     backends = list(dict.fromkeys(r["backend"] for r in result["rows"]))
     sizes = sorted({r["size"] for r in result["rows"]})
-    fig, axes = plt.subplots(1, len(backends), figsize=(6.2 * len(backends), 4.4), squeeze=False, sharey=True)
+    fig, axes = figure(1, len(backends), figsize=(6.2 * len(backends), 4.4), squeeze=False, sharey=True)
     colours = {"naive": "tab:red", "separable": "tab:blue", "tiled": "tab:green"}
     styles = ["-", "--", ":", "-."]
     for ax, backend in zip(axes[0], backends):
@@ -152,18 +151,12 @@ def plot(result: dict, path: Path) -> None:
         ax.grid(True, which="both", alpha=0.3)
     axes[0][0].set_ylabel("GPU time per blur (ms, median)")
     axes[0][-1].legend(fontsize=7, ncol=len(METHODS))
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(fig, path, dpi=110)
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m step07_advanced.filter.study", description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--out", default="out", help="folder for filter_study.json/.md/.png (default: out)")
-    parser.add_argument("--backends", nargs="+", default=["opengl", "webgpu"], choices=["opengl", "webgpu"])
-    parser.add_argument("--quick", action="store_true", help=f"sizes {QUICK_SIZES} and radii {QUICK_RADII} only")
-    parser.add_argument("--repeats", type=int, default=None, help="timed runs per case (default 5, quick 3)")
+    parser = StudyParser("step07_advanced.filter.study", __doc__, outputs="filter_study.json/.md/.png (default: out)",
+                         quick=f"sizes {QUICK_SIZES} and radii {QUICK_RADII} only", repeats=(5, 3))
     parser.add_argument("--batch", type=int, default=1,
                         help="dispatches per wait; the time is per dispatch (default 1: includes the wait)")
     parser.add_argument("--max-taps", type=float, default=3e8,
@@ -171,11 +164,10 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     assert set(METHODS) <= set(OPERATIONS)
     sizes, radii = (QUICK_SIZES, QUICK_RADII) if args.quick else (SIZES, RADII)
-    repeats = args.repeats or (3 if args.quick else 5)
-    if args.repeats is not None and args.repeats < 1 or args.batch < 1:
-        parser.error("--repeats and --batch must be >= 1")
-    result = run_study(args.backends, sizes, radii, repeats, args.max_taps, args.batch)
-    write_study(Path(args.out), "filter_study", result, markdown(result), plot)
+    if args.batch < 1:
+        parser.error("--batch must be >= 1")
+    result = run_study(args.backends, sizes, radii, args.repeats, args.max_taps, args.batch)
+    write_study(args.out, "filter_study", result, markdown(result), plot)
     return 0
 
 

@@ -32,6 +32,8 @@ from pathlib import Path
 
 import numpy as np
 
+from gandalf_tools.plots import figure, save_figure
+
 from .reference import bilinear_sampler, march_np, parallax_offset_np
 from .scene import (
     DISTANCE,
@@ -195,12 +197,7 @@ def table(rows: list[tuple[str, int]], uv: dict, measured: dict[str, dict], back
 
 
 def plot(path: Path, layers: tuple[int, ...], uv: dict, measured: dict[str, dict], backends: list[str]) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, axes = plt.subplots(1, 3, figsize=(14, 4.2))
+    fig, axes = figure(1, 3, figsize=(14, 4.2))
     styles = {"steep": "--", "occlusion": "-"}
     colors = {"opengl": "tab:blue", "webgpu": "tab:orange"}
     for method in ("steep", "occlusion"):
@@ -232,9 +229,7 @@ def plot(path: Path, layers: tuple[int, ...], uv: dict, measured: dict[str, dict
         ax.set_xticks(layers, [str(n) for n in layers])
     axes[0].legend(fontsize=6)
     axes[1].legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(fig, path, dpi=110)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -30,6 +30,8 @@ from pathlib import Path
 
 import numpy as np
 
+from gandalf_tools.plots import figure, save_figure
+
 REFERENCE_SEED = 90210
 SEED = 1
 
@@ -139,12 +141,7 @@ def markdown(study: dict) -> str:
 
 
 def plot(study: dict, path: Path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
+    fig, (left, right) = figure(1, 2, figsize=(10, 4))
     style = {"opengl": ("o", "C0", "C0"), "webgpu": ("s", "C1", "none")}  # marker, colour, fill
     for backend in study["slopes"]:
         marker, colour, fill = style.get(backend, ("^", "C2", "C2"))
@@ -167,9 +164,7 @@ def plot(study: dict, path: Path) -> None:
     right.set_ylabel("RMSE against the reference")
     right.legend()
     right.set_title("error against run time")
-    fig.tight_layout()
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
+    save_figure(fig, path, dpi=100)
 
 
 def _size(text: str) -> tuple[int, int]:

@@ -31,6 +31,8 @@ from pathlib import Path
 
 import numpy as np
 
+from gandalf_tools.plots import figure, save_figure
+
 SAMPLES = (4, 8, 16, 32, 64, 128, 256, 512)
 QUICK_SAMPLES = (4, 8, 16, 32, 64)
 SIZE = (320, 240)
@@ -132,12 +134,7 @@ def render(backend: str, maps, frames: int, repeats: int) -> tuple[np.ndarray, f
 
 
 def plot(rows: list[dict], path: Path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(9, 3.6))
+    fig, (ax1, ax2) = figure(1, 2, figsize=(9, 3.6))
     for method, style in zip(METHODS, ("o-", "s-")):
         sel = [r for r in rows if r["method"] == method]
         m = [r["samples"] for r in sel]
@@ -156,20 +153,14 @@ def plot(rows: list[dict], path: Path) -> None:
     ax2.legend()
     ax2.grid(True, which="both", alpha=0.3)
     fig.suptitle("Prefiltered environment: error and cost against the sample count")
-    fig.tight_layout()
-    fig.savefig(path, dpi=100)
+    save_figure(fig, path, dpi=100)
 
 
 def plot_maps(maps, path: Path) -> None:
     """The IBL maps of ``maps`` (an IBLMaps) side by side: the +Z face (the sun's side) of every prefiltered
     level, of the irradiance map, and the BRDF table's A and B."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     chain = maps.prefiltered.mip_chain()
-    fig, axes = plt.subplots(1, len(chain) + 3, figsize=(2.0 * (len(chain) + 3), 2.4))
+    fig, axes = figure(1, len(chain) + 3, figsize=(2.0 * (len(chain) + 3), 2.4))
     for k, (ax, level) in enumerate(zip(axes, chain)):
         ax.imshow(level[4, ..., :3], interpolation="nearest")
         ax.set_title(f"level {k}: r = {k / (len(chain) - 1):.1f}", fontsize=9)
@@ -184,8 +175,7 @@ def plot_maps(maps, path: Path) -> None:
     for ax in axes[: len(chain) + 1]:
         ax.set_xticks([])
         ax.set_yticks([])
-    fig.tight_layout()
-    fig.savefig(path, dpi=100)
+    save_figure(fig, path, dpi=100)
 
 
 def table(rows: list[dict], backends: list[str]) -> str:

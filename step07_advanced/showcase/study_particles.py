@@ -21,14 +21,14 @@ second) to ``--out``. Runs headless and prints progress.
 
 from __future__ import annotations
 
-import argparse
 import statistics
 import time
 from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import pyplot, run_info, write_study
+from gandalf_tools.plots import figure, label_axes, save_figure
+from gandalf_tools.studies import StudyParser, groups, markdown_table, run_info, write_study
 
 from .particles import SimParams, particle_step_np
 
@@ -176,48 +176,35 @@ def run_study(backends, dts, particles: int, duration: float, repeats: int) -> d
 
 
 def markdown(result: dict) -> str:
-    lines = ["| backend | dt (s) | steps | max position error (m) | Euler bound g·dt·t/2 (m) "
-             "| ms per simulated second |",
-             "|---|---:|---:|---:|---:|---:|"]
-    for r in result["rows"]:
-        lines.append(f"| {r['backend']} | 1/{1 / r['dt']:.0f} | {r['steps']} | {r['max_error_m']:.2e} | "
-                     f"{r['predicted_error_m']:.2e} | {r['ms_per_simulated_second']:.2f} |")
-    return "\n".join(lines) + "\n"
+    return markdown_table(
+        ["backend", "dt (s)", "steps", "max position error (m)", "Euler bound g·dt·t/2 (m)", "ms per simulated second"],
+        ([r["backend"], f"1/{1 / r['dt']:.0f}", r["steps"], f"{r['max_error_m']:.2e}", f"{r['predicted_error_m']:.2e}",
+          f"{r['ms_per_simulated_second']:.2f}"] for r in result["rows"]))
 
 
 def plot(result: dict, path: Path) -> None:
-    plt = pyplot()
-    fig, ax = plt.subplots(figsize=(6.4, 4.2), dpi=100)
-    for backend in dict.fromkeys(r["backend"] for r in result["rows"]):
-        mine = [r for r in result["rows"] if r["backend"] == backend]
+    fig, ax = figure(figsize=(6.4, 4.2))
+    for backend, mine in groups(result["rows"], "backend"):
         ax.loglog([r["ms_per_simulated_second"] for r in mine], [r["max_error_m"] for r in mine], "o-",
                   label=backend, ms=4)
         for r in mine:
             ax.annotate(f"1/{1 / r['dt']:.0f}", (r["ms_per_simulated_second"], r["max_error_m"]), fontsize=6,
                         xytext=(3, 3), textcoords="offset points")
-    ax.set_xlabel("wall time per simulated second (ms, median)")
-    ax.set_ylabel(f"largest position error after {result['duration_s']:g} s (m)")
-    ax.set_title(f"Particle step (semi-implicit Euler, float32), {result['particles']} projectiles", fontsize=10)
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    label_axes(ax, "wall time per simulated second (ms, median)",
+               f"largest position error after {result['duration_s']:g} s (m)",
+               f"Particle step (semi-implicit Euler, float32), {result['particles']} projectiles")
+    save_figure(fig, path)
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m step07_advanced.showcase.study_particles", description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--out", type=Path, default=Path("out"), help=f"folder for {STEM}.json/.md/.png")
-    parser.add_argument("--backends", nargs="+", choices=BACKENDS, default=list(BACKENDS))
-    parser.add_argument("--quick", action="store_true", help="three time steps, fewer particles and repeats")
+    parser = StudyParser("step07_advanced.showcase.study_particles", __doc__, outputs=f"{STEM}.json/.md/.png",
+                         quick="three time steps, fewer particles and repeats", backends=BACKENDS, repeats=(5, 2))
     parser.add_argument("--particles", type=int, default=None, help="projectiles (default 4096, quick 256)")
-    parser.add_argument("--repeats", type=int, default=None, help="timed runs per case (default 5, quick 2)")
     args = parser.parse_args(argv)
     particles = args.particles or (256 if args.quick else 4096)
-    repeats = args.repeats or (2 if args.quick else 5)
-    if particles < 1 or repeats < 1:
-        parser.error("--particles and --repeats must be at least 1")
+    repeats = args.repeats
+    if particles < 1:
+        parser.error("--particles must be at least 1")
     dts = QUICK_DTS if args.quick else DTS
     print(f"particle study: {particles} projectiles for {DURATION} s, dt from 1/{1 / dts[0]:.0f} to "
           f"1/{1 / dts[-1]:.0f} s, backends {', '.join(args.backends)}", flush=True)

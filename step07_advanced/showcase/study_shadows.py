@@ -29,14 +29,14 @@ the taps, against the bias itself for the bias, which costs nothing) to
 
 from __future__ import annotations
 
-import argparse
 import contextlib
 from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
 
-from gandalf_tools.studies import frame_ms, pyplot, run_info, write_study
+from gandalf_tools.plots import figure, save_figure
+from gandalf_tools.studies import StudyParser, frame_ms, markdown_table, run_info, write_study
 
 from .shaders import STUDY_SHADOW_MATERIAL
 
@@ -188,19 +188,17 @@ def run_study(backends, sweeps, size, frames: int, repeats: int) -> dict:
 
 
 def markdown(result: dict) -> str:
-    lines = ["| API | knob | map size | taps | bias | wrong (% of the shadow) | false shadow (%) | missing shadow (%) "
-             "| frame time (ms) |", "|---|---|---:|---:|---:|---:|---:|---:|---:|"]
-    for r in result["rows"]:
-        lines.append(f"| {r['backend']} | {r['knob']} | {r['map_size']} | {r['taps']} | {r['bias']:g} | "
-                     f"{100 * r['wrong_share']:.2f} | {100 * r['false_shadow_share']:.2f} | "
-                     f"{100 * r['missing_shadow_share']:.2f} | {r['frame_ms']:.2f} |")
-    return "\n".join(lines) + "\n"
+    return markdown_table(
+        ["API", "knob", "map size", "taps", "bias", "wrong (% of the shadow)", "false shadow (%)", "missing shadow (%)",
+         "frame time (ms)"],
+        ([r["backend"], r["knob"], r["map_size"], r["taps"], f"{r['bias']:g}", f"{100 * r['wrong_share']:.2f}",
+          f"{100 * r['false_shadow_share']:.2f}", f"{100 * r['missing_shadow_share']:.2f}", f"{r['frame_ms']:.2f}"]
+         for r in result["rows"]), left=2)
 
 
 def plot(result: dict, path: Path) -> None:
-    plt = pyplot()
     knobs = list(dict.fromkeys(r["knob"] for r in result["rows"]))
-    fig, axes = plt.subplots(1, len(knobs), figsize=(4.2 * len(knobs), 3.8), dpi=100, squeeze=False)
+    fig, axes = figure(1, len(knobs), figsize=(4.2 * len(knobs), 3.8), squeeze=False)
     label = {"map_size": lambda r: f"{r['map_size']}", "pcf_radius": lambda r: f"{r['taps']}",
              "bias": lambda r: f"{r['bias']:g}"}
     titles = {"map_size": "shadow map size (labels: texels a side)", "pcf_radius": "PCF taps (labels: taps)",
@@ -228,26 +226,17 @@ def plot(result: dict, path: Path) -> None:
     axes[0][-1].legend(fontsize=7)
     fig.suptitle(f"Shadow mapping against a ray-traced shadow ({result['size'][0]}×{result['size'][1]})",
                  fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    save_figure(fig, path)
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m step07_advanced.showcase.study_shadows", description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--out", type=Path, default=Path("out"), help=f"folder for {STEM}.json/.md/.png")
-    parser.add_argument("--backends", nargs="+", choices=("opengl", "webgpu"), default=["opengl", "webgpu"])
-    parser.add_argument("--quick", action="store_true", help="fewer settings per knob, fewer frames")
-    parser.add_argument("--size", type=int, nargs=2, default=(320, 240), metavar=("W", "H"))
-    parser.add_argument("--frames", type=int, default=None, help="frames per timed run (default 10, quick 3)")
-    parser.add_argument("--repeats", type=int, default=None, help="timed runs per case (default 5, quick 2)")
+    parser = StudyParser("step07_advanced.showcase.study_shadows", __doc__, outputs=f"{STEM}.json/.md/.png",
+                         quick="fewer settings per knob, fewer frames", size=((320, 240), (320, 240)),
+                         frames=(10, 3), repeats=(5, 2))
     args = parser.parse_args(argv)
-    frames = args.frames or (3 if args.quick else 10)
-    repeats = args.repeats or (2 if args.quick else 5)
-    if frames < 1 or repeats < 1 or min(args.size) < 8:
-        parser.error("--frames and --repeats must be at least 1, --size at least 8 8")
-    size = (int(args.size[0]), int(args.size[1]))
+    if min(args.size) < 8:
+        parser.error("--size must be at least 8 8")
+    size, frames, repeats = args.size, args.frames, args.repeats
     sweeps = QUICK_SWEEPS if args.quick else SWEEPS
     print(f"shadow study: {len(cases(sweeps))} settings, {', '.join(args.backends)}, {size[0]}x{size[1]}", flush=True)
     result = run_study(args.backends, sweeps, size, frames, repeats)

@@ -35,6 +35,8 @@ from pathlib import Path
 
 import numpy as np
 
+from gandalf_tools.plots import figure, save_figure
+
 LEVELS = (1, 2, 4, 8, 16, 32, 64)
 QUICK_LEVELS = (1, 4, 16)
 SIZE = (640, 480)
@@ -161,12 +163,7 @@ def markdown(result: dict) -> str:
 
 
 def plot(result: dict, path: Path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
+    fig, (left, right) = figure(1, 2, figsize=(10, 4))
     rows = [r for r in result["rows"] if r["levels"].startswith("uniform")]
     lod = [r for r in result["rows"] if not r["levels"].startswith("uniform")]
     triangles = [r["triangles"] for r in rows]
@@ -190,19 +187,12 @@ def plot(result: dict, path: Path) -> None:
     right.set_ylabel("largest error (pixels)")
     right.set_title("error against run time")
     right.legend()
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(fig, path, dpi=110)
 
 
 def plot_levels(path: Path) -> None:
     """The segments per patch side that the scene's LOD gives each patch from the tour's camera (a map seen
     from above, the camera beyond the top edge)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     from . import scene
     from .heightfield import quantize
     from .patches import patch_levels
@@ -210,7 +200,7 @@ def plot_levels(path: Path) -> None:
     params = scene.PARAMS
     _outer, inner = patch_levels(quantize(scene.terrain_heights()), params, np.asarray(scene.EYE, dtype=np.float64))
     segments = np.ceil(inner).reshape(params.patches, params.patches)
-    fig, ax = plt.subplots(figsize=(4.6, 4))
+    fig, ax = figure(figsize=(4.6, 4))
     half = params.size / 2
     image = ax.imshow(segments, origin="lower", extent=(-half, half, -half, half), cmap="viridis")
     for (j, i), n in np.ndenumerate(segments):
@@ -221,9 +211,7 @@ def plot_levels(path: Path) -> None:
     ax.set_ylabel("world z (the camera looks towards -z)")
     ax.set_title("segments per patch side (inner level)")
     fig.colorbar(image, ax=ax)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(fig, path, dpi=110)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -19,15 +19,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from gandalf_core import Application, Scene
-from gandalf_core.components import (
-    CameraComponent,
-    ClearColorComponent,
-    LightComponent,
-    MaterialComponent,
-    MeshComponent,
-    TransformComponent,
-)
+from gandalf_core import Application, ClearColorComponent, Scene, TransformComponent
+from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.render.builtin_materials import BUILTIN_MATERIALS
 from gandalf_core.resources import MaterialData, MeshData, ResourceError, checkerboard, quad, solid, uv_sphere

@@ -15,13 +15,7 @@ import pytest
 from gandalf_core import Scene, System, TransformComponent, TransformSystem
 from gandalf_core.components import MaterialComponent, MeshComponent
 from gandalf_core.ecs import Component, LinkComponent, NotAComponentError
-from gandalf_core.math import (
-    quat_conjugate,
-    quat_from_axis_angle,
-    quat_mul,
-    quat_normalize,
-    quat_rotate,
-)
+from gandalf_core.math import quat_conjugate, quat_from_axis_angle, quat_mul, quat_normalize, quat_rotate
 
 
 class Spin(Component):

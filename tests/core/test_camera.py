@@ -7,19 +7,13 @@ cameras with the same world pose (reached differently) give PSNR >= 60 dB; matri
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
+from core_shaders import build_shaders
 
-from gandalf_core import Application, LinkComponent, Scene
-from gandalf_core.components import (
-    CameraComponent,
-    ClearColorComponent,
-    MaterialComponent,
-    MeshComponent,
-    TransformComponent,
-)
+from gandalf_core import Application, ClearColorComponent, LinkComponent, Scene, TransformComponent
+from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import invert_affine, look_at, look_at_rotation, quat_from_euler, trs
 from gandalf_core.render import RenderSystem
 from gandalf_core.resources import MaterialData, checkerboard, cube, plane
@@ -32,16 +26,12 @@ from gandalf_core.systems.camera_controllers import (
 )
 from gandalf_tools.testing import compare_images, psnr
 
-SHADERS = Path(__file__).parent / "shaders"
 W, H = 96, 72
 
 
 def make_app(backend: str, width: int = W, height: int = H) -> Application:
     app = Application(backend, width, height, headless=True, fixed_dt=1 / 60)
-    if backend == "opengl":
-        app.renderer.shaders.build("unlit", SHADERS / "unlit.vert", SHADERS / "unlit.frag")
-    else:
-        app.renderer.shaders.build("unlit", SHADERS / "unlit.wgsl")
+    build_shaders(app.renderer.shaders, backend, "unlit")
     return app
 
 

@@ -8,15 +8,13 @@ z-fight or vanish at the far end (the test shows that the case is hard enough to
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
+from core_shaders import build_shaders
 
 from gandalf_core import Application, Scene
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent, TransformComponent
 from gandalf_core.resources import MaterialData, MeshData
 
-SHADERS = Path(__file__).parent / "shaders"
 W, H = 96, 72
 DISTANCE = 10_000.0
 
@@ -37,10 +35,7 @@ def render(backend: str, reverse_z: bool) -> np.ndarray:
     scene.create_entity(TransformComponent(), MeshComponent("front"), MaterialComponent("a_red"))
     scene.create_entity(TransformComponent(), CameraComponent(60.0, 1e-4, 1e7, reverse_z=reverse_z))
     with Application(backend, W, H, headless=True) as app:
-        if backend == "opengl":
-            app.renderer.shaders.build("flat", SHADERS / "unlit.vert", SHADERS / "flat.frag")
-        else:
-            app.renderer.shaders.build("flat", SHADERS / "flat.wgsl")
+        build_shaders(app.renderer.shaders, backend, "flat")
         app.add_scene(scene)
         app.run(frames=1)
         return app.capture()

@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from core_shaders import build_shaders
 
 from gandalf_core import Application, InfoComponent, LinkComponent, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, ClearColorComponent, MaterialComponent, MeshComponent
@@ -24,7 +25,6 @@ from gandalf_core.resources import MaterialData, checkerboard, cube
 from gandalf_tools.testing import psnr
 from step07_advanced.editor import PANEL_KINDS, EditorPanelComponent, disable_editor, enable_editor, is_editor_entity
 
-SHADERS = Path(__file__).parent / "shaders"
 ROOT = Path(__file__).resolve().parents[2]
 W, H = 640, 480
 HAS_USD = importlib.util.find_spec("step07_advanced.usd") is not None
@@ -32,10 +32,7 @@ HAS_USD = importlib.util.find_spec("step07_advanced.usd") is not None
 
 def make_app(backend: str) -> Application:
     app = Application(backend, W, H, headless=True, fixed_dt=1 / 60)
-    if backend == "opengl":
-        app.renderer.shaders.build("unlit", SHADERS / "unlit.vert", SHADERS / "unlit.frag")
-    else:
-        app.renderer.shaders.build("unlit", SHADERS / "unlit.wgsl")
+    build_shaders(app.renderer.shaders, backend, "unlit")
     return app
 
 

@@ -18,19 +18,13 @@ from gandalf_core import InfoComponent, LinkComponent, TransformComponent
 from gandalf_core.components import LightComponent, MeshComponent
 from gandalf_core.render import RenderSystem
 from gandalf_tools.testing import psnr
-from step07_advanced.editor import EditorPanelComponent, disable_editor, enable_editor
+from step07_advanced.editor import EditorPanelComponent, enable_editor
 
 sys.path.insert(0, str(Path(__file__).parent))
+import test_editor  # noqa: E402
 from test_editor import H, center, click, editor_scene, make_app, named  # noqa: E402
 
-
-@pytest.fixture
-def app(backend: str):
-    application = make_app(backend)
-    application.add_scene(editor_scene())
-    yield application
-    disable_editor(application)
-    application.close()
+app = test_editor.app  # the editor's app fixture, shared
 
 
 def drag(app, start, end, steps: int = 6) -> None:

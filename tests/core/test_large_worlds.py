@@ -10,24 +10,16 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 import pytest
+from core_shaders import build_shaders
 
-from gandalf_core import Application, Scene
-from gandalf_core.components import (
-    CameraComponent,
-    LightComponent,
-    MaterialComponent,
-    MeshComponent,
-    TransformComponent,
-)
+from gandalf_core import Application, Scene, TransformComponent
+from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.render.frame import TIME_WRAP, pack_frame
 from gandalf_core.resources import MaterialData, cube, plane, uv_sphere
 
-SHADERS = Path(__file__).parent / "shaders"
 W, H = 96, 72
 FAR = np.array([1e6, -3e5, 2e6])
 
@@ -52,12 +44,7 @@ def lit_scene(offset: np.ndarray) -> Scene:
 
 def render(backend: str, scene: Scene, frames: int = 1) -> list[np.ndarray]:
     with Application(backend, W, H, headless=True, fixed_dt=1 / 60) as app:
-        if backend == "opengl":
-            app.renderer.shaders.build("lit", SHADERS / "lit.vert", SHADERS / "lit.frag")
-            app.renderer.shaders.build("flat", SHADERS / "unlit.vert", SHADERS / "flat.frag")
-        else:
-            app.renderer.shaders.build("lit", SHADERS / "lit.wgsl")
-            app.renderer.shaders.build("flat", SHADERS / "flat.wgsl")
+        build_shaders(app.renderer.shaders, backend, "lit", "flat")
         app.add_scene(scene)
         pictures = []
         for _ in range(frames):
@@ -86,10 +73,7 @@ def test_a_small_moving_cube_far_away_follows_its_path(backend, offset):
 
     errors = []
     with Application(backend, W, H, headless=True, fixed_dt=1 / 60) as app:
-        if backend == "opengl":
-            app.renderer.shaders.build("flat", SHADERS / "unlit.vert", SHADERS / "flat.frag")
-        else:
-            app.renderer.shaders.build("flat", SHADERS / "flat.wgsl")
+        build_shaders(app.renderer.shaders, backend, "flat")
         app.add_scene(scene)
         transform = scene.get_component(mover, TransformComponent)
         focal = (H / 2) / np.tan(np.radians(30.0))

@@ -24,7 +24,7 @@ ROOT = REPO / "gandalf_core"
 # --8<-- [start:rules]
 #: Layer of each sub-package (and top-level module); higher numbers may import lower ones.
 LAYERS = {
-    "ecs": 0, "math": 0, "resources": 0,
+    "ecs": 0, "math": 0, "resources": 0, "lazy": 0,
     "components": 1,
     "systems": 2,
     "render": 3,

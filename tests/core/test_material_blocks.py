@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from core_shaders import build_shaders
 
 from gandalf_core import Application
 from gandalf_core.render.errors import ShaderCompileError
@@ -23,8 +24,6 @@ from gandalf_core.render.shader_files import SNIPPETS_DIR
 from gandalf_core.resources import MaterialData, ResourceError, ShaderSource, checkerboard, sky_cube
 from gandalf_core.resources.blocks import material_layout, material_snippets
 from gandalf_tools.tour import REPO_ROOT
-
-SHADERS = Path(__file__).parent / "shaders"
 
 GL_VERT = """#version 330 core
 #include "frame.glsl"
@@ -73,6 +72,13 @@ def build_shader(app: Application, name: str = "probe", frag: str = GL_FRAG, ver
                                                       include_dirs=inc, generated=block), material=material)
     return r.shaders.build(name, ShaderSource.from_text(wgsl, "wgsl", filename="probe.wgsl", include_dirs=inc,
                                                         generated=block), material=material)
+
+
+def check_refused(backend: str, match: str, **sources: str) -> None:
+    """Building the probe shader from ``sources`` in ``backend`` raises a ShaderCompileError matching ``match``."""
+    with Application(backend, 16, 12, headless=True) as app:
+        with pytest.raises(ShaderCompileError, match=match):
+            build_shader(app, **sources)
 
 
 def test_the_same_material_is_the_same_bytes_in_both_apis():
@@ -168,10 +174,7 @@ def test_padding_fields_have_a_default_and_the_colour_is_optional(backend):
 def test_a_cube_map_in_a_2d_slot_of_a_block_material_names_the_slot(backend):
     with Application(backend, 16, 12, headless=True) as app:
         r = app.renderer
-        if backend == "opengl":
-            r.shaders.build("unlit", SHADERS / "unlit.vert", SHADERS / "unlit.frag")
-        else:
-            r.shaders.build("unlit", SHADERS / "unlit.wgsl")
+        build_shaders(r.shaders, backend, "unlit")
         r.textures.build("sky", sky_cube(8))
         r.textures.build("flat", checkerboard(8, 2))
         r.materials.build("ok", MaterialData("unlit", ["flat"]))
@@ -183,45 +186,35 @@ def test_a_cube_map_in_a_2d_slot_of_a_block_material_names_the_slot(backend):
 def test_glsl_a_varying_the_vertex_stage_never_declares_names_shader_file_and_varying():
     frag = GL_FRAG.replace("in vec3 v_world;", "in vec3 v_world;\nin vec2 v_uv;").replace(
         "vec4(v_world, 0.0) * 0.0", "vec4(v_world + vec3(v_uv, 0.0), 0.0) * 0.0")
-    with Application("opengl", 16, 12, headless=True) as app:
-        with pytest.raises(ShaderCompileError, match=r"shader 'probe' \(probe\.frag\): the fragment stage reads "
-                                                     r"varying 'v_uv' \(vec2\), which the vertex stage \(probe\.vert\) "
-                                                     r"never declares as 'out' \(its outputs: v_world\)"):
-            build_shader(app, frag=frag)
+    check_refused("opengl", r"shader 'probe' \(probe\.frag\): the fragment stage reads "
+                  r"varying 'v_uv' \(vec2\), which the vertex stage \(probe\.vert\) "
+                  r"never declares as 'out' \(its outputs: v_world\)", frag=frag)
 
 
 def test_glsl_a_varying_declared_but_never_written_is_an_error():
     vert = GL_VERT.replace("    v_world = world.xyz;\n", "")
-    with Application("opengl", 16, 12, headless=True) as app:
-        with pytest.raises(ShaderCompileError, match=r"shader 'probe' \(probe\.frag\): the fragment stage reads "
-                                                     r"varying 'v_world', which the vertex stage \(probe\.vert\) "
-                                                     r"declares but never writes"):
-            build_shader(app, vert=vert)
+    check_refused("opengl", r"shader 'probe' \(probe\.frag\): the fragment stage reads "
+                  r"varying 'v_world', which the vertex stage \(probe\.vert\) "
+                  r"declares but never writes", vert=vert)
 
 
 def test_glsl_a_varying_of_another_type_is_an_error():
     frag = GL_FRAG.replace("in vec3 v_world;", "in vec4 v_world;").replace("vec4(v_world, 0.0)", "v_world")
-    with Application("opengl", 16, 12, headless=True) as app:
-        with pytest.raises(ShaderCompileError, match=r"varying 'v_world' is vec4 here but vec3 in the vertex stage"):
-            build_shader(app, frag=frag)
+    check_refused("opengl", r"varying 'v_world' is vec4 here but vec3 in the vertex stage", frag=frag)
 
 
 def test_wgsl_a_fragment_input_the_vertex_stage_never_returns_names_shader_file_and_location():
     wgsl = WGSL.replace("@fragment fn fs_main(in: VOut)", "@fragment fn fs_main(in: VOut, @location(3) uv: vec2<f32>)")
-    with Application("webgpu", 16, 12, headless=True) as app:
-        with pytest.raises(ShaderCompileError, match=r"shader 'probe' \(probe\.wgsl\): fragment entry point 'fs_main' "
-                                                     r"reads @location\(3\) 'uv' \(vec2<f32>\), which vertex entry "
-                                                     r"point 'vs_main' never returns \(it returns: @location\(0\) "
-                                                     r"world\)"):
-            build_shader(app, wgsl=wgsl)
+    check_refused("webgpu", r"shader 'probe' \(probe\.wgsl\): fragment entry point 'fs_main' "
+                  r"reads @location\(3\) 'uv' \(vec2<f32>\), which vertex entry "
+                  r"point 'vs_main' never returns \(it returns: @location\(0\) "
+                  r"world\)", wgsl=wgsl)
 
 
 def test_wgsl_a_fragment_input_of_another_type_is_an_error():
     wgsl = WGSL.replace("@fragment fn fs_main(in: VOut)", "@fragment fn fs_main(@location(0) world: vec4<f32>)")
-    with Application("webgpu", 16, 12, headless=True) as app:
-        with pytest.raises(ShaderCompileError, match=r"@location\(0\) is vec4<f32> 'world' in 'fs_main' but "
-                                                     r"vec3<f32> 'world' in 'vs_main'"):
-            build_shader(app, wgsl=wgsl)
+    check_refused("webgpu", r"@location\(0\) is vec4<f32> 'world' in 'fs_main' but "
+                  r"vec3<f32> 'world' in 'vs_main'", wgsl=wgsl)
 
 
 def test_a_declared_block_no_stage_includes_names_the_shader_and_files(backend):

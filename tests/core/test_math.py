@@ -12,6 +12,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import gandalf_core.math as gm
 from gandalf_core.math import (
     DepthRange,
     decompose_trs,
@@ -23,18 +24,6 @@ from gandalf_core.math import (
     normal_matrix_batch,
     orthographic,
     perspective,
-    quat_conjugate,
-    quat_from_axis_angle,
-    quat_from_euler,
-    quat_from_matrix3,
-    quat_identity,
-    quat_inverse,
-    quat_mul,
-    quat_normalize,
-    quat_rotate,
-    quat_slerp,
-    quat_to_euler,
-    quat_to_matrix3,
     rotation,
     scaling,
     translation,
@@ -48,7 +37,7 @@ unit = st.floats(-1.0, 1.0)
 quaternions = (
     st.tuples(unit, unit, unit, unit)
     .filter(lambda c: sum(v * v for v in c) > 1e-4)
-    .map(lambda c: quat_normalize(np.array(c)))
+    .map(lambda c: gm.quat_normalize(np.array(c)))
 )
 vectors = st.tuples(*(st.floats(-1e3, 1e3),) * 3).map(np.array)
 magnitudes = st.floats(0.1, 10.0)
@@ -85,59 +74,62 @@ def ndc(m: np.ndarray, points: np.ndarray) -> np.ndarray:
 
 
 def test_identity_and_axis_angle_match_hand_built_matrices():
-    assert np.array_equal(quat_to_matrix3(quat_identity()), np.eye(3))
+    assert np.array_equal(gm.quat_to_matrix3(gm.quat_identity()), np.eye(3))
     # 1e-15: a handful of roundings of entries of size <= 1.
-    np.testing.assert_allclose(quat_to_matrix3(quat_from_axis_angle([0, 0, 2], math.pi / 2)), rot_z(90), atol=1e-15)
-    np.testing.assert_allclose(quat_to_matrix3(quat_from_axis_angle([3, 0, 0], 0.7)), rot_x(math.degrees(0.7)),
+    np.testing.assert_allclose(gm.quat_to_matrix3(gm.quat_from_axis_angle([0, 0, 2], math.pi / 2)), rot_z(90),
+                               atol=1e-15)
+    np.testing.assert_allclose(gm.quat_to_matrix3(gm.quat_from_axis_angle([3, 0, 0], 0.7)), rot_x(math.degrees(0.7)),
                                atol=1e-15)
 
 
 def test_euler_convention_is_rz_ry_rx():
-    q = quat_from_euler([30.0, -50.0, 110.0])
-    np.testing.assert_allclose(quat_to_matrix3(q), rot_z(110) @ rot_y(-50) @ rot_x(30), atol=1e-15)
+    q = gm.quat_from_euler([30.0, -50.0, 110.0])
+    np.testing.assert_allclose(gm.quat_to_matrix3(q), rot_z(110) @ rot_y(-50) @ rot_x(30), atol=1e-15)
 
 
 @FAST
 @given(quaternions, quaternions)
 def test_quat_mul_applies_b_first_then_a(a, b):
     # Tolerance 1e-14: products of a few unit-size matrices.
-    np.testing.assert_allclose(quat_to_matrix3(quat_mul(a, b)), quat_to_matrix3(a) @ quat_to_matrix3(b), atol=1e-14)
+    np.testing.assert_allclose(gm.quat_to_matrix3(gm.quat_mul(a, b)), gm.quat_to_matrix3(a) @ gm.quat_to_matrix3(b),
+                               atol=1e-14)
     v = np.array([0.3, -1.2, 2.0])
-    np.testing.assert_allclose(quat_rotate(quat_mul(a, b), v), quat_rotate(a, quat_rotate(b, v)), atol=1e-14)
+    np.testing.assert_allclose(gm.quat_rotate(gm.quat_mul(a, b), v), gm.quat_rotate(a, gm.quat_rotate(b, v)),
+                               atol=1e-14)
 
 
 def test_batch_forms_equal_single_forms():
     rng = np.random.default_rng(1)
-    a = quat_normalize(rng.normal(size=(50, 4)))
-    b = quat_normalize(rng.normal(size=(50, 4)))
+    a = gm.quat_normalize(rng.normal(size=(50, 4)))
+    b = gm.quat_normalize(rng.normal(size=(50, 4)))
     v = rng.normal(size=(50, 3))
-    batch_mul = quat_mul(a, b)
-    batch_mat = quat_to_matrix3(a)
-    batch_rot = quat_rotate(a, v)
+    batch_mul = gm.quat_mul(a, b)
+    batch_mat = gm.quat_to_matrix3(a)
+    batch_rot = gm.quat_rotate(a, v)
     for i in range(50):
         # Same arithmetic in the same order: equal to the last bit, 0 tolerance apart from 1e-16 slack.
-        np.testing.assert_allclose(batch_mul[i], quat_mul(a[i], b[i]), atol=1e-16)
-        np.testing.assert_allclose(batch_mat[i], quat_to_matrix3(a[i]), atol=1e-16)
-        np.testing.assert_allclose(batch_rot[i], quat_rotate(a[i], v[i]), atol=1e-15)
+        np.testing.assert_allclose(batch_mul[i], gm.quat_mul(a[i], b[i]), atol=1e-16)
+        np.testing.assert_allclose(batch_mat[i], gm.quat_to_matrix3(a[i]), atol=1e-16)
+        np.testing.assert_allclose(batch_rot[i], gm.quat_rotate(a[i], v[i]), atol=1e-15)
 
 
 @FAST
 @given(quaternions)
 def test_inverse_and_conjugate_undo_the_rotation(q):
-    np.testing.assert_allclose(quat_mul(q, quat_inverse(q)), quat_identity(), atol=1e-15)
-    np.testing.assert_allclose(quat_inverse(2.0 * q), quat_conjugate(q) / 2.0, atol=1e-15)
+    np.testing.assert_allclose(gm.quat_mul(q, gm.quat_inverse(q)), gm.quat_identity(), atol=1e-15)
+    np.testing.assert_allclose(gm.quat_inverse(2.0 * q), gm.quat_conjugate(q) / 2.0, atol=1e-15)
     v = np.array([1.0, 2.0, 3.0])
-    np.testing.assert_allclose(quat_rotate(quat_conjugate(q), quat_rotate(q, v)), v, atol=1e-14)
+    np.testing.assert_allclose(gm.quat_rotate(gm.quat_conjugate(q), gm.quat_rotate(q, v)), v, atol=1e-14)
 
 
 @FAST
 @given(quaternions)
 def test_quaternion_matrix_round_trip(q):
-    m = quat_to_matrix3(q)
+    m = gm.quat_to_matrix3(q)
     # A rotation: orthonormal with determinant +1 (tolerance 1e-14).
     np.testing.assert_allclose(m @ m.T, np.eye(3), atol=1e-14)
     assert abs(np.linalg.det(m) - 1.0) < 1e-14
-    back = quat_from_matrix3(m)
+    back = gm.quat_from_matrix3(m)
     # q and -q are the same rotation; the result is returned with w >= 0. Tolerance 1e-14.
     assert back[0] >= 0.0
     assert min(np.abs(back - q).max(), np.abs(back + q).max()) < 1e-14
@@ -147,61 +139,61 @@ def test_quaternion_matrix_round_trip(q):
 @pytest.mark.parametrize("angle", [0.0, 1e-9, math.pi - 1e-9, math.pi])
 def test_matrix_to_quaternion_is_stable_near_zero_and_half_turns(axis, angle):
     # Shepperd's method keeps full precision where the trace is -1 (half turns) or 3 (no turn).
-    q = quat_from_axis_angle(axis, angle)
-    back = quat_from_matrix3(quat_to_matrix3(q))
+    q = gm.quat_from_axis_angle(axis, angle)
+    back = gm.quat_from_matrix3(gm.quat_to_matrix3(q))
     assert abs(np.linalg.norm(back) - 1.0) < 1e-15
-    np.testing.assert_allclose(quat_to_matrix3(back), quat_to_matrix3(q), atol=1e-14)
+    np.testing.assert_allclose(gm.quat_to_matrix3(back), gm.quat_to_matrix3(q), atol=1e-14)
 
 
 @FAST
 @given(st.floats(-179.0, 179.0), st.floats(-89.0, 89.0), st.floats(-179.0, 179.0))
 def test_euler_round_trip_away_from_gimbal_lock(x, y, z):
     # Within 1 degree of gimbal lock the roll/yaw split loses ~eps/cos(pitch) ~ 1e-14 relative: bound 1e-9 deg.
-    np.testing.assert_allclose(quat_to_euler(quat_from_euler([x, y, z])), [x, y, z], atol=1e-9)
+    np.testing.assert_allclose(gm.quat_to_euler(gm.quat_from_euler([x, y, z])), [x, y, z], atol=1e-9)
 
 
 @pytest.mark.parametrize("pitch", [90.0, -90.0, 90.0 - 1e-7, -90.0 + 1e-9, 90.0 - 1e-3])
 def test_euler_at_gimbal_lock_has_no_nan_and_keeps_the_rotation(pitch):
-    q = quat_from_euler([25.0, pitch, -40.0])
-    angles = quat_to_euler(q)
+    q = gm.quat_from_euler([25.0, pitch, -40.0])
+    angles = gm.quat_to_euler(q)
     assert np.all(np.isfinite(angles))
     assert abs(abs(angles[1]) - abs(pitch)) < 1e-6
     # Reported angles must give back the same rotation; bound 1e-7 covers dropping cos(pitch) < 1.5e-8.
-    np.testing.assert_allclose(quat_to_matrix3(quat_from_euler(angles)), quat_to_matrix3(q), atol=1e-7)
+    np.testing.assert_allclose(gm.quat_to_matrix3(gm.quat_from_euler(angles)), gm.quat_to_matrix3(q), atol=1e-7)
 
 
 def test_euler_batch_has_no_nan_even_with_unnormalised_input():
-    q = quat_from_euler(np.array([[0.0, 90.0, 0.0], [10.0, -90.0, 5.0], [1.0, 2.0, 3.0]])) * 1.0000001
-    assert np.all(np.isfinite(quat_to_euler(q)))
+    q = gm.quat_from_euler(np.array([[0.0, 90.0, 0.0], [10.0, -90.0, 5.0], [1.0, 2.0, 3.0]])) * 1.0000001
+    assert np.all(np.isfinite(gm.quat_to_euler(q)))
 
 
 @FAST
 @given(quaternions, quaternions)
 def test_slerp_endpoints_unit_length_and_constant_speed(a, b):
-    np.testing.assert_allclose(quat_to_matrix3(quat_slerp(a, b, 0.0)), quat_to_matrix3(a), atol=1e-14)
-    np.testing.assert_allclose(quat_to_matrix3(quat_slerp(a, b, 1.0)), quat_to_matrix3(b), atol=1e-14)
+    np.testing.assert_allclose(gm.quat_to_matrix3(gm.quat_slerp(a, b, 0.0)), gm.quat_to_matrix3(a), atol=1e-14)
+    np.testing.assert_allclose(gm.quat_to_matrix3(gm.quat_slerp(a, b, 1.0)), gm.quat_to_matrix3(b), atol=1e-14)
     ts = np.linspace(0.0, 1.0, 11)
-    path = quat_slerp(a, b, ts)
+    path = gm.quat_slerp(a, b, ts)
     np.testing.assert_allclose(np.linalg.norm(path, axis=1), 1.0, atol=1e-15)
     # Shortest path at constant angular speed: angle(a -> slerp(t)) = t * angle(a -> b), within 1e-7 rad
     # (angle_of loses precision only through its atan2 of rounded components).
-    total = angle_of(quat_mul(quat_conjugate(a), b))
+    total = angle_of(gm.quat_mul(gm.quat_conjugate(a), b))
     assert total <= math.pi + 1e-12
     for t, q in zip(ts, path):
-        assert abs(angle_of(quat_mul(quat_conjugate(a), q)) - t * total) < 1e-7
+        assert abs(angle_of(gm.quat_mul(gm.quat_conjugate(a), q)) - t * total) < 1e-7
 
 
 def test_slerp_takes_the_short_way_and_handles_nearly_equal_inputs():
-    a = quat_from_axis_angle([0, 1, 0], 0.1)
-    b = -quat_from_axis_angle([0, 1, 0], 0.3)  # same rotation as +q; must not go the long way round
-    np.testing.assert_allclose(quat_to_matrix3(quat_slerp(a, b, 0.5)),
-                               quat_to_matrix3(quat_from_axis_angle([0, 1, 0], 0.2)), atol=1e-15)
-    c = quat_from_axis_angle([0, 1, 0], 0.1 + 1e-12)
-    mid = quat_slerp(a, c, 0.5)
+    a = gm.quat_from_axis_angle([0, 1, 0], 0.1)
+    b = -gm.quat_from_axis_angle([0, 1, 0], 0.3)  # same rotation as +q; must not go the long way round
+    np.testing.assert_allclose(gm.quat_to_matrix3(gm.quat_slerp(a, b, 0.5)),
+                               gm.quat_to_matrix3(gm.quat_from_axis_angle([0, 1, 0], 0.2)), atol=1e-15)
+    c = gm.quat_from_axis_angle([0, 1, 0], 0.1 + 1e-12)
+    mid = gm.quat_slerp(a, c, 0.5)
     assert np.all(np.isfinite(mid)) and abs(np.linalg.norm(mid) - 1.0) < 1e-15
-    np.testing.assert_allclose(mid, quat_from_axis_angle([0, 1, 0], 0.1 + 5e-13), atol=1e-15)
+    np.testing.assert_allclose(mid, gm.quat_from_axis_angle([0, 1, 0], 0.1 + 5e-13), atol=1e-15)
     with pytest.raises(ValueError, match="t"):
-        quat_slerp(a, c, 1.5)
+        gm.quat_slerp(a, c, 1.5)
 
 
 def test_a_million_small_rotations_stay_unit_and_add_up():
@@ -209,13 +201,13 @@ def test_a_million_small_rotations_stay_unit_and_add_up():
     # each advance together (1000 batched quat_mul calls), then the 1000 chain results are composed one after
     # the other, so every one of the 1e6 steps goes through quat_mul and the sequential depth is 2000.
     axis = np.array([1.0, 2.0, 3.0]) / math.sqrt(14.0)
-    step = quat_from_axis_angle(axis, 1e-6)
-    chains = np.tile(quat_identity(), (1000, 1))
+    step = gm.quat_from_axis_angle(axis, 1e-6)
+    chains = np.tile(gm.quat_identity(), (1000, 1))
     for _ in range(1000):
-        chains = quat_mul(step, chains)
-    total = quat_identity()
+        chains = gm.quat_mul(step, chains)
+    total = gm.quat_identity()
     for q in chains:
-        total = quat_mul(q, total)
+        total = gm.quat_mul(q, total)
     assert abs(np.linalg.norm(total) - 1.0) < 1e-12
     # Per-step angle rounding (~1e-22 rad) and 2000 sequential roundings of ~1e-16: bound 1e-12 rad.
     assert abs(angle_of(total) - 1.0) < 1e-12
@@ -224,22 +216,22 @@ def test_a_million_small_rotations_stay_unit_and_add_up():
 
 def test_quaternion_errors_name_the_parameter():
     with pytest.raises(ValueError, match="axis"):
-        quat_from_axis_angle([0, 0, 0], 1.0)
+        gm.quat_from_axis_angle([0, 0, 0], 1.0)
     with pytest.raises(ValueError, match="radians"):
-        quat_from_axis_angle([0, 1, 0], math.nan)
+        gm.quat_from_axis_angle([0, 1, 0], math.nan)
     with pytest.raises(ValueError, match="q"):
-        quat_normalize([0, 0, 0, 0])
+        gm.quat_normalize([0, 0, 0, 0])
     with pytest.raises(ValueError, match="q"):
-        quat_normalize([1, math.inf, 0, 0])
+        gm.quat_normalize([1, math.inf, 0, 0])
     with pytest.raises(ValueError, match="q"):
-        quat_to_matrix3([0, 0, 0, 0])
+        gm.quat_to_matrix3([0, 0, 0, 0])
 
 
 # --- transforms --------------------------------------------------------------------------------------------
 
 
 def test_trs_is_t_times_r_times_s():
-    q = quat_from_euler([10.0, 20.0, 30.0])
+    q = gm.quat_from_euler([10.0, 20.0, 30.0])
     expected = translation([1, 2, 3]) @ rotation(q) @ scaling([2, 3, 4])
     np.testing.assert_allclose(trs([1, 2, 3], q, [2, 3, 4]), expected, atol=1e-15)
     np.testing.assert_allclose(scaling(2.0), np.diag([2.0, 2.0, 2.0, 1.0]))
@@ -257,25 +249,25 @@ def test_trs_decompose_round_trip(t, q, s, signs):
     assert abs(np.linalg.norm(q2) - 1.0) < 1e-15
     if min(signs) > 0:
         # Without mirroring the parts themselves come back (q up to sign).
-        np.testing.assert_allclose(quat_to_matrix3(q2), quat_to_matrix3(q), atol=1e-14)
+        np.testing.assert_allclose(gm.quat_to_matrix3(q2), gm.quat_to_matrix3(q), atol=1e-14)
 
 
 @pytest.mark.parametrize("s", [(0, 2, 3), (2, 0, 3), (2, 3, 0), (0, 0, 3), (0, 2, 0), (0, 0, 0), (0, -2, 3)])
 def test_decompose_zero_scale_gives_unit_rotation_without_nan(s):
-    q = quat_from_euler([15.0, 40.0, -70.0])
+    q = gm.quat_from_euler([15.0, 40.0, -70.0])
     m = trs([1, 2, 3], q, s)
     t2, q2, s2 = decompose_trs(m)
     assert np.all(np.isfinite(q2)) and abs(np.linalg.norm(q2) - 1.0) < 1e-15
     np.testing.assert_allclose(trs(t2, q2, s2), m, atol=1e-14)
     if s == (0, 0, 0):
-        np.testing.assert_allclose(q2, quat_identity())
+        np.testing.assert_allclose(q2, gm.quat_identity())
 
 
 def test_trs_batch_equals_a_loop_of_trs():
     rng = np.random.default_rng(7)
     n = 257
     t = rng.normal(size=(n, 3)) * 100.0
-    q = quat_normalize(rng.normal(size=(n, 4)))
+    q = gm.quat_normalize(rng.normal(size=(n, 4)))
     s = rng.uniform(-3.0, 3.0, size=(n, 3))
     out = np.full((n, 4, 4), np.nan)
     batch = trs_batch(t, q, s, out=out)
@@ -290,9 +282,9 @@ def test_trs_batch_equals_a_loop_of_trs():
 @pytest.mark.parametrize("s", [(1e-6, 1e-6, 1e-6), (1e6, 1e6, 1e6), (1e-6, 1e6, 1.0), (1e6, -1e-6, 3.0)])
 def test_extreme_scales_stay_finite_and_accurate(s):
     s = np.array(s)
-    q = quat_from_euler([33.0, -12.0, 71.0])
+    q = gm.quat_from_euler([33.0, -12.0, 71.0])
     t = np.array([5.0, -7.0, 11.0])
-    r = quat_to_matrix3(q)
+    r = gm.quat_to_matrix3(q)
     m = trs(t, q, s)
     assert np.all(np.isfinite(m))
     np.testing.assert_allclose(m[:3, :3], r * s, rtol=1e-15)
@@ -318,7 +310,7 @@ def test_extreme_scales_stay_finite_and_accurate(s):
 
 def test_normal_matrix_batch_equals_single():
     rng = np.random.default_rng(5)
-    ms = trs_batch(rng.normal(size=(40, 3)), quat_normalize(rng.normal(size=(40, 4))),
+    ms = trs_batch(rng.normal(size=(40, 3)), gm.quat_normalize(rng.normal(size=(40, 4))),
                    rng.uniform(-2.0, 2.0, size=(40, 3)))
     batch = normal_matrix_batch(ms)
     for i in range(40):
@@ -334,21 +326,21 @@ def test_normal_matrix_keeps_outward_normals_under_mirroring():
 
 @pytest.mark.parametrize("s", [(0, 1, 1), (0, 0, 1), (0, 0, 0), (0, 2e6, 1e-6)])
 def test_zero_scale_normal_matrix_is_finite_and_invert_raises(s):
-    q = quat_from_euler([10.0, 20.0, 30.0])
+    q = gm.quat_from_euler([10.0, 20.0, 30.0])
     m = trs([1, 2, 3], q, s)
     nm = normal_matrix(m)
     assert np.all(np.isfinite(nm))
     if s == (0, 1, 1):
         # A surface flattened onto the plane x = 0 (object space) faces along the rotated x axis.
         got = nm @ np.array([0.3, 0.2, 0.1])
-        np.testing.assert_allclose(got / np.linalg.norm(got), quat_to_matrix3(q)[:, 0], atol=1e-15)
+        np.testing.assert_allclose(got / np.linalg.norm(got), gm.quat_to_matrix3(q)[:, 0], atol=1e-15)
     with pytest.raises(ValueError, match="singular") as err:
         invert_affine(m)
     assert "m " in str(err.value)
 
 
 def test_invert_affine_round_trip_and_rejects_projective():
-    m = trs([1, -2, 3], quat_from_euler([5.0, 60.0, -20.0]), [2.0, 0.5, -3.0])
+    m = trs([1, -2, 3], gm.quat_from_euler([5.0, 60.0, -20.0]), [2.0, 0.5, -3.0])
     np.testing.assert_allclose(invert_affine(m) @ m, np.eye(4), atol=1e-15)
     with pytest.raises(ValueError, match="affine"):
         invert_affine(perspective(60.0, 1.0, 0.1, 10.0))
@@ -376,7 +368,7 @@ def test_look_at_puts_target_on_the_minus_z_axis(eye, target):
     np.testing.assert_allclose(view @ np.r_[target, 1.0], [0, 0, -distance, 1], atol=1e-13 * size)
     # The camera quaternion is the inverse of the view rotation.
     q = look_at_rotation(eye, target)
-    np.testing.assert_allclose(quat_to_matrix3(q), view[:3, :3].T, atol=1e-14)
+    np.testing.assert_allclose(gm.quat_to_matrix3(q), view[:3, :3].T, atol=1e-14)
 
 
 @pytest.mark.parametrize("direction", [(0.0, -1.0, 0.0), (0.0, 1.0, 0.0), (0.0, -1.0, 1e-9), (1e-8, 1.0, 0.0)])

@@ -8,23 +8,15 @@ material, and with a shadow-casting light.
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 import pytest
+from core_shaders import build_shaders
 
-from gandalf_core import Application, Scene
-from gandalf_core.components import (
-    CameraComponent,
-    LightComponent,
-    MaterialComponent,
-    MeshComponent,
-    TransformComponent,
-)
+from gandalf_core import Application, Scene, TransformComponent
+from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, plane, uv_sphere
 
-SHADERS = Path(__file__).parent / "shaders"
 W, H = 96, 72
 
 
@@ -46,10 +38,7 @@ def render(backend: str, scales: list[tuple[float, float, float]], shadows: bool
     scene.create_entity(TransformComponent(eye, quaternion=look_at_rotation(eye, (0, 0, 0))),
                         CameraComponent(60.0, 0.1, 50.0))
     with Application(backend, W, H, headless=True) as app:
-        if backend == "opengl":
-            app.renderer.shaders.build("lit", SHADERS / "lit.vert", SHADERS / "lit.frag")
-        else:
-            app.renderer.shaders.build("lit", SHADERS / "lit.wgsl")
+        build_shaders(app.renderer.shaders, backend, "lit")
         app.add_scene(scene)
         app.run(frames=1)
         return app.capture()
@@ -88,7 +77,7 @@ def test_mirroring_is_seen_at_extreme_scales(s):
     for scale in ((s, s, s), (-s, s, s)):
         scene.create_entity(TransformComponent(scale=scale), MeshComponent("sphere"), MaterialComponent("M"))
     with Application("opengl", 8, 8, headless=True) as app:
-        app.renderer.shaders.build("lit", SHADERS / "lit.vert", SHADERS / "lit.frag")
+        build_shaders(app.renderer.shaders, "opengl", "lit")
         app.add_scene(scene)
         app.step()
         system = next(x for x in scene.systems if isinstance(x, RenderSystem))

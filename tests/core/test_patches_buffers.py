@@ -12,15 +12,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from gandalf_core import Application, Scene
-from gandalf_core.components import (
-    CameraComponent,
-    ClearColorComponent,
-    LightComponent,
-    MaterialComponent,
-    MeshComponent,
-    TransformComponent,
-)
+from gandalf_core import Application, ClearColorComponent, Scene, TransformComponent
+from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.render.errors import MissingResourceError, ShaderCompileError
 from gandalf_core.resources import MaterialData, MeshData, ResourceError

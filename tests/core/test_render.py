@@ -8,38 +8,24 @@ on a few lit pixels).
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 import numpy as np
 import pytest
+from core_shaders import FLAT_FRAG, FLAT_MATERIAL, FLAT_VERT, FLAT_WGSL, SHADERS, build_shaders
 
-from gandalf_core import Application, Scene
-from gandalf_core.components import (
-    CameraComponent,
-    ClearColorComponent,
-    LightComponent,
-    MaterialComponent,
-    MeshComponent,
-    SkyboxComponent,
-    TransformComponent,
-)
+from gandalf_core import Application, ClearColorComponent, Scene, TransformComponent
+from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent, SkyboxComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.render.errors import MissingResourceError, ShaderCompileError
 from gandalf_core.resources import MaterialData, checkerboard, cube, sky_cube, uv_sphere
 from gandalf_tools.testing import LocalDifferences, compare_images
 
-SHADERS = Path(__file__).parent / "shaders"
 W, H = 96, 72
 
 
 def make_app(backend: str, **kwargs) -> Application:
     app = Application(backend, W, H, headless=True, fixed_dt=1 / 60, **kwargs)
-    if backend == "opengl":
-        app.renderer.shaders.build("unlit", SHADERS / "unlit.vert", SHADERS / "unlit.frag")
-        app.renderer.shaders.build("lit", SHADERS / "lit.vert", SHADERS / "lit.frag")
-    else:
-        app.renderer.shaders.build("unlit", SHADERS / "unlit.wgsl")
-        app.renderer.shaders.build("lit", SHADERS / "lit.wgsl")
+    build_shaders(app.renderer.shaders, backend, "unlit", "lit")
     return app
 
 
@@ -366,34 +352,6 @@ def test_overlays_draw_over_the_finished_frame(backend):
 
 
 # --- blending, depth and material values: the same in both backends -------------------------------------
-FLAT_MATERIAL = [("color", "vec4"), ("tint", "vec4"), ("m", "mat4")]
-FLAT_WGSL = """
-#include "frame.wgsl"
-#include "instance.wgsl"
-#include "material.wgsl"
-@vertex fn vs_main(@location(0) position: vec3<f32>, inst: Instance) -> @builtin(position) vec4<f32> {
-    return frame.projection * frame.view * instance_model(inst) * vec4<f32>(position, 1.0);
-}
-@fragment fn fs_main() -> @location(0) vec4<f32> {
-    return vec4<f32>(material.color.rgb * material.tint.rgb + vec3<f32>(0.0, 0.0, material.m[1].x),
-                     material.color.a);
-}
-"""
-FLAT_VERT = """#version 330 core
-#include "frame.glsl"
-#include "instance.glsl"
-layout(location = 0) in vec3 a_position;
-void main() { gl_Position = u_projection * u_view * instance_model() * vec4(a_position, 1.0); }
-"""
-FLAT_FRAG = """#version 330 core
-#include "material.glsl"
-out vec4 f_color;
-void main() {
-    f_color = vec4(material.color.rgb * material.tint.rgb + vec3(0.0, 0.0, material.m[1].x), material.color.a);
-}
-"""
-
-
 def flat_app(backend: str) -> Application:
     app = Application(backend, 32, 32, headless=True, fixed_dt=1 / 60)
     if backend == "opengl":

@@ -5,15 +5,14 @@ the process's memory flat (a small allowance for allocator noise, stated below).
 from __future__ import annotations
 
 import tracemalloc
-from pathlib import Path
 
 import numpy as np
+from core_shaders import build_shaders
 
 from gandalf_core import Application, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.resources import MaterialData, TextureData, cube
 
-SHADERS = Path(__file__).parent / "shaders"
 CYCLES = 1000
 #: Python heap still held at the end from what the last 400 cycles allocated (traced from cycle 600 on, so caches
 #: are warm): well under 1 KB a cycle.
@@ -23,10 +22,7 @@ TRACE_FROM = 600
 
 def app_for(backend: str) -> Application:
     app = Application(backend, 16, 12, headless=True, fixed_dt=1 / 60)
-    if backend == "opengl":
-        app.renderer.shaders.build("unlit", SHADERS / "unlit.vert", SHADERS / "unlit.frag")
-    else:
-        app.renderer.shaders.build("unlit", SHADERS / "unlit.wgsl")
+    build_shaders(app.renderer.shaders, backend, "unlit")
     return app
 
 

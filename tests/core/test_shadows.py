@@ -13,15 +13,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from gandalf_core import Application, Scene
-from gandalf_core.components import (
-    CameraComponent,
-    ClearColorComponent,
-    LightComponent,
-    MaterialComponent,
-    MeshComponent,
-    TransformComponent,
-)
+from gandalf_core import Application, ClearColorComponent, Scene, TransformComponent
+from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, cube, plane
 from gandalf_tools.testing import compare_images

@@ -3,24 +3,18 @@ a texture beyond the device's size limit, and a cube map in a 2-D slot (or a 2-D
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import numpy as np
 import pytest
+from core_shaders import build_shaders
 
 from gandalf_core import Application, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent, SkyboxComponent
 from gandalf_core.resources import MaterialData, ResourceError, TextureData, checkerboard, cube, sky_cube
 
-SHADERS = Path(__file__).parent / "shaders"
-
 
 def app_with_unlit(backend: str) -> Application:
     app = Application(backend, 16, 12, headless=True)
-    if backend == "opengl":
-        app.renderer.shaders.build("unlit", SHADERS / "unlit.vert", SHADERS / "unlit.frag")
-    else:
-        app.renderer.shaders.build("unlit", SHADERS / "unlit.wgsl")
+    build_shaders(app.renderer.shaders, backend, "unlit")
     return app
 
 

@@ -16,30 +16,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from core_shaders import render_scene
 
-from gandalf_core import Application, Scene, TransformSystem
-from gandalf_core.components import (
-    CameraComponent,
-    ClearColorComponent,
-    InfoComponent,
-    LightComponent,
-    LinkComponent,
-    MaterialComponent,
-    MeshComponent,
-    SkyboxComponent,
-    TransformComponent,
-)
+from gandalf_core import ClearColorComponent, InfoComponent, LinkComponent, Scene, TransformComponent, TransformSystem
+from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent, SkyboxComponent
 from gandalf_core.ecs import Component
 from gandalf_core.math import look_at_rotation
-from gandalf_core.resources import (
-    MaterialData,
-    MeshData,
-    TextureData,
-    checkerboard,
-    cube,
-    sky_cube,
-    uv_sphere,
-)
+from gandalf_core.resources import MaterialData, MeshData, TextureData, checkerboard, cube, sky_cube, uv_sphere
 from step07_advanced.usd import (
     USDSceneError,
     USDSceneWarning,
@@ -52,8 +35,6 @@ from step07_advanced.usd import (
 pxr = pytest.importorskip("pxr")
 from pxr import Sdf, Usd, UsdGeom  # noqa: E402
 
-SHADERS = Path(__file__).parent / "shaders"
-W, H = 96, 72
 ROOT = Path(__file__).resolve().parents[2]
 
 
@@ -270,24 +251,11 @@ def test_without_assets_no_texture_files_are_written(tmp_path):
     assert loaded.assets.textures == {} and loaded.assets.meshes.keys() == scene.assets.meshes.keys()
 
 
-def render(backend: str, scene: Scene) -> np.ndarray:
-    with Application(backend, W, H, headless=True, fixed_dt=1 / 60) as app:
-        if backend == "opengl":
-            app.renderer.shaders.build("unlit", SHADERS / "unlit.vert", SHADERS / "unlit.frag")
-            app.renderer.shaders.build("lit", SHADERS / "lit.vert", SHADERS / "lit.frag")
-        else:
-            app.renderer.shaders.build("unlit", SHADERS / "unlit.wgsl")
-            app.renderer.shaders.build("lit", SHADERS / "lit.wgsl")
-        app.add_scene(scene)
-        app.run(frames=2)
-        return app.capture()
-
-
 def test_reloaded_scene_renders_the_same_picture(tmp_path, backend):
     original = full_scene()
     save_scene(original, tmp_path / "s.usdc")
-    before = render(backend, original)
-    after = render(backend, load_scene(tmp_path / "s.usdc"))
+    before = render_scene(backend, original)
+    after = render_scene(backend, load_scene(tmp_path / "s.usdc"))
     assert len(np.unique(before[..., :3].reshape(-1, 3), axis=0)) > 20, "the scene draws something"
     assert np.array_equal(before, after), f"{backend}: largest difference {np.abs(before.astype(int) - after).max()}"
 

@@ -14,17 +14,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from core_shaders import render_scene
 
-from gandalf_core import Application, Scene, TransformSystem
-from gandalf_core.components import (
-    CameraComponent,
-    InfoComponent,
-    LightComponent,
-    LinkComponent,
-    MaterialComponent,
-    MeshComponent,
-    TransformComponent,
-)
+from gandalf_core import Application, InfoComponent, LinkComponent, Scene, TransformComponent, TransformSystem
+from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import quat_from_axis_angle, quat_mul
 from gandalf_core.resources import MaterialData, MeshData, TextureData, checkerboard, cube, linear_to_srgb, uv_sphere
 from gandalf_tools.testing import psnr
@@ -34,7 +27,6 @@ from step07_advanced.usd.foreign import PreviewSurface, decompose
 pxr = pytest.importorskip("pxr")
 from pxr import Gf, Sdf, Usd, UsdGeom, UsdLux, UsdShade, Vt  # noqa: E402
 
-SHADERS = Path(__file__).parent / "shaders"
 W, H = 96, 72
 T = Sdf.ValueTypeNames
 
@@ -473,26 +465,13 @@ def hand_scene(folder: Path) -> Scene:
     return scene
 
 
-def render(backend: str, scene: Scene) -> np.ndarray:
-    with Application(backend, W, H, headless=True, fixed_dt=1 / 60) as app:
-        if backend == "opengl":
-            app.renderer.shaders.build("unlit", SHADERS / "unlit.vert", SHADERS / "unlit.frag")
-            app.renderer.shaders.build("lit", SHADERS / "lit.vert", SHADERS / "lit.frag")
-        else:
-            app.renderer.shaders.build("unlit", SHADERS / "unlit.wgsl")
-            app.renderer.shaders.build("lit", SHADERS / "lit.wgsl")
-        app.add_scene(scene)
-        app.run(frames=2)
-        return app.capture()
-
-
 def test_pxr_scene_renders_like_the_same_scene_built_by_hand(tmp_path, backend):
     path = pxr_scene(tmp_path)
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # everything in this scene maps: no warning
         loaded = load(path)
-    by_hand = render(backend, hand_scene(tmp_path))
-    got = render(backend, loaded)
+    by_hand = render_scene(backend, hand_scene(tmp_path))
+    got = render_scene(backend, loaded)
     colours = len(np.unique(by_hand[..., :3].reshape(-1, 3), axis=0))
     assert colours > 20, f"{backend}: the scene draws something ({colours} colours)"
     value = psnr(by_hand[..., :3], got[..., :3])

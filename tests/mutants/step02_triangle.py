@@ -32,19 +32,12 @@ def _with_layout(pkg, **kwargs):
     patch(pkg, "vertex_data.interleave", interleave)
 
 
-@mutant(MUTANTS, STEP, "interleave", "stride-in-floats", "stride counted in floats (7) instead of bytes (28)")
-def _(pkg):
-    _with_layout(pkg, stride=7)
-
-
-@mutant(MUTANTS, STEP, "interleave", "offset-in-floats", "the colour's offset in floats (3) instead of bytes (12)")
-def _(pkg):
-    _with_layout(pkg, color=(4, 4, 3))
-
-
-@mutant(MUTANTS, STEP, "interleave", "location-1", "the colour at shader location 1 instead of the engine's 4")
-def _(pkg):
-    _with_layout(pkg, color=(1, 4, 12))
+for _name, _text, _slips in [
+    ("stride-in-floats", "stride counted in floats (7) instead of bytes (28)", {"stride": 7}),
+    ("offset-in-floats", "the colour's offset in floats (3) instead of bytes (12)", {"color": (4, 4, 3)}),
+    ("location-1", "the colour at shader location 1 instead of the engine's 4", {"color": (1, 4, 12)}),
+]:
+    mutant(MUTANTS, STEP, "interleave", _name, _text)(lambda pkg, _s=_slips: _with_layout(pkg, **_s))
 
 
 @mutant(MUTANTS, STEP, "interleave", "float64", "returns float64 data (the GPU reads 4-byte floats)")

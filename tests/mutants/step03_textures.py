@@ -62,39 +62,16 @@ def _bricks(pkg, **slips):
     patch(pkg, "bricks.brick_texture", brick_texture)
 
 
-@mutant(MUTANTS, STEP, "brick_texture", "no-offset", "every course starts at x = 0 (stack bond, no half-brick shift)")
-def _(pkg):
-    _bricks(pkg, no_shift=True)
-
-
-@mutant(MUTANTS, STEP, "brick_texture", "even-shifted", "shifts the even courses instead of the odd ones")
-def _(pkg):
-    _bricks(pkg, even_shift=True)
-
-
-@mutant(MUTANTS, STEP, "brick_texture", "bed-at-bottom", "the bed joint along the bottom of each course")
-def _(pkg):
-    _bricks(pkg, bed_at_bottom=True)
-
-
-@mutant(MUTANTS, STEP, "brick_texture", "per-texel", "a random factor per texel instead of per brick (noise)")
-def _(pkg):
-    _bricks(pkg, per_texel=True)
-
-
-@mutant(MUTANTS, STEP, "brick_texture", "no-wrap", "bricks not numbered modulo the bricks per course (seam)")
-def _(pkg):
-    _bricks(pkg, no_wrap=True)
-
-
-@mutant(MUTANTS, STEP, "brick_texture", "only-brighter", "factors from [1, 1 + variation] instead of 1 ± variation")
-def _(pkg):
-    _bricks(pkg, only_brighter=True)
-
-
-@mutant(MUTANTS, STEP, "brick_texture", "drops-settings", "ignores the extra settings (name, wrap, filter)")
-def _(pkg):
-    _bricks(pkg, drop_settings=True)
+for _name, _text, _slips in [
+    ("no-offset", "every course starts at x = 0 (stack bond, no half-brick shift)", {"no_shift": True}),
+    ("even-shifted", "shifts the even courses instead of the odd ones", {"even_shift": True}),
+    ("bed-at-bottom", "the bed joint along the bottom of each course", {"bed_at_bottom": True}),
+    ("per-texel", "a random factor per texel instead of per brick (noise)", {"per_texel": True}),
+    ("no-wrap", "bricks not numbered modulo the bricks per course (seam)", {"no_wrap": True}),
+    ("only-brighter", "factors from [1, 1 + variation] instead of 1 ± variation", {"only_brighter": True}),
+    ("drops-settings", "ignores the extra settings (name, wrap, filter)", {"drop_settings": True}),
+]:
+    mutant(MUTANTS, STEP, "brick_texture", _name, _text)(lambda pkg, _s=_slips: _bricks(pkg, **_s))
 
 
 @mutant(MUTANTS, STEP, "brick_texture", "mortar-unchecked", "accepts a mortar as wide as the brick")
@@ -143,29 +120,14 @@ def _uvs(pkg, **slips):
     patch(pkg, "uvs.cube_cross_uvs", cube_cross_uvs)
 
 
-@mutant(MUTANTS, STEP, "cube_cross_uvs", "v-up", "v grows up the image (forgets that row 0 is the top)")
-def _(pkg):
-    _uvs(pkg, v_up=True)
-
-
-@mutant(MUTANTS, STEP, "cube_cross_uvs", "mirrored-u", "u runs against the face's right direction (mirrored)")
-def _(pkg):
-    _uvs(pkg, mirror_u=True)
-
-
-@mutant(MUTANTS, STEP, "cube_cross_uvs", "unit-box", "assumes a unit cube (no division by the box size)")
-def _(pkg):
-    _uvs(pkg, unit_box=True)
-
-
-@mutant(MUTANTS, STEP, "cube_cross_uvs", "signed-axis", "picks the face by the largest signed component, not |n|")
-def _(pkg):
-    _uvs(pkg, signed_axis=True)
-
-
-@mutant(MUTANTS, STEP, "cube_cross_uvs", "swapped-cell", "column and row of the cell swapped")
-def _(pkg):
-    _uvs(pkg, swap_cell=True)
+for _name, _text, _slips in [
+    ("v-up", "v grows up the image (forgets that row 0 is the top)", {"v_up": True}),
+    ("mirrored-u", "u runs against the face's right direction (mirrored)", {"mirror_u": True}),
+    ("unit-box", "assumes a unit cube (no division by the box size)", {"unit_box": True}),
+    ("signed-axis", "picks the face by the largest signed component, not |n|", {"signed_axis": True}),
+    ("swapped-cell", "column and row of the cell swapped", {"swap_cell": True}),
+]:
+    mutant(MUTANTS, STEP, "cube_cross_uvs", _name, _text)(lambda pkg, _s=_slips: _uvs(pkg, **_s))
 
 
 @mutant(MUTANTS, STEP, "cube_cross_uvs", "zero-normal", "a zero normal goes through (no error)")

@@ -38,34 +38,16 @@ def _perspective(pkg, *, focal=None, aspect_times=False, depth=None, w_sign=-1.0
     patch(pkg, "projection.perspective", perspective)
 
 
-@mutant(MUTANTS, STEP, "perspective", "degrees", "tan of the angle in degrees (no conversion to radians)")
-def _(pkg):
-    _perspective(pkg, focal=lambda fov: 1.0 / math.tan(fov / 2.0))
-
-
-@mutant(MUTANTS, STEP, "perspective", "full-angle", "tan(fovy) instead of tan(fovy / 2)")
-def _(pkg):
-    _perspective(pkg, focal=lambda fov: 1.0 / math.tan(math.radians(fov)))
-
-
-@mutant(MUTANTS, STEP, "perspective", "aspect-times", "multiplies x by the aspect instead of dividing")
-def _(pkg):
-    _perspective(pkg, aspect_times=True)
-
-
-@mutant(MUTANTS, STEP, "perspective", "opengl-only", "ignores depth_range: always [-1, 1]")
-def _(pkg):
-    _perspective(pkg, depth=(-1.0, 1.0))
-
-
-@mutant(MUTANTS, STEP, "perspective", "left-handed-w", "w_clip = +z (a left-handed camera looking down +Z)")
-def _(pkg):
-    _perspective(pkg, w_sign=1.0)
-
-
-@mutant(MUTANTS, STEP, "perspective", "no-checks", "no argument checks (far <= near, fovy 180, ... go through)")
-def _(pkg):
-    _perspective(pkg, checks=False)
+for _name, _text, _slips in [
+    ("degrees", "tan of the angle in degrees (no conversion to radians)",
+     {"focal": lambda fov: 1.0 / math.tan(fov / 2.0)}),
+    ("full-angle", "tan(fovy) instead of tan(fovy / 2)", {"focal": lambda fov: 1.0 / math.tan(math.radians(fov))}),
+    ("aspect-times", "multiplies x by the aspect instead of dividing", {"aspect_times": True}),
+    ("opengl-only", "ignores depth_range: always [-1, 1]", {"depth": (-1.0, 1.0)}),
+    ("left-handed-w", "w_clip = +z (a left-handed camera looking down +Z)", {"w_sign": 1.0}),
+    ("no-checks", "no argument checks (far <= near, fovy 180, ... go through)", {"checks": False}),
+]:
+    mutant(MUTANTS, STEP, "perspective", _name, _text)(lambda pkg, _s=_slips: _perspective(pkg, **_s))
 
 
 # --- look_at ---------------------------------------------------------------------------------------
@@ -105,34 +87,15 @@ def _look_at(
     patch(pkg, "projection.look_at", look_at)
 
 
-@mutant(MUTANTS, STEP, "look_at", "left-handed", "right = up x forward (the other handedness)")
-def _(pkg):
-    _look_at(pkg, left_handed=True)
-
-
-@mutant(MUTANTS, STEP, "look_at", "eye-not-rotated", "translation -eye, not rotated into camera space")
-def _(pkg):
-    _look_at(pkg, untransformed_eye=True)
-
-
-@mutant(MUTANTS, STEP, "look_at", "camera-to-world", "returns the camera's model matrix, not its inverse")
-def _(pkg):
-    _look_at(pkg, inverse=True)
-
-
-@mutant(MUTANTS, STEP, "look_at", "right-not-normalised", "forgets to normalise right (up not at 90 degrees)")
-def _(pkg):
-    _look_at(pkg, normalise_right=False)
-
-
-@mutant(MUTANTS, STEP, "look_at", "columns-for-rows", "r, u, -f as columns instead of rows (transposed rotation)")
-def _(pkg):
-    _look_at(pkg, transpose=True)
-
-
-@mutant(MUTANTS, STEP, "look_at", "no-checks", "no check for target == eye or a parallel up")
-def _(pkg):
-    _look_at(pkg, checks=False)
+for _name, _text, _slips in [
+    ("left-handed", "right = up x forward (the other handedness)", {"left_handed": True}),
+    ("eye-not-rotated", "translation -eye, not rotated into camera space", {"untransformed_eye": True}),
+    ("camera-to-world", "returns the camera's model matrix, not its inverse", {"inverse": True}),
+    ("right-not-normalised", "forgets to normalise right (up not at 90 degrees)", {"normalise_right": False}),
+    ("columns-for-rows", "r, u, -f as columns instead of rows (transposed rotation)", {"transpose": True}),
+    ("no-checks", "no check for target == eye or a parallel up", {"checks": False}),
+]:
+    mutant(MUTANTS, STEP, "look_at", _name, _text)(lambda pkg, _s=_slips: _look_at(pkg, **_s))
 
 
 # --- OrbitCameraSystem -----------------------------------------------------------------------------
@@ -182,46 +145,15 @@ def _orbit(pkg, **slips):
     patch(pkg, "orbit.OrbitCameraSystem", OrbitCameraSystem)
 
 
-@mutant(MUTANTS, STEP, "OrbitCameraSystem", "radians", "uses yaw and pitch (degrees) as radians")
-def _(pkg):
-    _orbit(pkg, radians=True)
-
-
-@mutant(MUTANTS, STEP, "OrbitCameraSystem", "yaw-sign", "yaw += dx (the orbit turns the wrong way)")
-def _(pkg):
-    _orbit(pkg, yaw_sign=True)
-
-
-@mutant(MUTANTS, STEP, "OrbitCameraSystem", "no-pitch-clamp", "pitch not clamped (the camera flips over the pole)")
-def _(pkg):
-    _orbit(pkg, no_pitch_clamp=True)
-
-
-@mutant(MUTANTS, STEP, "OrbitCameraSystem", "no-zoom-clamp", "distance not clamped to [min, max]")
-def _(pkg):
-    _orbit(pkg, no_zoom_clamp=True)
-
-
-@mutant(MUTANTS, STEP, "OrbitCameraSystem", "zoom-sign", "scrolling zooms the wrong way")
-def _(pkg):
-    _orbit(pkg, zoom_sign=True)
-
-
-@mutant(MUTANTS, STEP, "OrbitCameraSystem", "orbit-origin", "orbits the world origin, not the target")
-def _(pkg):
-    _orbit(pkg, origin=True)
-
-
-@mutant(MUTANTS, STEP, "OrbitCameraSystem", "any-button", "turns while any mouse button is down")
-def _(pkg):
-    _orbit(pkg, any_button=True)
-
-
-@mutant(MUTANTS, STEP, "OrbitCameraSystem", "yaw-from-x", "yaw measured from +X (sin and cos swapped)")
-def _(pkg):
-    _orbit(pkg, yaw_from_x=True)
-
-
-@mutant(MUTANTS, STEP, "OrbitCameraSystem", "no-look-at", "moves the camera but never turns it to the target")
-def _(pkg):
-    _orbit(pkg, no_rotation=True)
+for _name, _text, _slips in [
+    ("radians", "uses yaw and pitch (degrees) as radians", {"radians": True}),
+    ("yaw-sign", "yaw += dx (the orbit turns the wrong way)", {"yaw_sign": True}),
+    ("no-pitch-clamp", "pitch not clamped (the camera flips over the pole)", {"no_pitch_clamp": True}),
+    ("no-zoom-clamp", "distance not clamped to [min, max]", {"no_zoom_clamp": True}),
+    ("zoom-sign", "scrolling zooms the wrong way", {"zoom_sign": True}),
+    ("orbit-origin", "orbits the world origin, not the target", {"origin": True}),
+    ("any-button", "turns while any mouse button is down", {"any_button": True}),
+    ("yaw-from-x", "yaw measured from +X (sin and cos swapped)", {"yaw_from_x": True}),
+    ("no-look-at", "moves the camera but never turns it to the target", {"no_rotation": True}),
+]:
+    mutant(MUTANTS, STEP, "OrbitCameraSystem", _name, _text)(lambda pkg, _s=_slips: _orbit(pkg, **_s))

@@ -36,29 +36,16 @@ def _house(pkg, walls_offset=(0.0, 0.5, 0.0), roof_offset=(0.0, 1.0, 0.0), base=
     patch(pkg, "house.house_meshes", house_meshes)
 
 
-@mutant(MUTANTS, STEP, "house_meshes", "walls-sunk", "walls centred on the origin (half under the ground)")
-def _(pkg):
-    _house(pkg, walls_offset=(0.0, 0.0, 0.0), roof_offset=(0.0, 0.5, 0.0))
-
-
-@mutant(MUTANTS, STEP, "house_meshes", "roof-on-ground", "roof left at y = 0, inside the walls")
-def _(pkg):
-    _house(pkg, roof_offset=(0.0, 0.0, 0.0))
-
-
-@mutant(MUTANTS, STEP, "house_meshes", "no-overhang", "roof base as wide as the walls")
-def _(pkg):
-    _house(pkg, base=1.0)
-
-
-@mutant(MUTANTS, STEP, "house_meshes", "drops-attributes", "rebuilds the meshes from positions only (no normals, uvs)")
-def _(pkg):
-    _house(pkg, keep=False)
-
-
-@mutant(MUTANTS, STEP, "house_meshes", "double-size", "walls of size 2 (cube's size read as half-extent)")
-def _(pkg):
-    _house(pkg, walls_offset=(0.0, 1.0, 0.0), roof_offset=(0.0, 2.0, 0.0), wall_size=2.0)
+for _name, _text, _slips in [
+    ("walls-sunk", "walls centred on the origin (half under the ground)",
+     {"walls_offset": (0.0, 0.0, 0.0), "roof_offset": (0.0, 0.5, 0.0)}),
+    ("roof-on-ground", "roof left at y = 0, inside the walls", {"roof_offset": (0.0, 0.0, 0.0)}),
+    ("no-overhang", "roof base as wide as the walls", {"base": 1.0}),
+    ("drops-attributes", "rebuilds the meshes from positions only (no normals, uvs)", {"keep": False}),
+    ("double-size", "walls of size 2 (cube's size read as half-extent)",
+     {"walls_offset": (0.0, 1.0, 0.0), "roof_offset": (0.0, 2.0, 0.0), "wall_size": 2.0}),
+]:
+    mutant(MUTANTS, STEP, "house_meshes", _name, _text)(lambda pkg, _s=_slips: _house(pkg, **_s))
 
 
 # --- brick_texture_data ----------------------------------------------------------------------------
@@ -86,34 +73,16 @@ def _texture(
         patch(pkg, "house.brick_texture_data", brick_texture_data)
 
 
-@mutant(MUTANTS, STEP, "brick_texture_data", "no-mortar", "forgets the mortar joints: one brick colour")
-def _(pkg):
-    _texture(pkg, joint_rule=lambda j: np.zeros_like(j))
-
-
-@mutant(MUTANTS, STEP, "brick_texture_data", "inverted-joints", "mortar where the bricks are and bricks in the joints")
-def _(pkg):
-    _texture(pkg, joint_rule=lambda j: ~j)
-
-
-@mutant(MUTANTS, STEP, "brick_texture_data", "grey", "brick and mortar the same grey")
-def _(pkg):
-    _texture(pkg, brick=(0.6, 0.6, 0.6), mortar=(0.6, 0.6, 0.6))
-
-
-@mutant(MUTANTS, STEP, "brick_texture_data", "small", "a 32 x 32 texture whatever size is asked")
-def _(pkg):
-    _texture(pkg, size=32)
-
-
-@mutant(MUTANTS, STEP, "brick_texture_data", "stack-bond", "no half-brick shift between courses")
-def _(pkg):
-    _texture(pkg, shift=False)
-
-
-@mutant(MUTANTS, STEP, "brick_texture_data", "byte-colours", "colours given in 0-255 (clipped to white)")
-def _(pkg):
-    _texture(pkg, brick=(158.0, 61.0, 43.0), mortar=(209.0, 204.0, 191.0))
+for _name, _text, _slips in [
+    ("no-mortar", "forgets the mortar joints: one brick colour", {"joint_rule": lambda j: np.zeros_like(j)}),
+    ("inverted-joints", "mortar where the bricks are and bricks in the joints", {"joint_rule": lambda j: ~j}),
+    ("grey", "brick and mortar the same grey", {"brick": (0.6, 0.6, 0.6), "mortar": (0.6, 0.6, 0.6)}),
+    ("small", "a 32 x 32 texture whatever size is asked", {"size": 32}),
+    ("stack-bond", "no half-brick shift between courses", {"shift": False}),
+    ("byte-colours", "colours given in 0-255 (clipped to white)",
+     {"brick": (158.0, 61.0, 43.0), "mortar": (209.0, 204.0, 191.0)}),
+]:
+    mutant(MUTANTS, STEP, "brick_texture_data", _name, _text)(lambda pkg, _s=_slips: _texture(pkg, **_s))
 
 
 # --- house_material_data ---------------------------------------------------------------------------
@@ -179,29 +148,14 @@ def _camera(
     patch(pkg, "house.house_camera", house_camera)
 
 
-@mutant(MUTANTS, STEP, "house_camera", "ignores-aspect", "drops the aspect argument")
-def _(pkg):
-    _camera(pkg, keep_aspect=False)
-
-
-@mutant(MUTANTS, STEP, "house_camera", "looks-away", "look_at_rotation(target, eye): turned the wrong way")
-def _(pkg):
-    _camera(pkg, swap=True)
-
-
-@mutant(MUTANTS, STEP, "house_camera", "radians-fov", "field of view given in radians (0.785 degrees)")
-def _(pkg):
-    _camera(pkg, fov=math.radians(45.0))
-
-
-@mutant(MUTANTS, STEP, "house_camera", "too-far", "the camera ten times as far away")
-def _(pkg):
-    _camera(pkg, eye=(0.0, 8.8, 42.0))
-
-
-@mutant(MUTANTS, STEP, "house_camera", "not-aimed", "placed but never turned towards the house")
-def _(pkg):
-    _camera(pkg, eye=(0.0, 4.0, 1.2), aim=False)
+for _name, _text, _slips in [
+    ("ignores-aspect", "drops the aspect argument", {"keep_aspect": False}),
+    ("looks-away", "look_at_rotation(target, eye): turned the wrong way", {"swap": True}),
+    ("radians-fov", "field of view given in radians (0.785 degrees)", {"fov": math.radians(45.0)}),
+    ("too-far", "the camera ten times as far away", {"eye": (0.0, 8.8, 42.0)}),
+    ("not-aimed", "placed but never turned towards the house", {"eye": (0.0, 4.0, 1.2), "aim": False}),
+]:
+    mutant(MUTANTS, STEP, "house_camera", _name, _text)(lambda pkg, _s=_slips: _camera(pkg, **_s))
 
 
 # --- HouseRotationSystem ---------------------------------------------------------------------------
@@ -227,34 +181,15 @@ def _rotation(pkg, **slips):
     patch(pkg, "house.HouseRotationSystem", HouseRotationSystem)
 
 
-@mutant(MUTANTS, STEP, "HouseRotationSystem", "radians", "the angle in degrees passed as radians")
-def _(pkg):
-    _rotation(pkg, radians=True)
-
-
-@mutant(MUTANTS, STEP, "HouseRotationSystem", "no-pause", "the pause key does nothing")
-def _(pkg):
-    _rotation(pkg, no_pause=True)
-
-
-@mutant(MUTANTS, STEP, "HouseRotationSystem", "pause-once", "the pause key pauses but never resumes")
-def _(pkg):
-    _rotation(pkg, pause_once=True)
-
-
-@mutant(MUTANTS, STEP, "HouseRotationSystem", "per-frame", "speed degrees per frame, not per second")
-def _(pkg):
-    _rotation(pkg, per_frame=True)
-
-
-@mutant(MUTANTS, STEP, "HouseRotationSystem", "x-axis", "turns about x instead of y")
-def _(pkg):
-    _rotation(pkg, x_axis=True)
-
-
-@mutant(MUTANTS, STEP, "HouseRotationSystem", "no-wrap", "the angle grows past 360")
-def _(pkg):
-    _rotation(pkg, no_wrap=True)
+for _name, _text, _slips in [
+    ("radians", "the angle in degrees passed as radians", {"radians": True}),
+    ("no-pause", "the pause key does nothing", {"no_pause": True}),
+    ("pause-once", "the pause key pauses but never resumes", {"pause_once": True}),
+    ("per-frame", "speed degrees per frame, not per second", {"per_frame": True}),
+    ("x-axis", "turns about x instead of y", {"x_axis": True}),
+    ("no-wrap", "the angle grows past 360", {"no_wrap": True}),
+]:
+    mutant(MUTANTS, STEP, "HouseRotationSystem", _name, _text)(lambda pkg, _s=_slips: _rotation(pkg, **_s))
 
 
 # --- integrators -----------------------------------------------------------------------------------
@@ -320,26 +255,11 @@ def _rk4(pkg, *, weights=(1.0, 2.0, 2.0, 1.0), k2=0.5, k3=0.5, k4=1.0, stage_vel
     patch(pkg, "integrators.rk4_step", rk4_step)
 
 
-@mutant(MUTANTS, STEP, "rk4_step", "equal-weights", "weights 1, 1, 1, 1 instead of 1, 2, 2, 1")
-def _(pkg):
-    _rk4(pkg, weights=(1.0, 1.0, 1.0, 1.0))
-
-
-@mutant(MUTANTS, STEP, "rk4_step", "full-step-k2", "k2 evaluated a whole step ahead")
-def _(pkg):
-    _rk4(pkg, k2=1.0)
-
-
-@mutant(MUTANTS, STEP, "rk4_step", "half-step-k4", "k4 evaluated only half a step ahead")
-def _(pkg):
-    _rk4(pkg, k4=0.5)
-
-
-@mutant(MUTANTS, STEP, "rk4_step", "frozen-velocity", "the position stages all use the starting velocity")
-def _(pkg):
-    _rk4(pkg, stage_velocity=False)
-
-
-@mutant(MUTANTS, STEP, "rk4_step", "euler-position", "RK4 for the velocity but x + v dt for the position")
-def _(pkg):
-    _rk4(pkg, euler_x=True)
+for _name, _text, _slips in [
+    ("equal-weights", "weights 1, 1, 1, 1 instead of 1, 2, 2, 1", {"weights": (1.0, 1.0, 1.0, 1.0)}),
+    ("full-step-k2", "k2 evaluated a whole step ahead", {"k2": 1.0}),
+    ("half-step-k4", "k4 evaluated only half a step ahead", {"k4": 0.5}),
+    ("frozen-velocity", "the position stages all use the starting velocity", {"stage_velocity": False}),
+    ("euler-position", "RK4 for the velocity but x + v dt for the position", {"euler_x": True}),
+]:
+    mutant(MUTANTS, STEP, "rk4_step", _name, _text)(lambda pkg, _s=_slips: _rk4(pkg, **_s))

@@ -116,41 +116,22 @@ def _refract(pkg, *, tir_zero=True, invert_eta=False, cos_sign=1.0):
     patch(pkg, "optics.refract", refract)
 
 
-@mutant(MUTANTS, STEP, "reflect_refract", "refract-no-tir", "refract: no zero vector on total internal reflection")
-def _(pkg):
-    _refract(pkg, tir_zero=False)
-
-
-@mutant(MUTANTS, STEP, "reflect_refract", "refract-inverted-eta", "refract: uses 1 / eta (n2 / n1 for n1 / n2)")
-def _(pkg):
-    _refract(pkg, invert_eta=True)
-
-
-@mutant(MUTANTS, STEP, "reflect_refract", "refract-cos-sign", "refract: eta cos_i - sqrt(k) (sign of the root)")
-def _(pkg):
-    _refract(pkg, cos_sign=-1.0)
+for _name, _text, _slips in [
+    ("refract-no-tir", "refract: no zero vector on total internal reflection", {"tir_zero": False}),
+    ("refract-inverted-eta", "refract: uses 1 / eta (n2 / n1 for n1 / n2)", {"invert_eta": True}),
+    ("refract-cos-sign", "refract: eta cos_i - sqrt(k) (sign of the root)", {"cos_sign": -1.0}),
+]:
+    mutant(MUTANTS, STEP, "reflect_refract", _name, _text)(lambda pkg, _s=_slips: _refract(pkg, **_s))
 
 
 # --- reflect / refract: shaders --------------------------------------------------------------------
 
-shader_mutant(
-    MUTANTS,
-    STEP,
-    "reflect_refract",
-    "shader-reflect-sign",
-    "reflect_direction: i + 2 (n.i) n in both shaders",
-    [
+for _name, _text, _edits in [
+    ("shader-reflect-sign", "reflect_direction: i + 2 (n.i) n in both shaders", [
         ("shading.glsl", "return i - 2.0 * dot(n, i) * n;", "return i + 2.0 * dot(n, i) * n;"),
         ("shading.wgsl", "return i - 2.0 * dot(n, i) * n;", "return i + 2.0 * dot(n, i) * n;"),
-    ],
-)
-shader_mutant(
-    MUTANTS,
-    STEP,
-    "reflect_refract",
-    "shader-inverted-eta",
-    "refract_direction: 1 / eta in both shaders",
-    [
+    ]),
+    ("shader-inverted-eta", "refract_direction: 1 / eta in both shaders", [
         ("shading.glsl", "float cos_i = dot(n, i);", "float cos_i = dot(n, i);\n    eta = 1.0 / eta;"),
         (
             "shading.wgsl",
@@ -158,43 +139,24 @@ shader_mutant(
             "fn refract_direction(i: vec3<f32>, n: vec3<f32>, eta_in: f32) -> vec3<f32> {\n"
             "    let eta = 1.0 / eta_in;\n",
         ),
-    ],
-)
-shader_mutant(
-    MUTANTS,
-    STEP,
-    "reflect_refract",
-    "shader-tir-reflects",
-    "refract_direction returns the mirror direction on total internal reflection instead of zero",
-    [
+    ]),
+    ("shader-tir-reflects",
+     "refract_direction returns the mirror direction on total internal reflection instead of zero", [
         ("shading.glsl", "return vec3(0.0);", "return reflect_direction(i, n);"),
         ("shading.wgsl", "return vec3<f32>(0.0);", "return reflect_direction(i, n);"),
-    ],
-)
-shader_mutant(
-    MUTANTS,
-    STEP,
-    "reflect_refract",
-    "glsl-only-root-sign",
-    "refract_direction: - sqrt(k) only in the GLSL file (the WGSL one is right)",
-    [
+    ]),
+    ("glsl-only-root-sign", "refract_direction: - sqrt(k) only in the GLSL file (the WGSL one is right)", [
         (
             "shading.glsl",
             "return eta * i - (eta * cos_i + sqrt(k)) * n;",
             "return eta * i - (eta * cos_i - sqrt(k)) * n;",
         ),
-    ],
-)
-shader_mutant(
-    MUTANTS,
-    STEP,
-    "reflect_refract",
-    "wgsl-only-reflect-no-2",
-    "reflect_direction without the 2, only in the WGSL file",
-    [
+    ]),
+    ("wgsl-only-reflect-no-2", "reflect_direction without the 2, only in the WGSL file", [
         ("shading.wgsl", "return i - 2.0 * dot(n, i) * n;", "return i - dot(n, i) * n;"),
-    ],
-)
+    ]),
+]:
+    shader_mutant(MUTANTS, STEP, "reflect_refract", _name, _text, _edits)
 
 
 # --- blinn_phong: shaders --------------------------------------------------------------------------
@@ -212,39 +174,20 @@ shader_mutant(
     ],
 )
 # --8<-- [end:shader-example]
-shader_mutant(
-    MUTANTS,
-    STEP,
-    "blinn_phong",
-    "phong-lobe",
-    "Phong's reflect(-l, n).v instead of the half vector",
-    [
+for _name, _text, _edits in [
+    ("phong-lobe", "Phong's reflect(-l, n).v instead of the half vector", [
         ("shading.glsl", "pow(max(dot(n, h), 0.0), shininess)", "pow(max(dot(reflect(-l, n), v), 0.0), shininess)"),
         ("shading.wgsl", "pow(max(dot(n, h), 0.0), shininess)", "pow(max(dot(reflect(-l, n), v), 0.0), shininess)"),
-    ],
-)
-shader_mutant(
-    MUTANTS,
-    STEP,
-    "blinn_phong",
-    "h-not-normalised",
-    "the half vector l + v used without normalising",
-    [
+    ]),
+    ("h-not-normalised", "the half vector l + v used without normalising", [
         ("shading.glsl", "h = h_length > 1e-6 ? h / h_length : n;", "h = h_length > 1e-6 ? h : n;"),
         (
             "shading.wgsl",
             "select(n, h_sum / max(h_length, 1e-6), h_length > 1e-6)",
             "select(n, h_sum, h_length > 1e-6)",
         ),
-    ],
-)
-shader_mutant(
-    MUTANTS,
-    STEP,
-    "blinn_phong",
-    "pow-0-0",
-    "shininess 0 not special-cased (pow(0, 0) is undefined)",
-    [
+    ]),
+    ("pow-0-0", "shininess 0 not special-cased (pow(0, 0) is undefined)", [
         (
             "shading.glsl",
             "float lobe = shininess > 0.0 ? pow(max(dot(n, h), 0.0), shininess) : 1.0;",
@@ -255,15 +198,8 @@ shader_mutant(
             "let lobe = select(1.0, pow(max(dot(n, h), 0.0), shininess), shininess > 0.0);",
             "let lobe = pow(max(dot(n, h), 0.0), shininess);",
         ),
-    ],
-)
-shader_mutant(
-    MUTANTS,
-    STEP,
-    "blinn_phong",
-    "specular-without-nl",
-    "the highlight not scaled by n.l",
-    [
+    ]),
+    ("specular-without-nl", "the highlight not scaled by n.l", [
         (
             "shading.glsl",
             "return (albedo + specular * lobe) * radiance * n_dot_l;",
@@ -274,15 +210,8 @@ shader_mutant(
             "return (albedo + specular * lobe) * radiance * n_dot_l;",
             "return (albedo * n_dot_l + specular * lobe) * radiance;",
         ),
-    ],
-)
-shader_mutant(
-    MUTANTS,
-    STEP,
-    "blinn_phong",
-    "tinted-highlight",
-    "the highlight tinted by the albedo (not white)",
-    [
+    ]),
+    ("tinted-highlight", "the highlight tinted by the albedo (not white)", [
         (
             "shading.glsl",
             "return (albedo + specular * lobe) * radiance * n_dot_l;",
@@ -293,16 +222,10 @@ shader_mutant(
             "return (albedo + specular * lobe) * radiance * n_dot_l;",
             "return albedo * (1.0 + specular * lobe) * radiance * n_dot_l;",
         ),
-    ],
-)
-shader_mutant(
-    MUTANTS,
-    STEP,
-    "blinn_phong",
-    "h-sign",
-    "the half vector from l - v",
-    [
+    ]),
+    ("h-sign", "the half vector from l - v", [
         ("shading.glsl", "vec3 h = l + v;", "vec3 h = l - v;"),
         ("shading.wgsl", "let h_sum = l + v;", "let h_sum = l - v;"),
-    ],
-)
+    ]),
+]:
+    shader_mutant(MUTANTS, STEP, "blinn_phong", _name, _text, _edits)

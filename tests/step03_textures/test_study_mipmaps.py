@@ -6,9 +6,8 @@ on the minified (far) half of the floor by a wide margin, and mipmaps must help 
 
 from __future__ import annotations
 
-import json
-
 import pytest
+from cli_checks import check_help_only_prints_help, run_study
 
 from step03_textures import study_mipmaps as study
 
@@ -39,16 +38,10 @@ def test_the_reference_is_the_texture_where_a_pixel_covers_few_texels():
 def test_main_writes_json_table_and_plot(tmp_path):
     args = ["--out", str(tmp_path), "--quick", "--backends", "opengl", "--size", "32", "24", "--ss", "2",
             "--frames", "1", "--repeats", "1"]
-    assert study.main(args) == 0
-    result = json.loads((tmp_path / f"{study.STEM}.json").read_text())
+    result, table = run_study(study.main, args, tmp_path, study.STEM)
     assert [r["sampler"] for r in result["rows"]] == list(study.SAMPLERS)
-    assert "| API |" in (tmp_path / f"{study.STEM}.md").read_text()
-    assert (tmp_path / f"{study.STEM}.png").stat().st_size > 1000
+    assert "| API |" in table
 
 
 def test_help_only_prints_help(tmp_path, capsys, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    with pytest.raises(SystemExit) as stop:
-        study.main(["--help"])
-    assert stop.value.code == 0 and "usage:" in capsys.readouterr().out
-    assert not any(tmp_path.iterdir()), "--help wrote files"
+    check_help_only_prints_help(study.main, tmp_path, capsys, monkeypatch)

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from cli_checks import check_main_writes_a_png_and_help_only_helps
 
 from step04_camera import uniforms_gl, uniforms_wgpu
 
@@ -53,12 +54,4 @@ def test_the_projections_differ_only_in_the_depth_range():
 
 @pytest.mark.parametrize("module", [uniforms_gl, uniforms_wgpu], ids=["gl", "wgpu"])
 def test_main_writes_a_png_and_help_only_helps(module, tmp_path, capsys):
-    out = tmp_path / "frame.png"
-    assert module.main(["--out", str(out), "--size", "32x24"]) == 0
-    from PIL import Image
-    assert Image.open(out).size == (32, 24)
-    with pytest.raises(SystemExit) as exit_info:
-        module.main(["--help"])
-    assert exit_info.value.code == 0
-    assert "--out" in capsys.readouterr().out
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["frame.png"]
+    check_main_writes_a_png_and_help_only_helps(module, tmp_path, capsys)

@@ -7,10 +7,9 @@ float32 bound (one depth-buffer step, or one float32 step of d). At s = 0 the tw
 
 from __future__ import annotations
 
-import json
-
 import numpy as np
 import pytest
+from cli_checks import check_help_only_prints_help, run_study
 
 from step04_camera import study_depth as study
 
@@ -41,16 +40,10 @@ def test_the_bound_grows_as_d_squared_for_standard_and_as_d_for_reverse_z():
 def test_main_writes_json_table_and_plot(tmp_path):
     args = ["--out", str(tmp_path), "--quick", "--backends", "opengl", "--resolution", "4", "--frames", "1",
             "--repeats", "1"]
-    assert study.main(args) == 0
-    result = json.loads((tmp_path / f"{study.STEM}.json").read_text())
+    result, table = run_study(study.main, args, tmp_path, study.STEM)
     assert {r["mapping"] for r in result["rows"]} == {m[0] for m in study.QUICK_MAPPINGS}
-    assert "float32 bound" in (tmp_path / f"{study.STEM}.md").read_text()
-    assert (tmp_path / f"{study.STEM}.png").stat().st_size > 1000
+    assert "float32 bound" in table
 
 
 def test_help_only_prints_help(tmp_path, capsys, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    with pytest.raises(SystemExit) as stop:
-        study.main(["--help"])
-    assert stop.value.code == 0 and "usage:" in capsys.readouterr().out
-    assert not any(tmp_path.iterdir()), "--help wrote files"
+    check_help_only_prints_help(study.main, tmp_path, capsys, monkeypatch)

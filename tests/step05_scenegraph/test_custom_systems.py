@@ -11,9 +11,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from step05_helpers import check_both_apis_agree, picture, run_scene
 
-from gandalf_core import Scene, TransformComponent, TransformSystem
-from gandalf_tools.testing import compare_images, compare_to_reference
+from gandalf_core import Scene, TransformComponent
+from gandalf_tools.testing import compare_to_reference
 from step05_scenegraph.custom_systems import opengl, webgpu
 from step05_scenegraph.custom_systems.components import GravityComponent
 from step05_scenegraph.custom_systems.fixed_step import FixedStep
@@ -21,13 +22,6 @@ from step05_scenegraph.custom_systems.systems import FixedStepSystem, GravitySys
 
 REFERENCES = Path(__file__).parent / "references"
 VARIANTS = {"opengl": opengl, "webgpu": webgpu}
-
-
-def run_scene(scene: Scene, frames: int, dt: float = 1 / 60) -> None:
-    if not any(isinstance(s, TransformSystem) for s in scene.systems):
-        scene.add_system(TransformSystem())
-    for _ in range(frames):
-        scene.update(dt)
 
 
 def test_gravity_integrates_velocity_the_same_at_any_frame_rate():
@@ -98,15 +92,9 @@ def test_fixed_step_clamps_and_caps():
 
 
 # --- pictures ---------------------------------------------------------------------------------------------------
-def _picture(backend: str) -> np.ndarray:
-    with VARIANTS[backend].create_app(headless=True, width=160, height=120) as app:
-        app.run(frames=60)
-        return app.capture()
-
-
 def test_both_apis_draw_the_same_balls():
-    compare_images(_picture("webgpu"), _picture("opengl"), "step05-gravity-webgpu-vs-opengl", min_psnr=40.0)
+    check_both_apis_agree(VARIANTS, "gravity")
 
 
 def test_the_balls_match_their_reference():
-    compare_to_reference(_picture("opengl"), REFERENCES / "scene_gravity.png", min_psnr=35.0)
+    compare_to_reference(picture(VARIANTS, "opengl"), REFERENCES / "scene_gravity.png", min_psnr=35.0)

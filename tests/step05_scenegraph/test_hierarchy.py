@@ -11,12 +11,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from step05_helpers import check_both_apis_agree, picture, run_scene
 
-from gandalf_core import InfoComponent, Scene, TransformComponent, TransformSystem
+from gandalf_core import InfoComponent, Scene, TransformComponent
 from gandalf_core.math import quat_from_axis_angle, quat_from_euler, quat_to_matrix3
 from gandalf_core.systems import SpinComponent, SpinSystem
 from gandalf_core.systems.transform_system import set_parent_keep_world, world_matrix
-from gandalf_tools.testing import compare_images, compare_to_reference
+from gandalf_tools.testing import compare_to_reference
 from step05_scenegraph.hierarchy import opengl, webgpu
 from step05_scenegraph.hierarchy.scene import build_solar_scene
 
@@ -26,13 +27,6 @@ VARIANTS = {"opengl": opengl, "webgpu": webgpu}
 
 def named(scene: Scene, name: str):
     return next(e for e, (info,) in scene.view(InfoComponent) if info.name == name)
-
-
-def run_scene(scene: Scene, frames: int, dt: float = 1 / 60) -> None:
-    if not any(isinstance(s, TransformSystem) for s in scene.systems):
-        scene.add_system(TransformSystem())
-    for _ in range(frames):
-        scene.update(dt)
 
 
 def test_moon_follows_the_earth_at_a_fixed_distance():
@@ -105,15 +99,9 @@ def test_the_earth_keeps_its_tilt_while_it_spins():
     assert np.degrees(np.arccos(axes[0][1])) == pytest.approx(23.0, abs=1e-6)
 
 
-def _picture(backend: str) -> np.ndarray:
-    with VARIANTS[backend].create_app(headless=True, width=160, height=120) as app:
-        app.run(frames=60)
-        return app.capture()
-
-
 def test_both_apis_draw_the_same_solar_system():
-    compare_images(_picture("webgpu"), _picture("opengl"), "step05-solar-webgpu-vs-opengl", min_psnr=40.0)
+    check_both_apis_agree(VARIANTS, "solar")
 
 
 def test_the_solar_system_matches_its_reference():
-    compare_to_reference(_picture("opengl"), REFERENCES / "scene_solar.png", min_psnr=35.0)
+    compare_to_reference(picture(VARIANTS, "opengl"), REFERENCES / "scene_solar.png", min_psnr=35.0)

@@ -14,9 +14,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from step05_helpers import check_both_apis_agree, picture, run_scene
 
-from gandalf_core import Scene, TransformComponent, TransformSystem
-from gandalf_tools.testing import compare_images, compare_to_reference
+from gandalf_core import Scene, TransformComponent
+from gandalf_tools.testing import compare_to_reference
 from step05_scenegraph.integrators import methods as lesson
 from step05_scenegraph.integrators import opengl, webgpu
 from step05_scenegraph.integrators.components import SpringComponent
@@ -170,13 +171,6 @@ def test_bad_spring_parameters_are_named():
 
 
 # --- the springs scene (not graded: it runs the reference integrators) ------------------------------------------
-def run_scene(scene: Scene, frames: int, dt: float = 1 / 60) -> None:
-    if not any(isinstance(s, TransformSystem) for s in scene.systems):
-        scene.add_system(TransformSystem())
-    for _ in range(frames):
-        scene.update(dt)
-
-
 def test_springs_each_integrator_behaves_as_taught():
     scene = build_springs_scene()
     with pytest.warns(UserWarning, match="explicit_euler .* ran away"):  # the reset never hides the blow-up
@@ -224,15 +218,9 @@ def test_a_spring_names_a_bad_integrator():
         SpringComponent(rest=(0, 0, 0), integrator="verlet")
 
 
-def _picture(backend: str) -> np.ndarray:
-    with VARIANTS[backend].create_app(headless=True, width=160, height=120) as app:
-        app.run(frames=60)
-        return app.capture()
-
-
 def test_both_apis_draw_the_same_springs():
-    compare_images(_picture("webgpu"), _picture("opengl"), "step05-springs-webgpu-vs-opengl", min_psnr=40.0)
+    check_both_apis_agree(VARIANTS, "springs")
 
 
 def test_the_springs_match_their_reference():
-    compare_to_reference(_picture("opengl"), REFERENCES / "scene_springs.png", min_psnr=35.0)
+    compare_to_reference(picture(VARIANTS, "opengl"), REFERENCES / "scene_springs.png", min_psnr=35.0)

@@ -2,9 +2,7 @@
 
 from __future__ import annotations
 
-import json
-
-import pytest
+from cli_checks import check_help_only_prints_help, run_study
 
 from step05_scenegraph.integrators import study_fixed_step as study
 
@@ -26,17 +24,11 @@ def test_a_small_max_steps_drops_time_and_costs_accuracy():
 
 
 def test_main_writes_json_table_and_plot(tmp_path, capsys):
-    assert study.main(["--out", str(tmp_path), "--quick", "--repeats", "1"]) == 0
-    result = json.loads((tmp_path / f"{study.STEM}.json").read_text())
+    result, table = run_study(study.main, ["--out", str(tmp_path), "--quick", "--repeats", "1"], tmp_path, study.STEM)
     assert len(result["rows"]) == len(study.QUICK_DTS) * len(study.QUICK_MAX_STEPS)
-    assert (tmp_path / f"{study.STEM}.md").read_text().startswith("| max_steps |")
-    assert (tmp_path / f"{study.STEM}.png").stat().st_size > 1000
+    assert table.startswith("| max_steps |")
     assert "fixed-step study" in capsys.readouterr().out
 
 
 def test_help_only_prints_help(tmp_path, capsys, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    with pytest.raises(SystemExit) as stop:
-        study.main(["--help"])
-    assert stop.value.code == 0 and "usage:" in capsys.readouterr().out
-    assert not any(tmp_path.iterdir()), "--help wrote files"
+    check_help_only_prints_help(study.main, tmp_path, capsys, monkeypatch)

@@ -12,11 +12,12 @@ from pathlib import Path
 from types import ModuleType
 
 import numpy as np
+from light_reference import incoming, radiance, to_srgb8
 
 from gandalf_core import Application, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
-from gandalf_core.resources import MaterialData, MeshData, linear_to_srgb, srgb_to_linear, uv_sphere
+from gandalf_core.resources import MaterialData, MeshData, srgb_to_linear, uv_sphere
 from gandalf_tools import testing
 from step06_lighting.shaders import register_shaders
 
@@ -100,28 +101,12 @@ def shade_np(p, n, v, albedo_srgb, specular, shininess, lights):
     albedo = srgb_to_linear(np.asarray(albedo_srgb, dtype=np.float64))
     color = np.zeros(p.shape)
     for light, transform in lights:
-        radiance = srgb_to_linear(np.asarray(light.color, dtype=np.float64)) * light.intensity
         if light.kind == "ambient":
-            color = color + radiance * albedo
+            color = color + radiance(light) * albedo
             continue
-        if light.kind == "directional":
-            t = np.asarray(transform.translation, dtype=np.float64)
-            to_light = np.broadcast_to(t / np.linalg.norm(t), p.shape)
-            rad = radiance
-        else:
-            d = np.asarray(transform.translation, dtype=np.float64) - p
-            dist = np.linalg.norm(d, axis=-1, keepdims=True)
-            to_light = np.where(dist > 1e-6, d / np.maximum(dist, 1e-6), n)
-            rad = radiance
-            if light.range > 0:
-                window = np.clip(1.0 - (dist / light.range) ** 4, 0.0, 1.0)
-                rad = radiance * window * window / np.maximum(dist * dist, 1e-4)
+        to_light, rad = incoming(light, transform, p, n)
         color = color + blinn_phong_np(n, to_light, v, rad, albedo, specular, shininess)
     return color
-
-
-def to_srgb8(linear: np.ndarray) -> np.ndarray:
-    return np.round(linear_to_srgb(np.clip(linear, 0.0, 1.0)) * 255.0)
 
 
 def reference_sphere(material: MaterialData, lights, size: tuple[int, int] = SIZE) -> tuple[np.ndarray, np.ndarray]:
@@ -154,3 +139,15 @@ def concept_picture(part: str, backend: str) -> np.ndarray:
 
     frames = getattr(importlib.import_module(f"{part}.scene"), "TOUR_FRAMES", 30)
     return render_frames(importlib.import_module(f"{part}.{backend}").create_app, frames, **CONCEPT_SIZE)
+
+
+def check_concept_apis_agree(part: str, name: str) -> None:
+    """The WebGPU and OpenGL tour pictures of ``part`` agree (PSNR at least 40 dB); ``name`` names the diff images."""
+    testing.compare_images(concept_picture(part, "webgpu"), concept_picture(part, "opengl"),
+                           f"step06-{name}-webgpu-vs-opengl", min_psnr=40.0)
+
+
+def check_concept_reference(part: str, name: str) -> None:
+    """The OpenGL tour picture of ``part`` matches ``references/step06_lighting-<name>-opengl.png`` (40 dB)."""
+    testing.compare_to_reference(concept_picture(part, "opengl"), REFERENCES / f"step06_lighting-{name}-opengl.png",
+                                 min_psnr=40.0)

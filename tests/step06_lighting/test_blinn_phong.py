@@ -8,16 +8,7 @@ error <= 1.0 and 99th percentile <= 3. The reference solution measures 0.10 and 
 from __future__ import annotations
 
 import pytest
-from step06_helpers import (
-    ambient,
-    directional,
-    inner,
-    pixel_errors,
-    point,
-    reference_sphere,
-    render,
-    sphere_scene,
-)
+from step06_helpers import ambient, directional, inner, pixel_errors, point, reference_sphere, render, sphere_scene
 
 from gandalf_core.resources import MaterialData
 

@@ -9,11 +9,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from step06_helpers import REFERENCES, concept_picture
+from step06_helpers import check_concept_apis_agree, check_concept_reference
 
 from gandalf_core import TransformComponent, TransformSystem
 from gandalf_core.components import LightComponent
-from gandalf_tools.testing import compare_images, compare_to_reference
 from step06_lighting import solutions
 from step06_lighting.lights.components import OrbitComponent
 from step06_lighting.lights.scene import RING_LIGHTS, TOUR_FRAMES, build_scene
@@ -47,10 +46,8 @@ def test_the_lights_circle_the_bunny_at_their_speed():
 
 
 def test_both_apis_draw_the_same_lights():
-    compare_images(concept_picture(PART, "webgpu"), concept_picture(PART, "opengl"), "step06-lights-webgpu-vs-opengl",
-                   min_psnr=40.0)
+    check_concept_apis_agree(PART, "lights")
 
 
 def test_the_lights_match_their_reference():
-    compare_to_reference(concept_picture(PART, "opengl"), REFERENCES / "step06_lighting-lights-opengl.png",
-                         min_psnr=40.0)
+    check_concept_reference(PART, "lights")

@@ -9,12 +9,11 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from step06_helpers import REFERENCES, concept_picture
+from step06_helpers import check_concept_apis_agree, check_concept_reference
 
 from gandalf_core import InfoComponent, TransformComponent, TransformSystem
 from gandalf_core.components import LinkComponent, MeshComponent
 from gandalf_core.resources.mesh_loader import load_mesh, load_meshes
-from gandalf_tools.testing import compare_images, compare_to_reference
 from step06_lighting.meshes import make_bunny
 from step06_lighting.meshes.scene import BUNNY_PATH, PART_COLORS, build_scene
 
@@ -67,10 +66,8 @@ def test_make_bunny_writes_the_committed_model_and_help_only_helps(tmp_path, cap
 
 
 def test_both_apis_draw_the_same_meshes():
-    compare_images(concept_picture(PART, "webgpu"), concept_picture(PART, "opengl"), "step06-meshes-webgpu-vs-opengl",
-                   min_psnr=40.0)
+    check_concept_apis_agree(PART, "meshes")
 
 
 def test_the_meshes_match_their_reference():
-    compare_to_reference(concept_picture(PART, "opengl"), REFERENCES / "step06_lighting-meshes-opengl.png",
-                         min_psnr=40.0)
+    check_concept_reference(PART, "meshes")

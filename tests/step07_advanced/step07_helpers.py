@@ -14,19 +14,12 @@ from pathlib import Path
 from types import ModuleType, SimpleNamespace
 
 import numpy as np
+from light_reference import incoming, radiance, to_srgb8
 
 from gandalf_core import Application, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
-from gandalf_core.resources import (
-    MaterialData,
-    MeshData,
-    TextureData,
-    linear_to_srgb,
-    sky_cube,
-    srgb_to_linear,
-    uv_sphere,
-)
+from gandalf_core.resources import MaterialData, MeshData, TextureData, sky_cube, srgb_to_linear, uv_sphere
 from gandalf_tools import testing
 
 REFERENCES = Path(__file__).resolve().parent / "references"
@@ -166,22 +159,10 @@ def pbr_direct_np(p, n, v, base_srgb, metallic, roughness, lights):
     f0 = 0.04 + (base - 0.04) * metallic
     color = np.zeros(p.shape)
     for light, transform in lights:
-        radiance = srgb_to_linear(np.asarray(light.color, dtype=np.float64)) * light.intensity
         if light.kind == "ambient":
-            color = color + radiance * (base * (1.0 - metallic) + f0)
+            color = color + radiance(light) * (base * (1.0 - metallic) + f0)
             continue
-        if light.kind == "directional":
-            t = np.asarray(transform.translation, dtype=np.float64)
-            to_light = np.broadcast_to(t / np.linalg.norm(t), p.shape)
-            rad = radiance
-        else:
-            d = np.asarray(transform.translation, dtype=np.float64) - p
-            dist = np.linalg.norm(d, axis=-1, keepdims=True)
-            to_light = d / np.maximum(dist, 1e-6)
-            rad = radiance
-            if light.range > 0:
-                window = np.clip(1.0 - (dist / light.range) ** 4, 0.0, 1.0)
-                rad = radiance * window * window / np.maximum(dist * dist, 1e-4)
+        to_light, rad = incoming(light, transform, p, n)
         n_dot_l = _dot(n, to_light)
         h = to_light + v
         h = h / np.maximum(np.linalg.norm(h, axis=-1, keepdims=True), 1e-12)
@@ -189,10 +170,6 @@ def pbr_direct_np(p, n, v, base_srgb, metallic, roughness, lights):
         lit = (k_d * base / np.pi + ggx_specular_np(n, v, to_light, r, f0)) * rad * n_dot_l
         color = color + np.where(n_dot_l > 0.0, lit, 0.0)
     return color
-
-
-def to_srgb8(linear: np.ndarray) -> np.ndarray:
-    return np.round(linear_to_srgb(np.clip(linear, 0.0, 1.0)) * 255.0)
 
 
 def reference_sphere(material: MaterialData, lights, size: tuple[int, int] = SIZE) -> tuple[np.ndarray, np.ndarray]:
@@ -228,3 +205,15 @@ def sample_bilinear(texture: TextureData, uv: np.ndarray) -> np.ndarray:
     top = at(y0, x0) * (1 - fx) + at(y0, x0 + 1) * fx
     bottom = at(y0 + 1, x0) * (1 - fx) + at(y0 + 1, x0 + 1) * fx
     return top * (1 - fy) + bottom * fy
+
+
+def check_tour_pictures_agree(technique: str, impl: ModuleType, frames: int) -> None:
+    """The tour's picture of ``technique`` (``frames`` frames of ``step07_advanced.<technique>.opengl`` / ``webgpu``
+    with ``impl``'s exercises or solutions) agrees between the two APIs (PSNR at least 35 dB)."""
+    pictures = {}
+    for backend in ("opengl", "webgpu"):
+        variant = importlib.import_module(f"step07_advanced.{technique}.{backend}")
+        with variant.create_app(headless=True, student=impl.__name__.endswith("exercises")) as app:
+            app.run(frames=frames)
+            pictures[backend] = app.capture()
+    assert testing.compare_images(pictures["webgpu"], pictures["opengl"], f"{technique}-tour", min_psnr=35.0) >= 35.0

@@ -16,11 +16,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from shader_checks import grade, mutant_fails
 from shader_harness import evaluate, gl_context
 
 from step07_advanced.explode.scene import explode_offset_np, face_normals_np
 
-LANGUAGE = {"opengl": "glsl", "webgpu": "wgsl"}
 EXPRESSION = {
     "glsl": "vec4(explode_offset(p0.xyz, p1.xyz, p2.xyz, t, amount, period), 0.0)",
     "wgsl": "vec4<f32>(explode_offset(p0.xyz, p1.xyz, p2.xyz, t, amount, period), 0.0)",
@@ -188,13 +188,8 @@ CHECKS: dict[str, Callable[[str, Path], str | None]] = {
 }
 
 
-def _impl_dir(impl) -> Path:
-    return Path(impl.__file__).resolve().parent
-
-
 def _grade(name: str, impl, backend: str) -> None:
-    message = CHECKS[name](LANGUAGE[backend], _impl_dir(impl))
-    assert message is None, f"explode.{LANGUAGE[backend]}: {message}"
+    grade(CHECKS[name], impl, backend, "explode")
 
 
 @pytest.mark.exercise("explode_offset")
@@ -263,17 +258,6 @@ SHADER_MUTANTS = [
 @pytest.mark.parametrize("language", ["glsl", "wgsl"])
 @pytest.mark.parametrize("mutant", [m[0] for m in SHADER_MUTANTS])
 def test_every_mutant_fails_a_graded_check(tmp_path, mutant, language):
-    from step07_advanced import solutions
-
     _name, description, edits = next(m for m in SHADER_MUTANTS if m[0] == mutant)
-    source = _impl_dir(solutions) / f"explode.{language}"
-    text = source.read_text()
-    for file, old, new in edits:
-        if file == source.name:
-            assert text.count(old) == 1, f"mutant '{mutant}': {old!r} must occur once in {source}"
-            text = text.replace(old, new)
-    (tmp_path / source.name).write_text(text)
-    for check in CHECKS.values():
-        if check(language, tmp_path) is not None:
-            return
-    pytest.fail(f"mutant '{mutant}' ({description}, {language}) passes every check: {list(CHECKS)}")
+    assert mutant_fails(tmp_path, "explode", language, edits, CHECKS.values()), \
+        f"mutant '{mutant}' ({description}, {language}) passes every check: {list(CHECKS)}"

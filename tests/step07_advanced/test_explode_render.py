@@ -15,6 +15,7 @@ import importlib
 
 import numpy as np
 import pytest
+from step07_helpers import check_tour_pictures_agree
 
 from gandalf_core import Application, Scene, TransformComponent
 from gandalf_core.components import InfoComponent, MaterialComponent, MeshComponent
@@ -111,14 +112,7 @@ def test_rendered_explosion_rests_at_zero_and_grows_at_the_peak(impl, backend):
 
 def test_both_apis_agree_on_the_tour_picture(impl):
     """The tour's picture (TOUR_FRAMES at 60 fps, 640×480) from both variant files."""
-    pictures = {}
-    for backend in ("opengl", "webgpu"):
-        variant = importlib.import_module(f"step07_advanced.explode.{backend}")
-        with variant.create_app(headless=True, student=impl.__name__.endswith("exercises")) as app:
-            app.run(frames=explode.TOUR_FRAMES)
-            pictures[backend] = app.capture()
-    value = compare_images(pictures["webgpu"], pictures["opengl"], "explode-tour", min_psnr=35.0)
-    assert value >= 35.0
+    check_tour_pictures_agree("explode", impl, explode.TOUR_FRAMES)
 
 
 def test_the_clock_advances_the_material_time():

@@ -20,13 +20,13 @@ from types import ModuleType, SimpleNamespace
 
 import numpy as np
 import pytest
+from shader_checks import LANGUAGE
 
 from gandalf_tools.testing import psnr
 from step07_advanced import solutions
 from step07_advanced.filter import kernels, reference
 from step07_advanced.filter.shaders import impl_shader_dir
 
-LANGUAGE = {"opengl": "glsl", "webgpu": "wgsl"}
 SOLUTIONS_DIR = impl_shader_dir(solutions)
 HINT = {
     "weights": "w(i) = exp(-i² / (2 sigma²)) / (sum over j = -radius..radius of exp(-j² / (2 sigma²))), "

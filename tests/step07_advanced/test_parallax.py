@@ -21,11 +21,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from shader_checks import LANGUAGE, impl_dir
 from shader_harness import evaluate, gl_context
 
 from step07_advanced.parallax import reference as ref
 
-LANGUAGE = {"opengl": "glsl", "webgpu": "wgsl"}
 FUNCTIONS = ("parallax_offset", "parallax_steep", "parallax_occlusion")
 TAU = 2.0 * np.pi
 
@@ -273,14 +273,10 @@ APPLIES = {
 GRADED = [(function, check) for function in FUNCTIONS for check in APPLIES[function]]
 
 
-def _impl_dir(impl) -> Path:
-    return Path(impl.__file__).resolve().parent
-
-
 @pytest.mark.exercise("parallax")
 @pytest.mark.parametrize(("function", "check"), GRADED, ids=[f"{f}-{c}" for f, c in GRADED])
 def test_parallax_function(impl, backend, function, check):
-    message = CHECKS[check](LANGUAGE[backend], _impl_dir(impl), function)
+    message = CHECKS[check](LANGUAGE[backend], impl_dir(impl), function)
     assert message is None, f"parallax.{LANGUAGE[backend]}: {message}"
 
 

@@ -17,10 +17,10 @@ import importlib
 
 import numpy as np
 import pytest
+from step07_helpers import check_tour_pictures_agree
 
 from gandalf_core import Application
 from gandalf_core.resources import ResourceError
-from gandalf_tools.testing import compare_images
 from step07_advanced.parallax import scene as parallax
 from step07_advanced.parallax.reference import MAX_LAYERS
 
@@ -71,13 +71,7 @@ def test_occlusion_converges_faster_than_steep(impl, backend):
 
 def test_both_apis_agree_on_the_tour_picture(impl):
     """The tour's picture (TOUR_FRAMES, 640×480) from both variant files."""
-    pictures = {}
-    for backend in ("opengl", "webgpu"):
-        variant = importlib.import_module(f"step07_advanced.parallax.{backend}")
-        with variant.create_app(headless=True, student=impl.__name__.endswith("exercises")) as app:
-            app.run(frames=parallax.TOUR_FRAMES)
-            pictures[backend] = app.capture()
-    assert compare_images(pictures["webgpu"], pictures["opengl"], "parallax-tour", min_psnr=35.0) >= 35.0
+    check_tour_pictures_agree("parallax", impl, parallax.TOUR_FRAMES)
 
 
 @pytest.mark.parametrize("backend_name", ["opengl", "webgpu"])

@@ -22,8 +22,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 import shader_harness
+from shader_checks import grade, mutant_fails
 
-LANGUAGE = {"opengl": "glsl", "webgpu": "wgsl"}
 SPHERE_EXPR = "hit_sphere(o.xyz, d.xyz, c.xyz, c.w, r.x, r.y)"
 SCATTER_EXPR = {"glsl": "vec4(scatter_dielectric(d.xyz, n.xyz, p.x, p.y), 0.0)",
                 "wgsl": "vec4<f32>(scatter_dielectric(d.xyz, n.xyz, p.x, p.y), 0.0)"}
@@ -313,13 +313,8 @@ SCATTER_CHECKS: dict[str, Callable[[str, Path], str | None]] = {
     "ior1": check_scatter_ior1}
 
 
-def _impl_dir(impl) -> Path:
-    return Path(impl.__file__).resolve().parent
-
-
 def _grade(checks: dict, name: str, impl, backend: str, file: str) -> None:
-    message = checks[name](LANGUAGE[backend], _impl_dir(impl))
-    assert message is None, f"{file}.{LANGUAGE[backend]}: {message}"
+    grade(checks[name], impl, backend, file)
 
 
 @pytest.mark.exercise("hit_sphere")
@@ -426,24 +421,11 @@ SCATTER_MUTANTS = [
 ]
 
 
-def _mutant_fails(tmp_path: Path, stem: str, language: str, edits, checks: dict) -> bool:
-    from step07_advanced import solutions
-
-    source = _impl_dir(solutions) / f"{stem}.{language}"
-    text = source.read_text()
-    for file, old, new in edits:
-        if file == source.name:
-            assert text.count(old) == 1, f"{old!r} must occur once in {source}"
-            text = text.replace(old, new)
-    (tmp_path / source.name).write_text(text)
-    return any(check(language, tmp_path) is not None for check in checks.values())
-
-
 @pytest.mark.parametrize("language", ["glsl", "wgsl"])
 @pytest.mark.parametrize("mutant", [m[0] for m in HIT_MUTANTS])
 def test_every_hit_sphere_mutant_fails_a_graded_check(tmp_path, mutant, language):
     _name, description, edits = next(m for m in HIT_MUTANTS if m[0] == mutant)
-    assert _mutant_fails(tmp_path, "ray_sphere", language, edits, HIT_CHECKS), \
+    assert mutant_fails(tmp_path, "ray_sphere", language, edits, HIT_CHECKS.values()), \
         f"mutant '{mutant}' ({description}, {language}) passes every check: {list(HIT_CHECKS)}"
 
 
@@ -451,5 +433,5 @@ def test_every_hit_sphere_mutant_fails_a_graded_check(tmp_path, mutant, language
 @pytest.mark.parametrize("mutant", [m[0] for m in SCATTER_MUTANTS])
 def test_every_scatter_mutant_fails_a_graded_check(tmp_path, mutant, language):
     _name, description, edits = next(m for m in SCATTER_MUTANTS if m[0] == mutant)
-    assert _mutant_fails(tmp_path, "dielectric", language, edits, SCATTER_CHECKS), \
+    assert mutant_fails(tmp_path, "dielectric", language, edits, SCATTER_CHECKS.values()), \
         f"mutant '{mutant}' ({description}, {language}) passes every check: {list(SCATTER_CHECKS)}"

@@ -6,9 +6,8 @@ must follow semi-implicit Euler's ``|g| dt t / 2`` within 5 %, and fall as the s
 
 from __future__ import annotations
 
-import json
-
 import pytest
+from cli_checks import check_help_only_prints_help, run_study
 
 from step07_advanced.showcase import study_particles as study
 
@@ -27,17 +26,11 @@ def test_error_follows_the_euler_bound_and_falls_with_the_step(backend):
 
 
 def test_main_writes_json_table_and_plot(tmp_path):
-    assert study.main(["--out", str(tmp_path), "--quick", "--backends", "numpy", "--particles", "16",
-                       "--repeats", "1"]) == 0
-    result = json.loads((tmp_path / f"{study.STEM}.json").read_text())
+    args = ["--out", str(tmp_path), "--quick", "--backends", "numpy", "--particles", "16", "--repeats", "1"]
+    result, table = run_study(study.main, args, tmp_path, study.STEM)
     assert [r["backend"] for r in result["rows"]] == ["numpy"] * len(study.QUICK_DTS)
-    assert "| backend |" in (tmp_path / f"{study.STEM}.md").read_text()
-    assert (tmp_path / f"{study.STEM}.png").stat().st_size > 1000
+    assert "| backend |" in table
 
 
 def test_help_only_prints_help(tmp_path, capsys, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    with pytest.raises(SystemExit) as stop:
-        study.main(["--help"])
-    assert stop.value.code == 0 and "usage:" in capsys.readouterr().out
-    assert not any(tmp_path.iterdir()), "--help wrote files"
+    check_help_only_prints_help(study.main, tmp_path, capsys, monkeypatch)

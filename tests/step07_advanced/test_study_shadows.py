@@ -8,9 +8,8 @@ undone afterwards.
 
 from __future__ import annotations
 
-import json
-
 import pytest
+from cli_checks import check_help_only_prints_help, run_study
 
 from step07_advanced.showcase import study_shadows as study
 
@@ -52,16 +51,10 @@ def test_the_reference_shadow_lies_beside_the_casters(truth):
 def test_main_writes_json_table_and_plot(tmp_path):
     args = ["--out", str(tmp_path), "--quick", "--backends", "opengl", "--size", "64", "48", "--frames", "1",
             "--repeats", "1"]
-    assert study.main(args) == 0
-    result = json.loads((tmp_path / f"{study.STEM}.json").read_text())
+    result, table = run_study(study.main, args, tmp_path, study.STEM)
     assert len(result["rows"]) == len(study.cases(study.QUICK_SWEEPS))
-    assert "| API |" in (tmp_path / f"{study.STEM}.md").read_text()
-    assert (tmp_path / f"{study.STEM}.png").stat().st_size > 1000
+    assert "| API |" in table
 
 
 def test_help_only_prints_help(tmp_path, capsys, monkeypatch):
-    monkeypatch.chdir(tmp_path)
-    with pytest.raises(SystemExit) as stop:
-        study.main(["--help"])
-    assert stop.value.code == 0 and "usage:" in capsys.readouterr().out
-    assert not any(tmp_path.iterdir()), "--help wrote files"
+    check_help_only_prints_help(study.main, tmp_path, capsys, monkeypatch)

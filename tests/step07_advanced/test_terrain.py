@@ -20,11 +20,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from shader_checks import LANGUAGE, impl_dir
 from shader_harness import evaluate, gl_context
 
 from step07_advanced.terrain.heightfield import height_np, normal_np, tess_level_np
 
-LANGUAGE = {"opengl": "glsl", "webgpu": "wgsl"}
 OUT_OF_RANGE = -1000.0
 HINT = {
     "level": "level = clamp(scale * |b - a| / distance(eye, (a + b) / 2), min_level, max_level), "
@@ -286,12 +286,8 @@ CHECKS: dict[str, tuple[str, Callable[[str, Path], str | None]]] = {
 }
 
 
-def _impl_dir(impl) -> Path:
-    return Path(impl.__file__).resolve().parent
-
-
 def _grade(name: str, impl, backend: str) -> None:
-    message = CHECKS[name][1](LANGUAGE[backend], _impl_dir(impl))
+    message = CHECKS[name][1](LANGUAGE[backend], impl_dir(impl))
     assert message is None, f"terrain.{LANGUAGE[backend]} {CHECKS[name][0]}: {message}"
 
 

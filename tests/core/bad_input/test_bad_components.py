@@ -12,17 +12,8 @@ import uuid
 import numpy as np
 import pytest
 
-from gandalf_core.components import (
-    CameraComponent,
-    ClearColorComponent,
-    InfoComponent,
-    LightComponent,
-    LinkComponent,
-    MaterialComponent,
-    MeshComponent,
-    SkyboxComponent,
-    TransformComponent,
-)
+from gandalf_core import ClearColorComponent, InfoComponent, LinkComponent, TransformComponent
+from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent, SkyboxComponent
 from gandalf_core.components.fields import FieldError
 from gandalf_core.ecs import Scene
 from gandalf_core.systems import TransformSystem

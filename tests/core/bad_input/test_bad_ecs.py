@@ -10,16 +10,9 @@ import math
 import numpy as np
 import pytest
 
+from gandalf_core import Scene, SceneManager, System
 from gandalf_core.components import CameraComponent, InfoComponent, LinkComponent, TransformComponent
-from gandalf_core.ecs import (
-    HierarchyCycleError,
-    MissingComponentError,
-    NotAComponentError,
-    Scene,
-    SceneManager,
-    System,
-    UnknownEntityError,
-)
+from gandalf_core.ecs import HierarchyCycleError, MissingComponentError, NotAComponentError, UnknownEntityError
 
 from .catalogue import error, params, result, run
 

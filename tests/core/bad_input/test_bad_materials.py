@@ -7,63 +7,30 @@ material is built, never a value dropped or read as 0. The data-level checks of 
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
+from core_shaders import FLAT_FRAG, FLAT_MATERIAL, FLAT_VERT, FLAT_WGSL, build_shaders
 
-from gandalf_core import Scene
-from gandalf_core.components import (
-    CameraComponent,
-    MaterialComponent,
-    MeshComponent,
-    SkyboxComponent,
-    TransformComponent,
-)
+from gandalf_core import Scene, TransformComponent
+from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent, SkyboxComponent
 from gandalf_core.render.errors import MissingResourceError
 from gandalf_core.resources import MaterialData, ResourceError, checkerboard, cube, sky_cube
 from gandalf_core.resources.assets import Assets
 
 from .catalogue import error, params, params_per_backend, result, run
 
-SHADERS = Path(__file__).resolve().parents[1] / "shaders"
-# One shader per API with a colour, a vec4 'tint' and a mat4 'm' (the same values in GLSL uniforms and WGSL).
-FLAT_MATERIAL = [("color", "vec4"), ("tint", "vec4"), ("m", "mat4")]
-FLAT_WGSL = """
-#include "frame.wgsl"
-#include "instance.wgsl"
-#include "material.wgsl"
-@vertex fn vs_main(@location(0) position: vec3<f32>, inst: Instance) -> @builtin(position) vec4<f32> {
-    return frame.projection * frame.view * instance_model(inst) * vec4<f32>(position, 1.0);
-}
-@fragment fn fs_main() -> @location(0) vec4<f32> {
-    return vec4<f32>(material.color.rgb * material.tint.rgb + vec3<f32>(0.0, 0.0, material.m[1].x), 1.0);
-}
-"""
-FLAT_VERT = """#version 330 core
-#include "frame.glsl"
-#include "instance.glsl"
-layout(location = 0) in vec3 a_position;
-void main() { gl_Position = u_projection * u_view * instance_model() * vec4(a_position, 1.0); }
-"""
-FLAT_FRAG = """#version 330 core
-#include "material.glsl"
-out vec4 f_color;
-void main() {
-    f_color = vec4(material.color.rgb * material.tint.rgb + vec3(0.0, 0.0, material.m[1].x), 1.0);
-}
-"""
 GOOD = {"tint": (1.0, 1.0, 1.0, 1.0), "m": np.eye(4).ravel()}
+
 
 def ready(app):
     """The app with the catalogue's shaders built (cached by name: built once per app)."""
     shaders = app.renderer.shaders
     if app.backend == "opengl":
         shaders.build("flat", FLAT_VERT, FLAT_FRAG, material=FLAT_MATERIAL)
-        shaders.build("unlit", SHADERS / "unlit.vert", SHADERS / "unlit.frag")
     else:
         shaders.build("flat", FLAT_WGSL, material=FLAT_MATERIAL)
-        shaders.build("unlit", SHADERS / "unlit.wgsl")
+    build_shaders(shaders, app.backend, "unlit")
     return app
 
 

@@ -1,0 +1,75 @@
+"""What the benchmark scripts share: the paper's scenes, one fresh process per configuration, peak memory, the sky's
+PNG faces and the grid the models stand on. A script imports it by name (``python benchmarks/<script>.py`` puts
+this folder on the path)."""
+
+from __future__ import annotations
+
+import json
+import math
+import resource
+import subprocess
+import sys
+from pathlib import Path
+from typing import Any
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+SHADERS = HERE / "shaders"
+BACKENDS = ("opengl", "webgpu")
+#: scene -> (models, whether they rotate): the paper's scenes 1-5
+PAPER_SCENES: dict[str, tuple[int, bool]] = {
+    "scene1": (1, False),
+    "scene2": (10, False),
+    "scene3": (50, False),
+    "scene4": (50, True),
+    "scene5": (100, True),
+}
+
+
+def run_child(script: str, cfg: dict[str, Any], failure: dict[str, Any]) -> dict[str, Any] | None:
+    """Run ``script --child CFG`` in a fresh process (from the repository root) and print its last JSON line;
+    returns that record, or None after printing ``failure`` with the child's exit status."""
+    proc = subprocess.run([sys.executable, str(Path(script).resolve()), "--child", json.dumps(cfg)],
+                          cwd=ROOT, stdout=subprocess.PIPE, text=True)
+    lines = [ln for ln in proc.stdout.splitlines() if ln.startswith("{")]
+    if proc.returncode != 0 or not lines:
+        print(json.dumps({**failure, "error": f"child exited with {proc.returncode}"}), flush=True)
+        return None
+    print(lines[-1], flush=True)
+    return json.loads(lines[-1])
+
+
+def rss_mb() -> float:
+    """Peak resident set size of this process so far, in MiB (Linux reports KiB, macOS bytes)."""
+    rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    return round(rss / (1024 * 1024 if sys.platform == "darwin" else 1024), 1)
+
+
+def sky_files(cache: Path, size: int) -> list[Path]:
+    """Six ``size``² PNG faces of a sky (with a little noise, so PNG cannot compress them away), written once."""
+    import numpy as np
+    from PIL import Image
+
+    from gandalf_core.resources import sky_cube
+
+    cache.mkdir(parents=True, exist_ok=True)
+    paths = [cache / f"sky{size}_{face}.png" for face in ("px", "nx", "py", "ny", "pz", "nz")]
+    if all(p.is_file() for p in paths):
+        return paths
+    base = sky_cube(min(size, 256))
+    rng = np.random.default_rng(7)
+    for path, face in zip(paths, base.faces):
+        arr = np.asarray(Image.fromarray(face).resize((size, size), Image.BILINEAR)).copy()
+        noise = rng.integers(-3, 4, arr[..., :3].shape)
+        arr[..., :3] = np.clip(arr[..., :3].astype(np.int16) + noise, 0, 255)
+        Image.fromarray(arr.astype(np.uint8)).save(path, compress_level=1)
+    return paths
+
+
+def grid_positions(n: int) -> Any:
+    """``n`` positions on a cubic grid of spacing 1.8 in front of the camera (same layout as raw_ceiling.py)."""
+    import numpy as np
+
+    g = math.ceil(round(n ** (1.0 / 3.0), 9))
+    i = np.arange(n)
+    return np.stack([(i % g) - (g - 1) / 2, (i // g % g) - (g - 1) / 2, -(i // (g * g)) - 2.0], 1) * 1.8
