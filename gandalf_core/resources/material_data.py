@@ -73,18 +73,14 @@ class MaterialData:
         if not isinstance(self.shader, str) or not self.shader:
             raise ResourceError(f"material '{self.name}'", "shader", f"expected a shader name, got {self.shader!r}")
         label = self._label
-        if isinstance(self.textures, str) or not isinstance(self.textures, Sequence):
-            raise ResourceError(label, "textures", f"expected a sequence of texture names, got {self.textures!r}")
-        for i, t in enumerate(self.textures):
-            if not isinstance(t, str) or not t:
-                raise ResourceError(label, f"textures[{i}]", f"expected a texture name, got {t!r}")
-        object.__setattr__(self, "textures", tuple(self.textures))
-        if isinstance(self.buffers, str) or not isinstance(self.buffers, Sequence):
-            raise ResourceError(label, "buffers", f"expected a sequence of buffer names, got {self.buffers!r}")
-        for i, b in enumerate(self.buffers):
-            if not isinstance(b, str) or not b:
-                raise ResourceError(label, f"buffers[{i}]", f"expected a buffer name, got {b!r}")
-        object.__setattr__(self, "buffers", tuple(self.buffers))
+        for attr, kind in (("textures", "texture"), ("buffers", "buffer")):
+            names = getattr(self, attr)
+            if isinstance(names, str) or not isinstance(names, Sequence):
+                raise ResourceError(label, attr, f"expected a sequence of {kind} names, got {names!r}")
+            for i, name in enumerate(names):
+                if not isinstance(name, str) or not name:
+                    raise ResourceError(label, f"{attr}[{i}]", f"expected a {kind} name, got {name!r}")
+            object.__setattr__(self, attr, tuple(names))
 
         c = _floats(label, "color", self.color).reshape(-1)
         if c.size not in (3, 4):

@@ -98,6 +98,14 @@ class OrbitControllerComponent(Component):
         return self.target + self.distance * offset
 
 
+def _drag(system: System, button: int) -> tuple[Any, float, float]:
+    """The app's input (None without an app) and the mouse's motion while ``button`` is held, else (0, 0)."""
+    inp = _input_of(system)
+    held = inp is not None and button in inp.buttons_down
+    dx, dy = inp.mouse_delta() if held else (0.0, 0.0)
+    return inp, dx, dy
+
+
 class OrbitControllerSystem(System):
     """Left-button drag orbits (right = the camera swings left, "grabbing" the world), scroll zooms."""
 
@@ -105,9 +113,7 @@ class OrbitControllerSystem(System):
         super().__init__([OrbitControllerComponent, TransformComponent])
 
     def on_update_system(self, ts: float) -> None:
-        inp = _input_of(self)
-        dragging = inp is not None and LEFT_BUTTON in inp.buttons_down
-        dx, dy = inp.mouse_delta() if dragging else (0.0, 0.0)
+        inp, dx, dy = _drag(self, LEFT_BUTTON)
         scroll = inp.scroll_delta() if inp is not None else 0.0
         for orbit, transform in self.components:
             # Screen y grows downwards: dragging down lifts the eye, as if pulling the world down.
@@ -164,9 +170,7 @@ class FlyControllerSystem(System):
         super().__init__([FlyControllerComponent, TransformComponent])
 
     def on_update_system(self, ts: float) -> None:
-        inp = _input_of(self)
-        turning = inp is not None and RIGHT_BUTTON in inp.buttons_down
-        dx, dy = inp.mouse_delta() if turning else (0.0, 0.0)
+        inp, dx, dy = _drag(self, RIGHT_BUTTON)
         move = np.zeros(3)
         if inp is not None:
             for key, direction in FLY_KEYS.items():
