@@ -11,39 +11,42 @@ from __future__ import annotations
 from ..ecs import Component
 
 
-class MeshComponent(Component):
+class _AssetName(Component):
+    """A component that is one asset's name, never changed (so Scene.create_entities may share one object)."""
+
+    __slots__ = ("_name",)
+    immutable = True
+
+    def _set_name(self, what: str, name: str) -> None:
+        if not isinstance(name, str) or not name:
+            raise TypeError(f"{type(self).__name__}.{what} must be a {what} name (a non-empty string), got {name!r}")
+        self._name = name
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({self._name!r})"
+
+
+class MeshComponent(_AssetName):
     """The name of the mesh an entity draws."""
 
-    __slots__ = ("_mesh",)
-    immutable = True  # a name that never changes: Scene.create_entities may share one object
+    __slots__ = ()
 
     def __init__(self, mesh: str) -> None:
-        if not isinstance(mesh, str) or not mesh:
-            raise TypeError(f"MeshComponent.mesh must be a mesh name (a non-empty string), got {mesh!r}")
-        self._mesh = mesh
+        self._set_name("mesh", mesh)
 
     @property
     def mesh(self) -> str:
-        return self._mesh
-
-    def __repr__(self) -> str:
-        return f"MeshComponent({self._mesh!r})"
+        return self._name
 
 
-class MaterialComponent(Component):
+class MaterialComponent(_AssetName):
     """The name of the material an entity is drawn with."""
 
-    __slots__ = ("_material",)
-    immutable = True  # a name that never changes: Scene.create_entities may share one object
+    __slots__ = ()
 
     def __init__(self, material: str) -> None:
-        if not isinstance(material, str) or not material:
-            raise TypeError(f"MaterialComponent.material must be a material name, got {material!r}")
-        self._material = material
+        self._set_name("material", material)
 
     @property
     def material(self) -> str:
-        return self._material
-
-    def __repr__(self) -> str:
-        return f"MaterialComponent({self._material!r})"
+        return self._name
