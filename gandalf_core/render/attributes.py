@@ -1,13 +1,21 @@
-"""Which mesh attributes a shader reads, from its vertex input locations (the same for both backends)."""
+"""Which mesh attributes a draw binds: those a shader reads, from its vertex input locations (OpenGL, which lists
+them), or all the mesh has (WebGPU: a pipeline may be given attributes its shader does not read)."""
 
 from __future__ import annotations
 
 from collections.abc import Iterable
+from typing import Any
 
 from ..resources import ATTRIBUTE_LOCATIONS, INSTANCE_LOCATIONS
 from .errors import ShaderCompileError
 
 _BY_LOCATION = {loc: name for name, loc in ATTRIBUTE_LOCATIONS.items()}
+_FIELDS = {"position": "positions", "normal": "normals", "uv": "uvs", "tangent": "tangents", "color": "colors"}
+
+
+def mesh_has(data: Any) -> tuple[str, ...]:
+    """The attributes a MeshData holds, in location order."""
+    return tuple(name for name in ATTRIBUTE_LOCATIONS if getattr(data, _FIELDS[name]) is not None)
 
 
 def mesh_attributes(shader_name: str, locations: Iterable[int]) -> tuple[str, ...]:

@@ -113,21 +113,3 @@ def check_glsl_varyings(shader: str, stages: dict[str, Any]) -> str | None:
 def _main_and_functions(text: str, name: str) -> str:
     """The stage's code without the declaration of ``name`` (to see whether anything else names it)."""
     return _IO.sub(lambda m: "" if m.group(3) == name else m.group(0), _strip_comments(text))
-
-
-def check_wgsl_varyings(shader: str, filename: str, reflection: Any, vertex_entry: str,
-                        fragment_entry: str) -> str | None:
-    """A message when the fragment entry point takes a ``@location`` the vertex entry point does not return."""
-    vs, fs = reflection.entry_points[vertex_entry], reflection.entry_points[fragment_entry]
-    outs = {o.location: o for o in vs.location_outputs}
-    for i in fs.location_inputs:
-        o = outs.get(i.location)
-        if o is None:
-            have = ", ".join(f"@location({o.location}) {o.name}" for o in vs.location_outputs) or "none"
-            return (f"shader '{shader}' ({filename}): fragment entry point '{fragment_entry}' reads @location"
-                    f"({i.location}) '{i.name}' ({i.type}), which vertex entry point '{vertex_entry}' never returns "
-                    f"(it returns: {have})")
-        if o.type != i.type:
-            return (f"shader '{shader}' ({filename}): @location({i.location}) is {i.type} '{i.name}' in "
-                    f"'{fragment_entry}' but {o.type} '{o.name}' in '{vertex_entry}'")
-    return None

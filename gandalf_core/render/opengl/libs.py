@@ -22,6 +22,7 @@ from ...resources import CubeTextureData, MaterialData, MeshData, ResourceError,
 from ...resources.blocks import BLOCK_BINDINGS, MaterialDeclaration
 from ...resources.layout import BlockLayout, LayoutError
 from ..builtin_materials import prepare as prepare_builtin
+from ..entry_points import check_glsl_main
 from ..errors import ShaderCompileError
 from ..library import ResourceLib
 from ..material_block import MATERIAL_BLOCK, block_values, check_glsl_varyings, declared_block, used_block
@@ -202,6 +203,8 @@ class ShaderLib(ResourceLib[GLShader]):
         ):
             if src is not None:
                 stages[key] = load_shader(src, stage, "glsl", include_dirs, generated)
+        for src in stages.values():
+            check_glsl_main(src)
         material_block = used_block(name, layout, list(stages.values()), material is not None)
         if (varying := check_glsl_varyings(name, stages)) is not None:
             raise ShaderCompileError(varying)

@@ -4,13 +4,15 @@ As in the paper: ``renderer.textures.build('bricks', TextureData(...))``,
 ``renderer.shaders.build('unlit', 'unlit.wgsl')``,
 ``renderer.materials.build('M_Bricks', MaterialData('unlit', ['bricks']))``.
 
-Bindings come from the shader itself (:mod:`gandalf_core.render.wgsl_reflect`): group 0 is the engine's
-(binding 0: the frame uniforms), group 1 the material's (binding 0: its uniform struct, then a texture
-and a sampler for each of the material's textures, in order).
+Bindings follow the engine's convention, not a reading of the shader: group 0 is the engine's (the frame uniforms,
+lights, shadow map), group 1 the material's (binding 0: its Material block when the shader includes it, then a
+texture and a sampler for each of the material's textures, then its storage buffers, in order). naga checks that
+the shader's use fits (:mod:`.validation` reports what it finds).
 """
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections import Counter
 from collections.abc import Sequence
@@ -21,22 +23,32 @@ from typing import Any
 import numpy as np
 import wgpu
 
-from ...resources import CubeTextureData, MaterialData, MeshData, ResourceError, ShaderSource, TextureData
+from ...resources import (
+    ATTRIBUTE_LOCATIONS,
+    INSTANCE_LOCATIONS,
+    CubeTextureData,
+    MaterialData,
+    MeshData,
+    ResourceError,
+    ShaderSource,
+    TextureData,
+)
 from ...resources.blocks import WGSL_BINDINGS, MaterialDeclaration
 from ...resources.layout import BlockLayout, LayoutError
 from ..builtin_materials import prepare as prepare_builtin
+from ..entry_points import wgsl_entry
 from ..errors import ShaderCompileError
+from ..frame import INSTANCE_STRIDE
 from ..library import ResourceLib
-from ..material_block import block_values, check_wgsl_varyings, declared_block, used_block
+from ..material_block import block_values, declared_block, used_block
 from ..material_checks import check_parameters
 from ..material_values import MaterialValues
 from ..shader_files import load_shader
 from ..storage import buffer_bytes
-from ..texture_checks import check_texture_kinds, check_texture_size
-from ..wgsl_reflect import Binding, ShaderReflection, WGSLReflectError, reflect
+from ..texture_checks import check_texture_size
+from .validation import compile_error, first_cause, stage_error
 
 _ADDRESS = {"repeat": "repeat", "clamp": "clamp-to-edge"}
-_NAGA_LINE = re.compile(r"(?:wgsl|<[^>]*>|\S+\.wgsl):(\d+):(\d+)")
 MATERIAL_GROUP = WGSL_BINDINGS["Material"][0]  # the one convention: resources/blocks.py
 
 
@@ -46,6 +58,7 @@ class WGPUTexture:
     texture: Any
     view: Any
     sampler: Any
+    cube: bool = False
 
 
 class TextureLib(ResourceLib[WGPUTexture]):
@@ -92,7 +105,7 @@ class TextureLib(ResourceLib[WGPUTexture]):
             max_anisotropy=getattr(data, "anisotropy", 1),
         )
         self.stats["textures_created"] += 1
-        return WGPUTexture(texture, view, sampler)
+        return WGPUTexture(texture, view, sampler, cube)
 
     def _write(self, texture: Any, level: int, layer: int, pixels: np.ndarray) -> None:
         h, w = pixels.shape[:2]
@@ -165,19 +178,30 @@ struct VOut { @builtin(position) pos: vec4<f32>, @location(0) uv: vec2<f32> };
 
 
 # --- shaders --------------------------------------------------------------------------------------
+# Every engine vertex input a shader may read, for the pipeline that checks a module when it is built: the mesh's
+# attributes at their fixed locations (attributes.py), then the instance rows.
+_ALL_INPUTS = [
+    {"array_stride": 64, "step_mode": "vertex", "attributes": [
+        {"format": f"float32x{n}", "offset": offset, "shader_location": ATTRIBUTE_LOCATIONS[name]}
+        for name, n, offset in (("position", 3, 0), ("normal", 3, 12), ("uv", 2, 24), ("tangent", 4, 32),
+                                ("color", 4, 48))]},
+    {"array_stride": INSTANCE_STRIDE, "step_mode": "instance", "attributes": [
+        {"format": "float32x4", "offset": 16 * i, "shader_location": loc} for i, loc in enumerate(INSTANCE_LOCATIONS)]},
+]
+
+
 @dataclass
 class WGPUShader:
-    """A compiled module and its reflection."""
+    """A compiled module, the entry points it is drawn with and what its ``@group(1)`` holds."""
 
     name: str
     module: Any
     source: ShaderSource
-    reflection: ShaderReflection
     vertex_entry: str
     fragment_entry: str
-    attributes: dict[int, str]  # location -> vertex input name
-    material_layout: Any  # the bind group layout of group 1, or None
-    material_bindings: list[Binding] = field(default_factory=list)
+    #: The layout naga derives for ``@group(1)`` from what the stages use: a material's bind group is checked
+    #: against it when the material is built (the draws use the layout declared by the material, which must fit).
+    material_check: Any
     #: The WGSL uniform layout of its ``@group(1) @binding(0)`` Material struct, or None.
     material_block: BlockLayout | None = None
 
@@ -188,15 +212,17 @@ class ShaderLib(ResourceLib[WGPUShader]):
     def __init__(self, device: Any, stats: Counter[str]) -> None:
         super().__init__(stats)
         self.device = device
+        self._group_layouts: dict[tuple[str, ...], Any] = {}
 
     def build(self, name: str, source: str | Path | ShaderSource, *, vertex_entry: str | None = None,
               fragment_entry: str | None = None, include_dirs: Sequence[str | Path] = (),
               material: MaterialDeclaration | None = None) -> WGPUShader:
-        """Compile a WGSL module (a ``.wgsl`` path or ShaderSource) and reflect it; cached by ``name``.
+        """Compile a WGSL module (a ``.wgsl`` path or ShaderSource) and check its stages; cached by ``name``.
 
         ``include_dirs`` are searched for ``#include`` files after the shader's own folder. ``material`` declares
         the module's Material block (fields, or a BlockLayout; by default the colour alone), which it declares with
-        ``#include "material.wgsl"``.
+        ``#include "material.wgsl"``. The entry points are the module's only ``@vertex`` and ``@fragment``
+        functions, or the ones named.
         """
         if name in self._items:
             return self._items[name]
@@ -204,72 +230,45 @@ class ShaderLib(ResourceLib[WGPUShader]):
         src = load_shader(source, None, "wgsl", include_dirs, generated)
         block = used_block(name, declared, [src], material is not None)
         try:
-            reflection = reflect(src.text, src.filename)
-        except WGSLReflectError as exc:
-            line = int(m.group(1)) if (m := re.search(r":(\d+):", str(exc))) else 0
-            raise ShaderCompileError(src.format_error(line, str(exc).split(": ", 1)[-1])) from None
-        try:
             module = self.device.create_shader_module(code=src.text, label=src.filename)
         except wgpu.GPUError as exc:
-            raise ShaderCompileError(_explain_naga_error(src, str(exc))) from None
+            raise ShaderCompileError(compile_error(src, str(exc))) from None
+        vertex = wgsl_entry(src, "vertex", vertex_entry)
+        fragment = wgsl_entry(src, "fragment", fragment_entry)
+        try:  # naga checks the stages against each other and the engine's vertex inputs
+            check = self.device.create_render_pipeline(
+                layout="auto", vertex={"module": module, "entry_point": vertex[0], "buffers": _ALL_INPUTS},
+                fragment={"module": module, "entry_point": fragment[0],
+                          "targets": [{"format": "rgba8unorm-srgb", "write_mask": 0}]},
+                label=f"{src.filename} check")
+        except wgpu.GPUError as exc:
+            raise ShaderCompileError(f"shader '{name}': {stage_error(src, str(exc), vertex, fragment)}") from None
         self.stats["shaders_created"] += 1
-        vs = _entry(reflection, "vertex", vertex_entry, src.filename)
-        fs = _entry(reflection, "fragment", fragment_entry, src.filename)
-        attributes = {vi.location: vi.name for vi in reflection.entry_points[vs].vertex_inputs}
-        if (varying := check_wgsl_varyings(name, src.filename, reflection, vs, fs)) is not None:
-            raise ShaderCompileError(varying)
-        material_bindings = reflection.group(MATERIAL_GROUP)
-        layout = None
-        if material_bindings:
-            layout = self.device.create_bind_group_layout(
-                entries=[_layout_entry(b) for b in material_bindings], label=f"{name} material"
-            )
-        shader = WGPUShader(name, module, src, reflection, vs, fs, attributes, layout, material_bindings, block)
+        shader = WGPUShader(name, module, src, vertex[0], fragment[0], check.get_bind_group_layout(MATERIAL_GROUP),
+                            block)
         self._items[name] = shader
         self._data[name] = src
         return shader
 
-
-def _entry(reflection: ShaderReflection, stage: str, wanted: str | None, filename: str) -> str:
-    names = [e.name for e in reflection.entry_points.values() if e.stage == stage]
-    if wanted is not None:
-        if wanted not in names:
-            raise ShaderCompileError(f"{filename}: no @{stage} entry point named '{wanted}' (have: {names})")
-        return wanted
-    if len(names) != 1:
-        raise ShaderCompileError(
-            f"{filename}: expected exactly one @{stage} entry point, found {len(names)} ({names}); name one"
-        )
-    return names[0]
+    def group_layout(self, kinds: tuple[str, ...]) -> Any:
+        """The bind group layout of a material's ``@group(1)``, one per sequence of binding kinds (in binding
+        order: "uniform", "texture-2d", "texture-cube", "sampler", "storage"); built once."""
+        layout = self._group_layouts.get(kinds)
+        if layout is None:
+            visible = wgpu.ShaderStage.VERTEX | wgpu.ShaderStage.FRAGMENT
+            entries = [{"binding": i, "visibility": visible, **_LAYOUT_ENTRY[kind]} for i, kind in enumerate(kinds)]
+            layout = self._group_layouts[kinds] = self.device.create_bind_group_layout(entries=entries,
+                                                                                       label="material group")
+        return layout
 
 
-def _explain_naga_error(src: ShaderSource, message: str) -> str:
-    match = _NAGA_LINE.search(message)
-    if match is None:
-        return f"{src.filename}: {message.strip()}"
-    first = next((ln.strip() for ln in message.splitlines() if ln.strip().startswith("error")), message.strip())
-    return src.format_error(int(match.group(1)), first)
-
-
-def _layout_entry(b: Binding) -> dict[str, Any]:
-    stage = wgpu.ShaderStage
-    visibility = 0
-    for name, flag in (("vertex", stage.VERTEX), ("fragment", stage.FRAGMENT), ("compute", stage.COMPUTE)):
-        if name in b.stages:
-            visibility |= flag
-    entry: dict[str, Any] = {"binding": b.binding, "visibility": visibility or stage.FRAGMENT}
-    if b.kind == "uniform":
-        entry["buffer"] = {"type": "uniform"}
-    elif b.kind in ("storage", "read-only-storage"):
-        entry["buffer"] = {"type": b.kind}
-    elif b.kind == "texture":
-        entry["texture"] = {"sample_type": b.sample_type, "view_dimension": b.view_dimension,
-                            "multisampled": b.multisampled}
-    elif b.kind in ("sampler", "comparison-sampler"):
-        entry["sampler"] = {"type": "comparison" if b.kind == "comparison-sampler" else "filtering"}
-    else:
-        raise ShaderCompileError(f"binding '{b.name}' ({b.kind}) is not supported in a material's group")
-    return entry
+_LAYOUT_ENTRY: dict[str, dict[str, Any]] = {
+    "uniform": {"buffer": {"type": "uniform"}},
+    "storage": {"buffer": {"type": "read-only-storage"}},
+    "texture-2d": {"texture": {"sample_type": "float", "view_dimension": "2d"}},
+    "texture-cube": {"texture": {"sample_type": "float", "view_dimension": "cube"}},
+    "sampler": {"sampler": {"type": "filtering"}},
+}
 
 
 # --- meshes ---------------------------------------------------------------------------------------
@@ -357,63 +356,41 @@ class BufferLib(ResourceLib[Any]):
 class WGPUMaterial(MaterialValues):
     """A material instance: uniform buffer + bind group; values change without touching any pipeline.
 
-    The uniform struct's members are filled by name from the material's colour and params with the one layout rule
-    (:mod:`gandalf_core.resources.layout`: the same bytes as OpenGL's std140 Material block); a matrix may be given
-    as 9 or 16 row-major floats.
+    Its ``@group(1)`` follows from its declaration: the shader's Material block at binding 0 (when a stage includes
+    it), then a texture and its sampler for each of the material's textures (2-D or cube, as the texture is), then
+    its storage buffers. The uniform struct's members are filled by name from the material's colour and params with
+    the one layout rule (:mod:`gandalf_core.resources.layout`: the same bytes as OpenGL's std140 Material block); a
+    matrix may be given as 9 or 16 row-major floats.
     """
 
-    def __init__(self, name: str, data: MaterialData, shader: WGPUShader, textures: list[WGPUTexture],
-                 device: Any, buffers: list[Any] | None = None) -> None:
-        buffers = buffers or []
+    def __init__(self, name: str, data: MaterialData, shader: WGPUShader, textures: list[tuple[str, WGPUTexture]],
+                 device: Any, group_layout: Any, buffers: list[Any] | None = None) -> None:
         self.name, self.data, self.shader, self.device = name, data, shader, device
         self.uniform_buffer = None
-        self._struct = None
-        entries = []
-        texture_slots = [b for b in shader.material_bindings if b.kind == "texture"]
-        if len(texture_slots) != len(textures):
-            raise ResourceError(
-                f"material '{name}'", "textures",
-                f"{len(textures)} texture(s) given but shader '{shader.name}' ({shader.source.filename}) declares "
-                f"{len(texture_slots)} in @group(1) ({', '.join(b.name for b in texture_slots) or 'none'})",
-            )
-        storage_slots = [b for b in shader.material_bindings if b.kind in ("storage", "read-only-storage")]
-        if len(storage_slots) != len(buffers):
-            raise ResourceError(
-                f"material '{name}'", "buffers",
-                f"{len(buffers)} buffer(s) given but shader '{shader.name}' ({shader.source.filename}) declares "
-                f"{len(storage_slots)} storage buffer(s) in @group(1) "
-                f"({', '.join(b.name for b in storage_slots) or 'none'})",
-            )
-        next_buffer = iter(buffers)
-        next_texture = iter(textures)
-        current: WGPUTexture | None = None
-        for b in shader.material_bindings:
-            if b.kind == "uniform":
-                self._struct = shader.material_block
-                if self._struct is None:
-                    raise ResourceError(f"material '{name}'", "shader", f"shader '{shader.name}' "
-                                        f"({shader.source.filename}): @group(1) uniform '{b.name}' has no struct "
-                                        "type the material can fill")
-                self.uniform_buffer = device.create_buffer(
-                    size=max(16, self._struct.size),
-                    usage=wgpu.BufferUsage.UNIFORM | wgpu.BufferUsage.COPY_DST,
-                )
-                entries.append({"binding": b.binding, "resource": {"buffer": self.uniform_buffer}})
-            elif b.kind in ("storage", "read-only-storage"):
-                entries.append({"binding": b.binding, "resource": {"buffer": next(next_buffer)}})
-            elif b.kind == "texture":
-                current = next(next_texture)
-                entries.append({"binding": b.binding, "resource": current.view})
-            elif b.kind in ("sampler", "comparison-sampler"):
-                if current is None:
-                    raise ShaderCompileError(
-                        f"shader '{shader.name}': sampler '{b.name}' must follow the texture it samples in @group(1)"
-                    )
-                entries.append({"binding": b.binding, "resource": current.sampler})
-        self.bind_group = (
-            device.create_bind_group(layout=shader.material_layout, entries=entries)
-            if shader.material_layout is not None else None
-        )
+        self._struct = shader.material_block
+        entries: list[dict[str, Any]] = []
+        kinds: list[str] = []
+        if self._struct is not None:
+            self.uniform_buffer = device.create_buffer(size=max(16, self._struct.size),
+                                                       usage=wgpu.BufferUsage.UNIFORM | wgpu.BufferUsage.COPY_DST)
+            entries.append({"binding": 0, "resource": {"buffer": self.uniform_buffer}})
+            kinds.append("uniform")
+        for _texture, item in textures:
+            entries.append({"binding": len(entries), "resource": item.view})
+            entries.append({"binding": len(entries), "resource": item.sampler})
+            kinds += ["texture-cube" if item.cube else "texture-2d", "sampler"]
+        for buffer in buffers or []:
+            entries.append({"binding": len(entries), "resource": {"buffer": buffer}})
+            kinds.append("storage")
+        if not _fits(device, shader.material_check, entries):
+            try:
+                device.create_bind_group(layout=shader.material_check, entries=entries)
+            except wgpu.GPUError as exc:
+                raise _group_error(name, data, shader, [t for t, _ in textures], str(exc)) from None
+        #: What selects the material's group layout (part of a pipeline's key).
+        self.layout_key = tuple(kinds)
+        self.group_layout = group_layout(self.layout_key) if entries else None
+        self.bind_group = device.create_bind_group(layout=self.group_layout, entries=entries) if entries else None
         self.set_values(data.uniform_values())
 
     def _upload(self) -> None:
@@ -428,6 +405,45 @@ class WGPUMaterial(MaterialValues):
         self.device.queue.write_buffer(self.uniform_buffer, 0, self.block_bytes)
 
 
+def _fits(device: Any, layout: Any, entries: list[dict[str, Any]]) -> bool:
+    """Whether ``entries`` fit the layout naga derived from the stages, which leaves out what they never use: the
+    whole group, or it without up to two samplers the shader declares but never samples (texels read with
+    ``textureLoad``)."""
+    samplers = [e for e in entries if isinstance(e["resource"], wgpu.GPUSampler)]
+    for dropped in (0, 1, 2):
+        for unused in itertools.combinations(samplers, dropped):
+            try:
+                device.create_bind_group(layout=layout, entries=[e for e in entries if e not in unused])
+                return True
+            except wgpu.GPUError:
+                continue
+    return False
+
+
+_DIMENSION = re.compile(r"binding (\d+) expects dimension = (\w+), but given a view with dimension = (\w+)")
+_COUNT = re.compile(r"descriptor \((\d+)\) does not match the number of bindings defined in the bind group layout "
+                    r"\((\d+)\)")
+
+
+def _group_error(name: str, data: MaterialData, shader: WGPUShader, textures: list[str], message: str) -> ResourceError:
+    """The material's bind group against what the shader's ``@group(1)`` uses, as an error naming the material."""
+    label, where = f"material '{name}'", f"shader '{shader.name}' ({shader.source.filename})"
+    first = 1 if shader.material_block is not None else 0
+    if (m := _DIMENSION.search(message)) is not None:
+        binding, want = int(m.group(1)), m.group(2)
+        texture = textures[(binding - first) // 2] if 0 <= (binding - first) // 2 < len(textures) else "?"
+        kinds = {"D2": "a 2-D texture", "Cube": "a cube map"}
+        return ResourceError(label, "textures", f"texture '{texture}' is {kinds.get(m.group(3), m.group(3))}, but "
+                             f"shader '{shader.name}' samples {kinds.get(want, want)} in slot @group(1) @binding("
+                             f"{binding}) ({shader.source.filename})")
+    if (m := _COUNT.search(message)) is not None:
+        what = "buffers" if data.buffers else "textures"
+        return ResourceError(label, what, f"{len(textures)} texture(s) given, {len(data.buffers)} buffer(s) given: "
+                             f"{m.group(1)} binding(s), but {where} reads {m.group(2)} in @group(1) (its Material "
+                             "block, then a texture and a sampler per texture, then the storage buffers)")
+    return ResourceError(label, "textures", f"{where}: {first_cause(message)}")
+
+
 class MaterialLib(ResourceLib[WGPUMaterial]):
     kind = "material"
 
@@ -440,18 +456,15 @@ class MaterialLib(ResourceLib[WGPUMaterial]):
         referrer = f"material '{name}'"
         data = prepare_builtin(self.shaders, name, data, "wgsl")  # gandalf.unlit, gandalf.blinn_phong
         shader = self.shaders.get(data.shader, referrer)
-        textures = [self.textures.get(tex, referrer) for tex in data.textures]
+        textures = [(tex, self.textures.get(tex, referrer)) for tex in data.textures]
         if data.buffers and self.buffers is None:
             raise ResourceError(referrer, "buffers", "this material library has no buffer library")
         buffers = [self.buffers.get(buf, referrer) for buf in data.buffers]
-        slots = [(b.name, b.view_dimension == "cube") for b in shader.material_bindings if b.kind == "texture"]
-        check_texture_kinds(name, shader.name, slots, [(t, self.textures.data_of(t)) for t in data.textures])
         block = shader.material_block
         fields = {f.name: f.has_default for f in block.fields} if block is not None else {}
         check_parameters(name, shader.name, shader.source.filename, data.params, fields)
-        return WGPUMaterial(name, data, shader, textures, self.device, buffers)
+        return WGPUMaterial(name, data, shader, textures, self.device, self.shaders.group_layout, buffers)
 
     def _release(self, item: WGPUMaterial) -> None:
         if item.uniform_buffer is not None:
             item.uniform_buffer.destroy()
-

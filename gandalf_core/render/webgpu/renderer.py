@@ -15,10 +15,11 @@ from typing import Any
 import numpy as np
 import wgpu
 
-from ...resources import MaterialData
+from ...resources import MaterialData, ResourceError
 from ...resources.assets import Assets
-from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
+from ..attributes import INSTANCE_LOCATIONS, mesh_has
 from ..base import Renderer
+from ..errors import ShaderCompileError
 from ..frame import (
     FRAME_FLOATS,
     INSTANCE_STRIDE,
@@ -36,8 +37,12 @@ from ..shader_files import SNIPPETS_DIR
 from ..texture_checks import check_target_size
 from .device import request_device
 from .libs import BufferLib, MaterialLib, MeshLib, ShaderLib, TextureLib, WGPUMaterial, WGPUMesh, WGPUShader
+from .validation import attribute_of, first_cause, missing_input
 
 COLOR_FORMAT = "rgba8unorm-srgb"
+#: The three rows of each instance's model matrix, at the engine's instance locations.
+_INSTANCE_LAYOUT = {"array_stride": INSTANCE_STRIDE, "step_mode": "instance", "attributes": [
+    {"format": "float32x4", "offset": 16 * i, "shader_location": loc} for i, loc in enumerate(INSTANCE_LOCATIONS)]}
 DEPTH_FORMAT = "depth32float"
 _BLEND = {
     "alpha": {"color": {"src_factor": "src-alpha", "dst_factor": "one-minus-src-alpha", "operation": "add"},
@@ -237,8 +242,7 @@ class WebGPURenderer(Renderer):
             vbo, _layout = self.meshes.vertex_buffer(mesh, attributes)
             rpass.set_vertex_buffer(slot, vbo)
             slot += 1
-        if any(loc in shader.attributes for loc in INSTANCE_LOCATIONS):
-            rpass.set_vertex_buffer(slot, self._instance_buffer, batch.first_instance * INSTANCE_STRIDE)
+        rpass.set_vertex_buffer(slot, self._instance_buffer, batch.first_instance * INSTANCE_STRIDE)
         if mesh.index_buffer is not None:
             rpass.set_index_buffer(mesh.index_buffer, "uint32")
             rpass.draw_indexed(mesh.count, batch.count)
@@ -277,13 +281,13 @@ class WebGPURenderer(Renderer):
 
     def _shadow_pipeline(self, shader: WGPUShader, mesh: WGPUMesh) -> tuple[Any, tuple[str, ...]]:
         """The depth-only pipeline for ``mesh``'s position layout (one for all meshes of the same layout)."""
-        attributes = mesh_attributes(shader.name, shader.attributes)
+        attributes = mesh_has(mesh.data)
         _vbo, layout = self.meshes.vertex_buffer(mesh, attributes)
-        key = (SHADOW_SHADER, layout.stride, tuple((a.wgpu_format, a.offset_bytes) for a in layout.attributes))
+        key = (SHADOW_SHADER, attributes)
         pipeline = self._pipelines.get(key)
         if pipeline is None:
-            buffers = [self._vertex_layout(layout), self._instance_layout(shader)]
-            pipeline = self._pipelines[key] = self.device.create_render_pipeline(
+            buffers = [self._vertex_layout(layout), _INSTANCE_LAYOUT]
+            pipeline = self._pipelines[key] = self._checked(shader, mesh, lambda: self.device.create_render_pipeline(
                 layout=self.device.create_pipeline_layout(bind_group_layouts=[self.frame_layout]),
                 vertex={"module": shader.module, "entry_point": shader.vertex_entry, "buffers": buffers},
                 fragment={"module": shader.module, "entry_point": shader.fragment_entry, "targets": []},
@@ -291,7 +295,7 @@ class WebGPURenderer(Renderer):
                 primitive={"topology": "triangle-list", "cull_mode": "none"},
                 depth_stencil={"format": DEPTH_FORMAT, "depth_write_enabled": True, "depth_compare": "less-equal"},
                 label="shadow pipeline",
-            )
+            ))
             self.stats["pipelines_created"] += 1
         return pipeline, attributes
     # --8<-- [end:shadow_pass]
@@ -302,14 +306,15 @@ class WebGPURenderer(Renderer):
         shader = self.shaders.build(SKY_SHADER, SNIPPETS_DIR / "skybox.wgsl")
         material = self._sky_materials.get(texture_name)
         if material is None:
-            material = self.device.create_bind_group(layout=shader.material_layout, entries=[
+            material = self.device.create_bind_group(layout=self._sky_layout(), entries=[
                 {"binding": 0, "resource": texture.view}, {"binding": 1, "resource": texture.sampler},
             ])
             self._sky_materials[texture_name] = material
         key = (SKY_SHADER, reverse_z, self._target_format)
         pipeline = self._pipelines.get(key)
         if pipeline is None:
-            pipeline = self._pipelines[key] = self._create_pipeline(shader, [], SKY_STATE, reverse_z)
+            pipeline = self._pipelines[key] = self._create_pipeline(shader, [], SKY_STATE, reverse_z,
+                                                                    self._sky_layout())
         return pipeline, material
 
     def _upload_instances(self, instances: np.ndarray) -> None:
@@ -327,19 +332,34 @@ class WebGPURenderer(Renderer):
     def _pipeline(self, material: WGPUMaterial, mesh: WGPUMesh, reverse_z: bool,
                   mirrored: bool = False) -> tuple[Any, tuple[str, ...]]:
         shader = material.shader
-        attributes = mesh_attributes(shader.name, shader.attributes)
+        attributes = mesh_has(mesh.data)
         data = material.data
-        key = (*data.pipeline_key(), attributes, reverse_z, mirrored, self._target_format)
+        key = (*data.pipeline_key(), material.layout_key, attributes, reverse_z, mirrored, self._target_format)
         pipeline = self._pipelines.get(key)
         if pipeline is None:
-            buffers = []
-            if attributes:
-                _vbo, layout = self.meshes.vertex_buffer(mesh, attributes)
-                buffers.append(self._vertex_layout(layout))
-            if any(loc in shader.attributes for loc in INSTANCE_LOCATIONS):
-                buffers.append(self._instance_layout(shader))
-            pipeline = self._pipelines[key] = self._create_pipeline(shader, buffers, data, reverse_z, mirrored)
+            _vbo, layout = self.meshes.vertex_buffer(mesh, attributes)
+            buffers = [self._vertex_layout(layout), _INSTANCE_LAYOUT]
+            pipeline = self._pipelines[key] = self._checked(shader, mesh, lambda: self._create_pipeline(
+                shader, buffers, data, reverse_z, material.group_layout, mirrored))
         return pipeline, attributes
+
+    def _sky_layout(self) -> Any:
+        return self.shaders.group_layout(("texture-cube", "sampler"))
+
+    @staticmethod
+    def _checked(shader: WGPUShader, mesh: WGPUMesh, create: Any) -> Any:
+        """``create()``, with naga's complaint about a vertex input the mesh lacks as an error naming both."""
+        try:
+            return create()
+        except wgpu.GPUError as exc:
+            missing = missing_input(str(exc))
+            name = attribute_of(missing[1]) if missing is not None and missing[0] == "vertex" else None
+            if name is not None:
+                raise ResourceError(f"mesh '{mesh.name}'", f"{name}s", f"shader '{shader.name}' "
+                                    f"({shader.source.filename}) needs attribute '{name}' (@location({missing[1]})), "
+                                    "but the mesh has none (give it, or call with_normals/with_tangents)") from None
+            raise ShaderCompileError(f"shader '{shader.name}' ({shader.source.filename}): {first_cause(str(exc))}") \
+                from None
 
     @staticmethod
     def _vertex_layout(layout: Any) -> dict[str, Any]:
@@ -349,17 +369,9 @@ class WebGPURenderer(Renderer):
                            for a in layout.attributes],
         }
 
-    @staticmethod
-    def _instance_layout(shader: WGPUShader) -> dict[str, Any]:
-        return {
-            "array_stride": INSTANCE_STRIDE, "step_mode": "instance",
-            "attributes": [{"format": "float32x4", "offset": 16 * (loc - 5), "shader_location": loc}
-                           for loc in INSTANCE_LOCATIONS if loc in shader.attributes],
-        }
-
     def _create_pipeline(self, shader: WGPUShader, buffers: list[dict[str, Any]], data: MaterialData,
-                         reverse_z: bool, mirrored: bool = False) -> Any:
-        layouts = [self.frame_layout] + ([shader.material_layout] if shader.material_layout else [])
+                         reverse_z: bool, group_layout: Any, mirrored: bool = False) -> Any:
+        layouts = [self.frame_layout] + ([group_layout] if group_layout is not None else [])
         target: dict[str, Any] = {"format": self._target_format}
         if data.blend != "opaque":
             target["blend"] = _BLEND[data.blend]
