@@ -425,6 +425,12 @@ _COUNT = re.compile(r"descriptor \((\d+)\) does not match the number of bindings
                     r"\((\d+)\)")
 
 
+def _binding_name(text: str, binding: int) -> str | None:
+    """The name of the ``@group(1) @binding(binding)`` variable in WGSL ``text`` (a slot's name), or None."""
+    m = re.search(rf"@group\(1\)\s*@binding\({binding}\)\s*var(?:<[^>]*>)?\s+([A-Za-z_]\w*)", text)
+    return m.group(1) if m else None
+
+
 def _group_error(name: str, data: MaterialData, shader: WGPUShader, textures: list[str], message: str) -> ResourceError:
     """The material's bind group against what the shader's ``@group(1)`` uses, as an error naming the material."""
     label, where = f"material '{name}'", f"shader '{shader.name}' ({shader.source.filename})"
@@ -433,9 +439,10 @@ def _group_error(name: str, data: MaterialData, shader: WGPUShader, textures: li
         binding, want = int(m.group(1)), m.group(2)
         texture = textures[(binding - first) // 2] if 0 <= (binding - first) // 2 < len(textures) else "?"
         kinds = {"D2": "a 2-D texture", "Cube": "a cube map"}
+        slot = _binding_name(shader.source.text, binding)
         return ResourceError(label, "textures", f"texture '{texture}' is {kinds.get(m.group(3), m.group(3))}, but "
-                             f"shader '{shader.name}' samples {kinds.get(want, want)} in slot @group(1) @binding("
-                             f"{binding}) ({shader.source.filename})")
+                             f"shader '{shader.name}' samples {kinds.get(want, want)} in slot "
+                             f"{f'{slot!r} ' if slot else ''}(@group(1) @binding({binding}), {shader.source.filename})")
     if (m := _COUNT.search(message)) is not None:
         what = "buffers" if data.buffers else "textures"
         return ResourceError(label, what, f"{len(textures)} texture(s) given, {len(data.buffers)} buffer(s) given: "
