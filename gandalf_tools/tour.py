@@ -17,6 +17,7 @@ import sys
 import time
 from pathlib import Path
 
+from gandalf_core.app.cli import plain
 from gandalf_core.render.base import BACKENDS
 
 from .testing import LocalDifferences, psnr
@@ -52,7 +53,8 @@ def render_step(part: str, backend: str, out_dir: Path, width: int = 640, height
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(prog="python -m gandalf_tools.tour", description=plain(__doc__),
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--headless", action="store_true", help="render offscreen even when a display exists")
     parser.add_argument("--out", default="out", help="folder for the headless pictures (default: out)")
     parser.add_argument("--steps", nargs="*", help="only these steps (default: all)")

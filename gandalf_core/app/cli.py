@@ -34,9 +34,11 @@ def load_impl(step_package: str, student: bool = False) -> ModuleType:
     return importlib.import_module(f"{step_package}.{'exercises' if student else 'solutions'}")
 
 
-def run_variant(create_app: Callable[..., Application], argv: list[str] | None = None, *, description: str = "") -> int:
-    """Parse the common options, then run the app in a window or headless."""
-    parser = argparse.ArgumentParser(description=description)
+def run_variant(create_app: Callable[..., Application], argv: list[str] | None = None, *, description: str = "",
+                prog: str | None = None) -> int:
+    """Parse the common options, then run the app in a window or headless (``prog``: the help's ``python -m ...``)."""
+    parser = argparse.ArgumentParser(prog=prog, description=plain(description),
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--headless", action="store_true", help="render offscreen even when a display exists")
     parser.add_argument("--frames", type=int, default=None, help="stop after this many frames")
     parser.add_argument("--out", default=None, help="save the last frame to this PNG file")
@@ -52,12 +54,24 @@ def run_variant(create_app: Callable[..., Application], argv: list[str] | None =
         extension("editor")(app)
     frames = args.frames if args.frames is not None else (60 if app.headless else None)
     with app:
+        if app.headless and not args.out and not args.save:
+            why = "headless" if args.headless else "no display"
+            print(f"{why}: rendering {frames} frames offscreen; add --out FILE.png to keep the last one")
         app.run(frames=frames)
         if args.out:
             print(f"saved {app.save_png(args.out)}")
         if args.save:
             print(f"saved {extension('save_scene')(app.scene, args.save)}")
     return 0
+
+
+def plain(docstring: str) -> str:
+    """A module docstring as a command's help reads it: the reStructuredText quotes (````x````, ``:func:`x```) as
+    plain ``'x'``."""
+    import re
+
+    text = re.sub(r":[a-z]+:`~?([^`]+)`", r"'\1'", docstring or "")
+    return re.sub(r"``([^`]+)``", r"'\1'", text).strip()
 
 
 def run_scene(build_scene: Callable[[], Scene], argv: list[str] | None = None, *, description: str = "",
@@ -190,17 +204,23 @@ def launcher(part: Part, backend: str | Backend, description: str = "",
                 headless, student, width, height, impl=impl, **options)
         impl = impl if impl is not None else load_impl(part.step, student)
         app = Application(api, width, height, title=title, headless=headless, fixed_dt=1 / 60)
-        folder = Path(importlib.import_module(part.step).__file__).resolve().parent / "shaders"
-        build_shaders(app, part.shaders, folder, [Path(impl.__file__).resolve().parent] if part.include_impl else [])
-        scenes = part.build_scene(impl, **options) if isinstance(backend, str) else backend.scene(app, impl, **options)
-        for scene in [scenes] if isinstance(scenes, Scene) else scenes:
-            app.add_scene(scene)
+        try:
+            folder = Path(importlib.import_module(part.step).__file__).resolve().parent / "shaders"
+            build_shaders(app, part.shaders, folder,
+                          [Path(impl.__file__).resolve().parent] if part.include_impl else [])
+            scenes = (part.build_scene(impl, **options) if isinstance(backend, str)
+                      else backend.scene(app, impl, **options))
+            for scene in [scenes] if isinstance(scenes, Scene) else scenes:
+                app.add_scene(scene)
+        except BaseException:
+            app.close()  # a shader or scene that fails to build leaves no window or GPU context behind
+            raise
         return app
 
     def main(argv: list[str] | None = None) -> int:
         if part.parts:
             return launch_part(part.package, api, part.parts, part.option, argv, default=part.default)
-        return run_variant(create_app, argv, description=description)
+        return run_variant(create_app, argv, description=description, prog=f"python -m {part.package}.{api}")
 
     create_app.__doc__ = f"The {part.package} app in {title.rsplit(' · ', 1)[1]} (``headless``, ``student``, size)."
     main.__doc__ = f"Run the {part.package} app in {title.rsplit(' · ', 1)[1]} from the command line (``--help``)."
