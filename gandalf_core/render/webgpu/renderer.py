@@ -9,7 +9,6 @@ changing a material's colour never builds one.
 from __future__ import annotations
 
 import os
-from importlib import resources
 from typing import Any
 
 import numpy as np
@@ -21,6 +20,7 @@ from ..attributes import INSTANCE_LOCATIONS, mesh_has
 from ..base import Renderer
 from ..errors import ShaderCompileError
 from ..frame import FRAME_FLOATS, INSTANCE_STRIDE, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
+from ..shader_files import engine_shader_files, load_shader
 from ..texture_checks import check_target_size
 from .device import request_device
 from .libs import BufferLib, MaterialLib, MeshLib, ShaderLib, TextureLib, WGPUMaterial, WGPUMesh, WGPUShader
@@ -434,8 +434,8 @@ class _PresentBlit:
     """Draws the offscreen target onto the window's surface texture with a full-screen triangle."""
 
     def __init__(self, device: Any, surface_format: str) -> None:
-        code = resources.files(__package__).joinpath("present.wgsl").read_text()
-        module = device.create_shader_module(code=code, label="present.wgsl")
+        (path,) = engine_shader_files("present", "wgsl")
+        module = device.create_shader_module(code=load_shader(path).text, label=path.name)
         self.device = device
         self.pipeline = device.create_render_pipeline(
             layout="auto",
