@@ -12,8 +12,10 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+import pytest
+
 from gandalf_core.resources.blocks import ENGINE_SNIPPETS, material_snippets
-from gandalf_core.resources.layout import BlockLayout
+from gandalf_core.resources.layout import BlockLayout, LayoutError
 from step07_advanced.filter.shaders import PARAMS_INCLUDES as FILTER_INCLUDES
 from step07_advanced.pathtracer.shaders import PARAMS_INCLUDES as PATHTRACER_INCLUDES
 from step07_advanced.showcase.shaders import SIM_INCLUDES
@@ -83,3 +85,13 @@ def test_the_generated_includes_are_the_blocks_declarations():
     # Every generated block exists in both languages, except the terrain's compute pass (WebGPU only: OpenGL
     # tessellates in hardware).
     assert {n[:-5] for n in wgsl} - {n[:-5] for n in glsl} == {"tessellate_params"}
+
+
+def test_a_block_written_with_a_binding_point_or_as_a_struct():
+    layout = BlockLayout("Sim", [("gravity", "vec4"), ("dt", "float"), ("seed", "uint")])
+    assert layout.glsl(None, binding=4).startswith("layout(std140, binding = 4) uniform Sim {\n    vec4 gravity;")
+    text = layout.glsl("u_sim", binding=4, struct=True)
+    assert text.startswith("struct Sim {\n    vec4 gravity;\n    float dt;\n    uint seed;\n};\n")
+    assert text.endswith("layout(std140, binding = 4) uniform SimBlock { Sim u_sim; };\n")
+    with pytest.raises(LayoutError, match="block 'Sim': a block declared as a struct needs an instance name"):
+        layout.glsl(struct=True)
