@@ -16,10 +16,14 @@ from typing import Any
 import numpy as np
 
 from ..resources.assets import Assets
-from .frame import FrameData
+from .frame import PASS_SHADERS, DrawBatch, FrameData, instance_capacity
 from .library import ResourceLib
+from .patches import check_patch_draw
+from .shader_files import engine_shader_files
 
 BACKENDS = ("opengl", "webgpu")
+#: Each backend's shading language.
+SHADING_LANGUAGES = {"opengl": "glsl", "webgpu": "wgsl"}
 
 
 class UnknownBackendError(ValueError):
@@ -39,13 +43,15 @@ class Renderer(ABC):
     """Backend-neutral face of a render context."""
 
     backend: str
-    #: NDC depth range of this API, passed to the projection functions.
-    depth_range: str
+    #: The buffer of the frame's instance rows (grown by :meth:`_instance_capacity`).
+    _instance_buffer: Any = None
 
-    def __init__(self, width: int, height: int) -> None:
+    def __init__(self, width: int, height: int, window: Any = None) -> None:
         if int(width) <= 0 or int(height) <= 0:
             raise ValueError(f"render target size must be positive, got {width}x{height}")
         self.width, self.height = int(width), int(height)
+        #: A :class:`gandalf_core.app.window.Window`, or None (headless).
+        self.window = window
         #: Counters the tests and benchmarks read: draw calls of the last frame, objects created.
         self.stats: Counter[str] = Counter()
         #: Drawn over each finished frame, in order (a GUI layer such as the editor). OpenGL calls
@@ -57,6 +63,16 @@ class Renderer(ABC):
     @property
     def aspect(self) -> float:
         return self.width / self.height
+
+    @property
+    def depth_range(self) -> str:
+        """NDC depth range of this API, passed to the projection functions (named by the backend)."""
+        return self.backend
+
+    @property
+    def shading_language(self) -> str:
+        """The language of its shaders: ``"glsl"`` or ``"wgsl"``."""
+        return SHADING_LANGUAGES[self.backend]
 
     def depth_range_for(self, reverse_z: bool) -> str:
         """The NDC depth range a camera's projection must target (OpenGL switches to [0, 1] for reverse-Z)."""
@@ -129,6 +145,36 @@ class Renderer(ABC):
             raise ResourceError(f"texture '{name}'", "kind", "a SkyboxComponent needs a cube texture "
                                 "(CubeTextureData, six faces); this one is 2-D")
         return texture
+
+    # --- what both backends do the same way in a frame -----------------------------------------
+    def resolve_draws(self, data: FrameData, assets: Assets) -> list[tuple[DrawBatch, Any, Any]]:
+        """Every batch with its material and mesh, built on first use and checked before any pass is drawn:
+        a patch mesh needs a program that tessellates patches of its size (and cannot cast shadows)."""
+        draws = []
+        for batch in data.batches:
+            material = self.resolve_material(batch.material, assets)
+            mesh = self.resolve_mesh(batch.mesh, assets)
+            # A GL program with a tessellation control stage has patch_vertices; WebGPU's shaders never do.
+            check_patch_draw(batch.material, material.shader.name, getattr(material.shader, "patch_vertices", None),
+                             batch.mesh, mesh.data, self.backend)
+            if data.shadows and mesh.data.patch_size is not None and not batch.transparent:
+                raise ValueError(f"mesh '{batch.mesh}' (material '{batch.material}') is a patch mesh, which the "
+                                 "shadow pass cannot draw: turn off cast_shadows, or draw it with a blended material")
+            draws.append((batch, material, mesh))
+        return draws
+
+    def pass_shader(self, kind: str) -> Any:
+        """The shader of one of the engine's own passes (``"sky"``, ``"shadow"``: :data:`.frame.PASS_SHADERS`),
+        built from ``render/shaders`` in this renderer's language on first use."""
+        name, stem = PASS_SHADERS[kind]
+        return self.shaders.build(name, *engine_shader_files(stem, self.shading_language))
+
+    def _instance_capacity(self, nbytes: int) -> int | None:
+        """The size of a new instance buffer when the current one cannot hold ``nbytes`` (None: it can)."""
+        if self._instance_buffer is not None and self._instance_buffer.size >= nbytes:
+            return None
+        self.stats["buffers_created"] += 1
+        return instance_capacity(nbytes)
 
     def save_png(self, path: str | Path) -> Path:
         """Write the last frame to a PNG file."""

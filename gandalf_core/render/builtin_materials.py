@@ -24,7 +24,7 @@ from dataclasses import replace
 from typing import Any
 
 from ..resources import MaterialData, ResourceError
-from .shader_files import SNIPPETS_DIR
+from .shader_files import engine_shader_files
 
 #: The built-in materials: their params with (default, lowest allowed value).
 BUILTIN_MATERIALS: dict[str, dict[str, tuple[float, float]]] = {
@@ -63,12 +63,7 @@ def check(name: str, data: MaterialData) -> None:
 
 def _build(shaders: Any, variant: str, stem: str, lang: str) -> None:
     material = BLINN_PHONG_MATERIAL if "blinn_phong" in stem else None
-    if lang == "glsl":
-        shaders.build(variant, SNIPPETS_DIR / f"{stem}.vert", SNIPPETS_DIR / f"{stem}.frag", material=material)
-    elif lang == "wgsl":
-        shaders.build(variant, SNIPPETS_DIR / f"{stem}.wgsl", material=material)
-    else:
-        raise ValueError(f"lang: expected 'glsl' or 'wgsl', got {lang!r}")
+    shaders.build(variant, *engine_shader_files(stem, lang), material=material)
 
 
 def prepare(shaders: Any, name: str, data: MaterialData, lang: str) -> MaterialData:

@@ -51,6 +51,8 @@ SKY_STATE = MaterialData(SKY_SHADER, cull="none", depth_write=False, name="sky")
 #: The shadow pass's shader name (core shaders ``render/shaders/shadow_depth.*``): positions and instance
 #: rows only, depth only.
 SHADOW_SHADER = "gandalf.shadow_depth"
+#: The engine's own passes: pass -> (shader name, file stem in ``render/shaders``: ``.vert``/``.frag`` and ``.wgsl``).
+PASS_SHADERS = {"sky": (SKY_SHADER, "skybox"), "shadow": (SHADOW_SHADER, "shadow_depth")}
 
 
 @dataclass

@@ -39,3 +39,13 @@ def load_shader(
         raise ValueError("shader text needs lang='glsl' or 'wgsl'")
     return ShaderSource.from_text(source, lang, stage, filename=f"<{stage or lang} text>", include_dirs=dirs,
                                  generated=generated)
+
+
+def engine_shader_files(stem: str, lang: str) -> tuple[Path, ...]:
+    """The files of the engine's shader ``stem`` in ``render/shaders``: ``stem.vert`` and ``stem.frag`` for GLSL,
+    ``stem.wgsl`` for WGSL."""
+    if lang == "glsl":
+        return SNIPPETS_DIR / f"{stem}.vert", SNIPPETS_DIR / f"{stem}.frag"
+    if lang == "wgsl":
+        return (SNIPPETS_DIR / f"{stem}.wgsl",)
+    raise ValueError(f"lang: expected 'glsl' or 'wgsl', got {lang!r}")

@@ -292,12 +292,18 @@ class BlockLayout:
         return out
 
     # --- shader text ----------------------------------------------------------------------------
-    def glsl(self, instance: str | None = None, members: Mapping[str, str] | None = None) -> str:
+    def glsl(self, instance: str | None = None, members: Mapping[str, str] | None = None, *,
+             binding: int | None = None, struct: bool = False) -> str:
         """The block as GLSL declares it: ``layout(std140) uniform Name { ... } instance;`` (members renamed by
-        ``members``; no instance name: the members are global names)."""
+        ``members``; no instance name: the members are global names; ``binding``: the block's binding point,
+        GLSL 4.20 and later).
+
+        ``struct=True`` declares ``struct Name { ... };`` and the block ``uniform NameBlock { Name instance; }``:
+        the same bytes, for a shader that passes the whole block to a function as one value (WGSL's struct)."""
         if any(isinstance(_array_elem(f.type), Struct) for f in self.fields):
             raise LayoutError(f"block '{self.name}': shader text is written for blocks of numbers, vectors and "
                               "matrices (and arrays of them)")
+        qualifier = "std140" if binding is None else f"std140, binding = {binding}"
         lines = []
         for f in self.fields:
             name = (members or {}).get(f.name, f.name)
@@ -305,8 +311,13 @@ class BlockLayout:
                 lines.append(f"    {_glsl_type(f.type.elem)} {name}[{f.type.count}];")
             else:
                 lines.append(f"    {_glsl_type(f.type)} {name};")
+        if struct:
+            if not instance:
+                raise LayoutError(f"block '{self.name}': a block declared as a struct needs an instance name")
+            return (f"struct {self.name} {{\n" + "\n".join(lines) + "\n};\n"
+                    f"layout({qualifier}) uniform {self.name}Block {{ {self.name} {instance}; }};\n")
         tail = f" {instance}" if instance else ""
-        return f"layout(std140) uniform {self.name} {{\n" + "\n".join(lines) + f"\n}}{tail};\n"
+        return f"layout({qualifier}) uniform {self.name} {{\n" + "\n".join(lines) + f"\n}}{tail};\n"
 
     def wgsl(self, variable: str, group: int, binding: int) -> str:
         """The block as WGSL declares it: ``struct Name { ... };`` and its ``var<uniform>`` at (group, binding)."""

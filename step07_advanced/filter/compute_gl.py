@@ -16,7 +16,7 @@ import moderngl
 import numpy as np
 
 from .kernels import MAX_RADIUS, check_image, check_op, check_radius, check_shared_memory, check_weights, groups
-from .shaders import FORMATS, PROGRAMS, explain_error, kernel_source
+from .shaders import FORMATS, PARAMS_BINDING, PARAMS_LAYOUT, PROGRAMS, explain_error, kernel_source, pass_params
 
 #: Compute shaders and image load/store arrived in OpenGL 4.3.
 REQUIRED_VERSION = 430
@@ -76,6 +76,7 @@ class GLImageFilter:
         self.impl = impl
         self.programs: dict[str, moderngl.ComputeShader] = {}
         self.weights = self.ctx.buffer(reserve=(2 * MAX_RADIUS + 1) * 4)
+        self.params = self.ctx.buffer(reserve=PARAMS_LAYOUT.size)
 
     def _program(self, name: str) -> moderngl.ComputeShader:
         """The compiled program ``name`` of :data:`~.shaders.PROGRAMS`, built on first use."""
@@ -144,7 +145,8 @@ class GLImageFilter:
 
     def _fill_weights(self, radius: int) -> None:
         program = self._program("weights")
-        program["u_radius"].value = radius
+        self.params.write(pass_params((1, 0), radius))
+        self.params.bind_to_uniform_block(PARAMS_BINDING)
         self.weights.bind_to_storage_buffer(0)
         program.run(group_x=-(-(2 * radius + 1) // 64))
         self.ctx.memory_barrier()
@@ -153,9 +155,8 @@ class GLImageFilter:
     def _run(self, name: str, src: moderngl.Texture, dst: moderngl.Texture, direction: tuple[int, int],
              radius: int, group_count: tuple[int, int]) -> None:
         program = self._program(name)
-        for uniform, value in (("u_radius", radius), ("u_direction", direction)):
-            if program.get(uniform, None) is not None:
-                program[uniform].value = value
+        self.params.write(pass_params(direction, radius))
+        self.params.bind_to_uniform_block(PARAMS_BINDING)
         src.use(location=0)
         dst.bind_to_image(0, read=False, write=True)
         self.weights.bind_to_storage_buffer(0)
@@ -193,7 +194,7 @@ class GLImageFilter:
 
     @_current
     def release(self) -> None:
-        for obj in (*self.textures.values(), *self.programs.values(), self.weights):
+        for obj in (*self.textures.values(), *self.programs.values(), self.weights, self.params):
             obj.release()
         self.textures = {}
         self.size = None

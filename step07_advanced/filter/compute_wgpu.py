@@ -16,9 +16,7 @@ import numpy as np
 import wgpu
 
 from .kernels import MAX_RADIUS, check_image, check_op, check_radius, check_shared_memory, check_weights, groups
-from .shaders import FORMATS, PROGRAMS, explain_error, kernel_source
-
-_PARAMS_BYTES = 16
+from .shaders import FORMATS, PARAMS_LAYOUT, PROGRAMS, explain_error, kernel_source, pass_params
 
 
 class WGPUImageFilter:
@@ -54,7 +52,7 @@ class WGPUImageFilter:
         usage = wgpu.BufferUsage
         self.weights = device.create_buffer(size=(2 * MAX_RADIUS + 2) * 4,
                                             usage=usage.STORAGE | usage.COPY_SRC | usage.COPY_DST)
-        self.params = {d: device.create_buffer(size=_PARAMS_BYTES, usage=usage.UNIFORM | usage.COPY_DST)
+        self.params = {d: device.create_buffer(size=PARAMS_LAYOUT.size, usage=usage.UNIFORM | usage.COPY_DST)
                        for d in ((1, 0), (0, 1))}
         self.size: tuple[int, int] | None = None
         self.textures: dict[str, Any] = {}
@@ -146,7 +144,7 @@ class WGPUImageFilter:
         w, h = self.size
         queue = self.device.queue
         for direction, buffer in self.params.items():
-            queue.write_buffer(buffer, 0, np.array([*direction, r, 0], dtype=np.int32).tobytes())
+            queue.write_buffer(buffer, 0, pass_params(direction, r))
         if table is not None:
             queue.write_buffer(self.weights, 0, table.tobytes())
         encoder = self.device.create_command_encoder()
@@ -200,7 +198,7 @@ class WGPUImageFilter:
         r = check_radius(radius)
         if self.size is None:
             self._make_textures(1, 1)
-        self.device.queue.write_buffer(self.params[(1, 0)], 0, np.array([1, 0, r, 0], dtype=np.int32).tobytes())
+        self.device.queue.write_buffer(self.params[(1, 0)], 0, pass_params((1, 0), r))
         encoder = self.device.create_command_encoder()
         compute = encoder.begin_compute_pass()
         compute.set_pipeline(self._pipeline("weights"))

@@ -16,6 +16,7 @@ from types import ModuleType
 
 from gandalf_core.render.shader_files import load_shader
 from gandalf_core.resources import ShaderSource
+from gandalf_core.resources.layout import BlockLayout
 
 SHADER_DIR = Path(__file__).resolve().parent / "shaders"
 #: The display material's shader: the core's ready unlit material (colour times one texture), in both APIs.
@@ -39,6 +40,30 @@ PROGRAMS = {
 #: Kernel name -> file stem (``.comp`` in GLSL, ``.wgsl`` in WGSL).
 KERNELS = {"weights": "weights", "pass": "blur_pass", "naive": "blur_2d", "tiled": "blur_tiled", "sobel": "sobel"}
 
+# --8<-- [start:params]
+#: A pass's parameters, declared once: both APIs pack them (:func:`pass_params`), and the kernels
+#: ``#include "filter_params.glsl"`` / ``"filter_params.wgsl"``, written from this layout (GLSL names the members
+#: ``u_direction`` and ``u_radius``).
+PARAMS_LAYOUT = BlockLayout("Params", [
+    ("direction", "ivec2"),  # (1, 0): horizontal pass, (0, 1): vertical pass
+    ("radius", "int"),  # 0..MAX_RADIUS
+    ("_pad", "int", 0),
+])
+#: GL binding point of the block (0 and 1 are the engine's Frame and Lights); WGSL: @group(0) @binding(0).
+PARAMS_BINDING = 4
+PARAMS_INCLUDES = {
+    "filter_params.glsl": PARAMS_LAYOUT.glsl(None, {"direction": "u_direction", "radius": "u_radius",
+                                                    "_pad": "u_pad"}, binding=PARAMS_BINDING),
+    "filter_params.wgsl": PARAMS_LAYOUT.wgsl("params", 0, 0),
+}
+# --8<-- [end:params]
+
+
+def pass_params(direction: tuple[int, int], radius: int) -> bytes:
+    """The Params block of one pass."""
+    return PARAMS_LAYOUT.pack({"direction": direction, "radius": radius})
+
+
 #: Line numbers in compiler logs: GLSL drivers ("0:12(5): error ..."), naga ("wgsl:12:5").
 _LINE = {
     "glsl": re.compile(r"^\s*(?:ERROR:\s*)?\d+[:(](\d+)\)?"),
@@ -55,9 +80,9 @@ def kernel_source(backend: str, kernel: str, impl: ModuleType, out_format: str |
     """A kernel's expanded source with the student's includes; ``OUT_FORMAT`` replaced by ``out_format``."""
     stem = KERNELS[kernel]
     if backend == "opengl":
-        src = load_shader(SHADER_DIR / f"{stem}.comp", "compute", "glsl", [impl_shader_dir(impl)])
+        src = load_shader(SHADER_DIR / f"{stem}.comp", "compute", "glsl", [impl_shader_dir(impl)], PARAMS_INCLUDES)
     else:
-        src = load_shader(SHADER_DIR / f"{stem}.wgsl", None, "wgsl", [impl_shader_dir(impl)])
+        src = load_shader(SHADER_DIR / f"{stem}.wgsl", None, "wgsl", [impl_shader_dir(impl)], PARAMS_INCLUDES)
     if out_format is not None:
         # Same number of lines, so the line map (file:line in errors) still holds.
         src = dataclasses.replace(src, text=src.text.replace("OUT_FORMAT", out_format))

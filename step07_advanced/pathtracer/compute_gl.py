@@ -13,8 +13,8 @@ from types import ModuleType
 import moderngl
 import numpy as np
 
-from .scene import PARAMS_BYTES, PackedScene
-from .shaders import explain_error, kernel_source
+from .scene import PackedScene
+from .shaders import PARAMS_BINDING, PARAMS_LAYOUT, explain_error, kernel_source
 
 #: Compute shaders arrived in OpenGL 4.3.
 REQUIRED_VERSION = 430
@@ -40,7 +40,7 @@ class GLPathTracer:
         except moderngl.Error as exc:
             raise RuntimeError(explain_error(src, str(exc))) from None
         self.ctx, self.accum, self.width, self.height = ctx, accum, int(width), int(height)
-        self.params = ctx.buffer(reserve=PARAMS_BYTES)
+        self.params = ctx.buffer(reserve=PARAMS_LAYOUT.size)
         self.buffers: list[moderngl.Buffer] = []
         self.packed: PackedScene | None = None
         self.owns_context = False
@@ -78,7 +78,7 @@ class GLPathTracer:
         if self.packed is None:
             raise RuntimeError("load a scene before dispatching the path tracer")
         self.params.write(self.packed.params(sample_index, self.width, self.height, seed))
-        self.params.bind_to_uniform_block(4)
+        self.params.bind_to_uniform_block(PARAMS_BINDING)
         for binding, buf in enumerate(self.buffers):
             buf.bind_to_storage_buffer(binding)
         self.accum.bind_to_storage_buffer(5)

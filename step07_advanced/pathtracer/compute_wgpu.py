@@ -14,8 +14,8 @@ from typing import Any
 import numpy as np
 import wgpu
 
-from .scene import PARAMS_BYTES, PackedScene
-from .shaders import explain_error, kernel_source
+from .scene import PackedScene
+from .shaders import PARAMS_LAYOUT, explain_error, kernel_source
 
 GROUP = 8
 
@@ -44,7 +44,8 @@ class WGPUPathTracer:
             compute={"module": module, "entry_point": "cs_main"}, label="path tracer")
         self.device, self.accum, self.width, self.height = device, accum, int(width), int(height)
         usage = wgpu.BufferUsage
-        self.params = device.create_buffer(size=PARAMS_BYTES, usage=usage.UNIFORM | usage.COPY_DST | usage.COPY_SRC)
+        self.params = device.create_buffer(size=PARAMS_LAYOUT.size,
+                                           usage=usage.UNIFORM | usage.COPY_DST | usage.COPY_SRC)
         self.buffers: list[Any] = []
         self.bind_group = None
         self.packed: PackedScene | None = None

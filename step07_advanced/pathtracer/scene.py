@@ -39,7 +39,7 @@ from gandalf_core.systems import TransformSystem
 from gandalf_core.systems.camera_controllers import OrbitControllerComponent, OrbitControllerSystem
 
 from .bvh import build_bvh, usable_triangles
-from .shaders import DISPLAY_SHADER
+from .shaders import DISPLAY_SHADER, PARAMS_LAYOUT
 
 #: Frames (= samples per pixel) the course tour renders before it takes the picture.
 TOUR_FRAMES = 32
@@ -54,8 +54,6 @@ EYE = (0.0, 1.15, 4.3)
 TARGET = (0.0, 0.45, 0.0)
 FOV = 40.0
 SKY_SIZE = 128
-#: The Params block / struct of the kernels: 5 vec4 of float32 then 2 vec4 of uint32.
-PARAMS_BYTES = 7 * 16
 
 
 # --- what the scene says -----------------------------------------------------------------------------------
@@ -198,13 +196,12 @@ class PackedScene:
     seed: int
 
     def params(self, sample_index: int, width: int, height: int, seed: int | None = None) -> bytes:
-        """The Params block / struct for one dispatch (std140 = WGSL layout: all vec4)."""
-        floats = np.concatenate([self.camera.reshape(-1), self.background]).astype(np.float32)
-        ints = np.array([width, height, sample_index & 0xFFFFFFFF, self.seed if seed is None else seed,
-                         *self.counts, self.max_bounces], np.uint32)
-        data = floats.tobytes() + ints.tobytes()
-        assert len(data) == PARAMS_BYTES
-        return data
+        """The kernels' Params block for one dispatch (:data:`.shaders.PARAMS_LAYOUT`)."""
+        origin, right, up, forward = self.camera
+        return PARAMS_LAYOUT.pack({
+            "origin": origin, "right": right, "up": up, "forward": forward, "background": self.background,
+            "size": (width, height, sample_index & 0xFFFFFFFF, self.seed if seed is None else seed),
+            "counts": (*self.counts, self.max_bounces)})
 
 
 def _world_of(scene: Scene, entity: Any) -> np.ndarray:

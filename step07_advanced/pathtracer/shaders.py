@@ -13,6 +13,7 @@ from types import ModuleType
 
 from gandalf_core.render.shader_files import load_shader
 from gandalf_core.resources import ShaderSource
+from gandalf_core.resources.layout import BlockLayout
 
 SHADER_DIR = Path(__file__).resolve().parent / "shaders"
 #: The full-screen material that shows the accumulation (``display.vert`` + ``display.frag`` / ``display.wgsl``).
@@ -22,6 +23,27 @@ DISPLAY_SHADER = "pathtracer_display"
 DISPLAY_MATERIAL = [("color", "vec4"), ("exposure", "float"), ("trace_width", "float"), ("trace_height", "float")]
 KERNEL_GLSL = SHADER_DIR / "pathtrace.comp"
 KERNEL_WGSL = SHADER_DIR / "pathtrace.wgsl"
+
+# --8<-- [start:params]
+#: The kernels' per-dispatch values, declared once: :meth:`.scene.PackedScene.params` packs them, and the kernels
+#: ``#include "pathtrace_params.glsl"`` / ``"pathtrace_params.wgsl"``, written from this layout.
+PARAMS_LAYOUT = BlockLayout("Params", [
+    ("origin", "vec4"),  # xyz: the camera position
+    ("right", "vec4"),  # xyz: camera right * tan(fov / 2) * aspect
+    ("up", "vec4"),  # xyz: camera up * tan(fov / 2)
+    ("forward", "vec4"),  # xyz: the unit view direction
+    ("background", "vec4"),  # rgb: the background without a sky; w: the sky's face size (0: no sky)
+    ("size", "uvec4"),  # width, height, sample index (the frame of the accumulation), seed
+    ("counts", "uvec4"),  # spheres, triangles, BVH nodes, maximum bounces
+])
+#: GL binding point of the block (0 and 1 are the engine's Frame and Lights); WGSL: @group(0) @binding(0).
+PARAMS_BINDING = 4
+PARAMS_INCLUDES = {
+    "pathtrace_params.glsl": PARAMS_LAYOUT.glsl(None, {name: f"u_{name}" for name in PARAMS_LAYOUT.names()},
+                                                binding=PARAMS_BINDING),
+    "pathtrace_params.wgsl": PARAMS_LAYOUT.wgsl("params", 0, 0),
+}
+# --8<-- [end:params]
 
 #: Line numbers in compiler logs: GLSL drivers ("0:12(5): error ..."), naga ("wgsl:12:5").
 _LINE = {
@@ -38,8 +60,8 @@ def impl_shader_dir(impl: ModuleType) -> Path:
 def kernel_source(backend: str, impl: ModuleType) -> ShaderSource:
     """The path tracing kernel's expanded source for ``backend`` with ``impl``'s exercise files included."""
     if backend == "opengl":
-        return load_shader(KERNEL_GLSL, "compute", "glsl", [impl_shader_dir(impl)])
-    return load_shader(KERNEL_WGSL, None, "wgsl", [impl_shader_dir(impl)])
+        return load_shader(KERNEL_GLSL, "compute", "glsl", [impl_shader_dir(impl)], PARAMS_INCLUDES)
+    return load_shader(KERNEL_WGSL, None, "wgsl", [impl_shader_dir(impl)], PARAMS_INCLUDES)
 
 
 def explain_error(src: ShaderSource, message: str) -> str:

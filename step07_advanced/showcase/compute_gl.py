@@ -15,7 +15,7 @@ import numpy as np
 from gandalf_core.render.shader_files import load_shader
 
 from .particles import WORKGROUP_SIZE, SimParams
-from .shaders import COMPUTE_GLSL, impl_shader_dir
+from .shaders import COMPUTE_GLSL, SIM_BINDING, SIM_INCLUDES, SIM_LAYOUT, impl_shader_dir
 
 #: Compute shaders arrived in OpenGL 4.3; the render shaders only need 3.3.
 REQUIRED_VERSION = 430
@@ -28,16 +28,16 @@ class GLParticleKernel:
         if ctx.version_code < REQUIRED_VERSION:
             raise RuntimeError(f"compute shaders need OpenGL {REQUIRED_VERSION / 100:.1f}; "
                                f"this context is {ctx.version_code / 100:.1f}")
-        source = load_shader(COMPUTE_GLSL, "compute", "glsl", [impl_shader_dir(impl)])
+        source = load_shader(COMPUTE_GLSL, "compute", "glsl", [impl_shader_dir(impl)], SIM_INCLUDES)
         self.ctx = ctx
         self.program = ctx.compute_shader(source.text)
         self.count = int(state.shape[0])
         self.particles = ctx.buffer(np.ascontiguousarray(state, dtype=np.float32).tobytes())
-        self.params = ctx.buffer(reserve=len(SimParams().pack()))
+        self.params = ctx.buffer(reserve=SIM_LAYOUT.size)
 
     def step(self, params: SimParams) -> None:
         self.params.write(params.pack())
-        self.params.bind_to_uniform_block(4)  # the shader's Sim block (0 and 1 are the engine's)
+        self.params.bind_to_uniform_block(SIM_BINDING)  # the kernel's SimParams block
         self.particles.bind_to_storage_buffer(1)
         self.program.run(group_x=-(-self.count // WORKGROUP_SIZE))
         # Make the kernel's writes visible to the next dispatch and to the read-back.

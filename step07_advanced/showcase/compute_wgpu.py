@@ -16,21 +16,21 @@ import wgpu
 from gandalf_core.render.shader_files import load_shader
 
 from .particles import WORKGROUP_SIZE, SimParams
-from .shaders import COMPUTE_WGSL, impl_shader_dir
+from .shaders import COMPUTE_WGSL, SIM_INCLUDES, SIM_LAYOUT, impl_shader_dir
 
 
 class WGPUParticleKernel:
     """``state`` (N, 2, 4) float32 lives in a storage buffer; :meth:`step` runs one compute pass."""
 
     def __init__(self, device: Any, impl: ModuleType, state: np.ndarray) -> None:
-        source = load_shader(COMPUTE_WGSL, None, "wgsl", [impl_shader_dir(impl)])
+        source = load_shader(COMPUTE_WGSL, None, "wgsl", [impl_shader_dir(impl)], SIM_INCLUDES)
         self.device = device
         self.count = int(state.shape[0])
         usage = wgpu.BufferUsage
         self.particles = device.create_buffer_with_data(
             data=np.ascontiguousarray(state, dtype=np.float32).tobytes(),
             usage=usage.STORAGE | usage.COPY_SRC | usage.COPY_DST)
-        self.params = device.create_buffer(size=len(SimParams().pack()), usage=usage.UNIFORM | usage.COPY_DST)
+        self.params = device.create_buffer(size=SIM_LAYOUT.size, usage=usage.UNIFORM | usage.COPY_DST)
         layout = device.create_bind_group_layout(entries=[
             {"binding": 0, "visibility": wgpu.ShaderStage.COMPUTE, "buffer": {"type": "uniform"}},
             {"binding": 1, "visibility": wgpu.ShaderStage.COMPUTE, "buffer": {"type": "storage"}},

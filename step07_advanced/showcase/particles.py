@@ -21,6 +21,8 @@ import numpy as np
 from gandalf_core import TransformComponent
 from gandalf_core.ecs import Component, System
 
+from .shaders import SIM_LAYOUT
+
 #: Particles per work group (``local_size_x`` / ``@workgroup_size``): dispatch ceil(N / 64) groups.
 WORKGROUP_SIZE = 64
 PARTICLE_FLOATS = 8
@@ -28,7 +30,7 @@ PARTICLE_FLOATS = 8
 
 @dataclass(frozen=True)
 class SimParams:
-    """One step's parameters; :meth:`pack` gives the 48 bytes of the ``SimParams`` struct (std140 = WGSL)."""
+    """One step's parameters; :meth:`pack` gives the bytes of the kernels' ``SimParams`` block."""
 
     dt: float = 1.0 / 60.0
     gravity: tuple[float, float, float] = (0.0, -9.81, 0.0)
@@ -39,10 +41,10 @@ class SimParams:
     seed: int = 0
 
     def pack(self) -> bytes:
-        """The uniform bytes: gravity (vec4), emitter (vec4, w = max life), dt, restitution, floor_y, seed (u32)."""
-        floats = np.array([*self.gravity, 0.0, *self.emitter, self.max_life, self.dt, self.restitution,
-                           self.floor_y], dtype=np.float32)
-        return floats.tobytes() + np.uint32(self.seed % 2**32).tobytes()
+        """The uniform bytes (:data:`.shaders.SIM_LAYOUT`): the emitter's w is the longest life."""
+        return SIM_LAYOUT.pack({"gravity": (*self.gravity, 0.0), "emitter": (*self.emitter, self.max_life),
+                                "dt": self.dt, "restitution": self.restitution, "floor_y": self.floor_y,
+                                "seed": self.seed % 2**32})
 
 
 def hash_u32(x: np.ndarray) -> np.ndarray:

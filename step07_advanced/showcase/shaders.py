@@ -9,6 +9,8 @@ from __future__ import annotations
 from pathlib import Path
 from types import ModuleType
 
+from gandalf_core.resources.layout import BlockLayout
+
 SHADER_DIR = Path(__file__).resolve().parent / "shaders"
 
 #: The Material block (one field per value of the material: its colour, then its params), declared once: the
@@ -27,6 +29,23 @@ SHADERS = {
 #: The compute kernels: GLSL 4.30 for OpenGL, WGSL for WebGPU.
 COMPUTE_GLSL = SHADER_DIR / "particles.comp"
 COMPUTE_WGSL = SHADER_DIR / "particles.wgsl"
+# --8<-- [start:sim]
+#: The kernels' parameters, declared once: :meth:`.particles.SimParams.pack` packs them, and the kernels
+#: ``#include "sim_params.glsl"`` / ``"sim_params.wgsl"``, written from this layout. The GLSL block holds one
+#: ``SimParams`` struct (``u_sim``), as WGSL's ``sim`` is one: the kernel passes it whole to ``particle_step``.
+SIM_LAYOUT = BlockLayout("SimParams", [
+    ("gravity", "vec4"),  # xyz: acceleration (m/s²)
+    ("emitter", "vec4"),  # xyz: where particles are born, w: longest life (s)
+    ("dt", "float"),
+    ("restitution", "float"),
+    ("floor_y", "float"),
+    ("seed", "uint"),  # changes every step: new random launch velocities
+])
+#: GL binding point of the block (0 and 1 are the engine's Frame and Lights); WGSL: @group(0) @binding(0).
+SIM_BINDING = 4
+SIM_INCLUDES = {"sim_params.glsl": SIM_LAYOUT.glsl("u_sim", binding=SIM_BINDING, struct=True),
+                "sim_params.wgsl": SIM_LAYOUT.wgsl("sim", 0, 0)}
+# --8<-- [end:sim]
 
 
 def impl_shader_dir(impl: ModuleType) -> Path:

@@ -18,7 +18,7 @@ from gandalf_core.render.shader_files import load_shader
 from gandalf_core.resources import TextureData
 
 from .patches import GUARANTEED_MAX_LEVEL, TerrainParams, check_levels
-from .shaders import WGSL_TESSELLATE, impl_shader_dir
+from .shaders import TESSELLATE_INCLUDES, TESSELLATE_PARAMS, WGSL_TESSELLATE, impl_shader_dir
 
 WORKGROUP_SIZE = 64
 VERTEX_BUFFER = "terrain_vertices"
@@ -38,14 +38,14 @@ class WGPUTessellator:
         self.vertices = renderer.buffers.build(VERTEX_BUFFER, self.vertex_count * 16)
         usage = wgpu.BufferUsage
         self.levels = device.create_buffer(size=self.patch_count * 32, usage=usage.STORAGE | usage.COPY_SRC)
-        self.uniforms = device.create_buffer(size=48, usage=usage.UNIFORM | usage.COPY_DST)
+        self.uniforms = device.create_buffer(size=TESSELLATE_PARAMS.size, usage=usage.UNIFORM | usage.COPY_DST)
         pixels = heightmap.pixels
         self.texture = device.create_texture(size=(pixels.shape[1], pixels.shape[0], 1), format="rgba8unorm",
                                              usage=wgpu.TextureUsage.TEXTURE_BINDING | wgpu.TextureUsage.COPY_DST)
         device.queue.write_texture({"texture": self.texture}, pixels.tobytes(),
                                    {"bytes_per_row": pixels.shape[1] * 4, "rows_per_image": pixels.shape[0]},
                                    (pixels.shape[1], pixels.shape[0], 1))
-        source = load_shader(WGSL_TESSELLATE, None, "wgsl", [impl_shader_dir(impl)])
+        source = load_shader(WGSL_TESSELLATE, None, "wgsl", [impl_shader_dir(impl)], TESSELLATE_INCLUDES)
         module = device.create_shader_module(code=source.text, label=WGSL_TESSELLATE.name)
         self.pipeline = device.create_compute_pipeline(layout="auto", compute={"module": module,
                                                                               "entry_point": "cs_main"})
@@ -60,8 +60,8 @@ class WGPUTessellator:
     def run(self, eye: np.ndarray) -> None:
         """One compute pass for the camera at ``eye``: (budget² / 64) × patches² work groups."""
         p = self.params
-        values = np.array([*eye, 1.0, *p.lod, 0.0, p.size, p.height_scale, p.patches, p.budget], dtype=np.float64)
-        self.device.queue.write_buffer(self.uniforms, 0, values.astype(np.float32).tobytes())
+        values = {"eye": (*eye, 1.0), "lod": (*p.lod, 0.0), "grid": (p.size, p.height_scale, p.patches, p.budget)}
+        self.device.queue.write_buffer(self.uniforms, 0, TESSELLATE_PARAMS.pack(values))
         encoder = self.device.create_command_encoder()
         compute = encoder.begin_compute_pass()
         compute.set_pipeline(self.pipeline)

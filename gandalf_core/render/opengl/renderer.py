@@ -17,20 +17,7 @@ from ...resources import MaterialData
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
 from ..base import Renderer
-from ..frame import (
-    FRAME_FLOATS,
-    INSTANCE_STRIDE,
-    LIGHTS_BLOCK_BYTES,
-    SHADOW_MAP_SIZE,
-    SHADOW_SHADER,
-    SKY_SHADER,
-    SKY_STATE,
-    DrawBatch,
-    FrameData,
-    instance_capacity,
-)
-from ..patches import check_patch_draw
-from ..shader_files import SNIPPETS_DIR
+from ..frame import FRAME_FLOATS, INSTANCE_STRIDE, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
 from ..texture_checks import check_target_size
 from . import raw_gl
 from .libs import (
@@ -75,11 +62,9 @@ class OpenGLRenderer(Renderer):
     """moderngl render context. ``window`` is a :class:`gandalf_core.app.window.Window` or None (headless)."""
 
     backend = "opengl"
-    depth_range = "opengl"
 
     def __init__(self, width: int, height: int, window: Any = None) -> None:
-        super().__init__(width, height)
-        self.window = window
+        super().__init__(width, height, window)
         if window is None:
             self.ctx = _standalone_context()
         else:
@@ -184,14 +169,7 @@ class OpenGLRenderer(Renderer):
             self._upload_instances(data.instances)
         # Resolve (build on first use) everything before any pass: building a texture uses moderngl's
         # scratch texture unit, which on some drivers is the unit the shadow map is bound to.
-        draws = [(batch, self.resolve_material(batch.material, assets), self.resolve_mesh(batch.mesh, assets))
-                 for batch in data.batches]
-        for batch, material, mesh in draws:
-            check_patch_draw(batch.material, material.shader.name, material.shader.patch_vertices, batch.mesh,
-                             mesh.data, self.backend)
-            if data.shadows and mesh.data.patch_size is not None and not batch.transparent:
-                raise ValueError(f"mesh '{batch.mesh}' (material '{batch.material}') is a patch mesh, which the "
-                                 "shadow pass cannot draw: turn off cast_shadows, or draw it with a blended material")
+        draws = self.resolve_draws(data, assets)
         sky = self._prepare_sky(data.skybox, assets) if data.skybox is not None else None
         if data.shadows:
             self._clip_depth(False)  # the shadow map is projected for OpenGL's [-1, 1]
@@ -260,8 +238,7 @@ class OpenGLRenderer(Renderer):
             self._shadow = (texture, self.ctx.framebuffer(depth_attachment=texture))
             self.stats["shadow_maps_created"] += 1
         texture, framebuffer = self._shadow
-        shader = self.shaders.build(SHADOW_SHADER, SNIPPETS_DIR / "shadow_depth.vert",
-                                    SNIPPETS_DIR / "shadow_depth.frag")
+        shader = self.pass_shader("shadow")
         framebuffer.use()
         framebuffer.depth_mask = True
         framebuffer.clear(depth=1.0)
@@ -279,7 +256,7 @@ class OpenGLRenderer(Renderer):
     def _prepare_sky(self, texture_name: str, assets: Assets) -> tuple[moderngl.VertexArray, Any]:
         """The sky pass's vertex array (built on first use) and its cube texture."""
         if self._sky is None:
-            shader = self.shaders.build(SKY_SHADER, SNIPPETS_DIR / "skybox.vert", SNIPPETS_DIR / "skybox.frag")
+            shader = self.pass_shader("sky")
             self._sky = (shader, self.ctx.vertex_array(shader.program, []))
         return self._sky[1], self.resolve_sky(texture_name, assets)
 
@@ -292,16 +269,14 @@ class OpenGLRenderer(Renderer):
         self.stats["draw_calls"] += 1
 
     def _upload_instances(self, instances: np.ndarray) -> None:
-        nbytes = instances.nbytes
-        if self._instance_buffer is None or self._instance_buffer.size < nbytes:
-            if self._instance_buffer is not None:
-                self._instance_buffer.release()
-            capacity = instance_capacity(nbytes)
-            self._instance_buffer = self.ctx.buffer(reserve=capacity, dynamic=True)
-            self.stats["buffers_created"] += 1
-        else:
+        capacity = self._instance_capacity(instances.nbytes)
+        if capacity is None:
             # Fresh storage for this frame's data, so the driver need not wait for last frame's draws.
             self._instance_buffer.orphan()
+        else:
+            if self._instance_buffer is not None:
+                self._instance_buffer.release()
+            self._instance_buffer = self.ctx.buffer(reserve=capacity, dynamic=True)
         self._instance_buffer.write(instances)
 
     def _apply_state(self, data: MaterialData, reverse_z: bool, mirrored: bool = False) -> None:

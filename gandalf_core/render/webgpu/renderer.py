@@ -9,7 +9,6 @@ changing a material's colour never builds one.
 from __future__ import annotations
 
 import os
-from importlib import resources
 from typing import Any
 
 import numpy as np
@@ -20,20 +19,8 @@ from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_has
 from ..base import Renderer
 from ..errors import ShaderCompileError
-from ..frame import (
-    FRAME_FLOATS,
-    INSTANCE_STRIDE,
-    LIGHTS_BLOCK_BYTES,
-    SHADOW_MAP_SIZE,
-    SHADOW_SHADER,
-    SKY_SHADER,
-    SKY_STATE,
-    DrawBatch,
-    FrameData,
-    instance_capacity,
-)
-from ..patches import check_patch_draw
-from ..shader_files import SNIPPETS_DIR
+from ..frame import FRAME_FLOATS, INSTANCE_STRIDE, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
+from ..shader_files import engine_shader_files, load_shader
 from ..texture_checks import check_target_size
 from .device import request_device
 from .libs import BufferLib, MaterialLib, MeshLib, ShaderLib, TextureLib, WGPUMaterial, WGPUMesh, WGPUShader
@@ -56,11 +43,9 @@ class WebGPURenderer(Renderer):
     """wgpu render context. ``window`` is a :class:`gandalf_core.app.window.Window` or None (headless)."""
 
     backend = "webgpu"
-    depth_range = "webgpu"
 
     def __init__(self, width: int, height: int, window: Any = None) -> None:
-        super().__init__(width, height)
-        self.window = window
+        super().__init__(width, height, window)
         self._surface = None
         #: In a window, frames are drawn straight onto the surface texture (no offscreen target and blit) unless
         #: an overlay needs the offscreen frame; GANDALF_PRESENT=blit turns this off.
@@ -162,12 +147,8 @@ class WebGPURenderer(Renderer):
         if data.batches:
             self._upload_instances(data.instances)
         # Resolve everything before recording, so a missing resource fails before a pass is open.
-        draws = []
-        for batch in data.batches:
-            material = self.resolve_material(batch.material, assets)
-            mesh = self.resolve_mesh(batch.mesh, assets)
-            check_patch_draw(batch.material, material.shader.name, None, batch.mesh, mesh.data, self.backend)
-            draws.append((batch, material, mesh, self._pipeline(material, mesh, data.reverse_z, batch.mirrored)))
+        draws = [(batch, material, mesh, self._pipeline(material, mesh, data.reverse_z, batch.mirrored))
+                 for batch, material, mesh in self.resolve_draws(data, assets)]
         sky = self._sky_draw(data.skybox, assets, data.reverse_z) if data.skybox is not None else None
         encoder = self.device.create_command_encoder()
         frame_group = self._frame_group
@@ -263,7 +244,7 @@ class WebGPURenderer(Renderer):
             self._shadow = (texture, view, self._create_frame_group(view))
             self.stats["shadow_maps_created"] += 1
         _texture, view, frame_group = self._shadow
-        shader = self.shaders.build(SHADOW_SHADER, SNIPPETS_DIR / "shadow_depth.wgsl")
+        shader = self.pass_shader("shadow")
         rpass = encoder.begin_render_pass(color_attachments=[], depth_stencil_attachment={
             "view": view, "depth_clear_value": 1.0, "depth_load_op": "clear", "depth_store_op": "store",
         })
@@ -283,7 +264,7 @@ class WebGPURenderer(Renderer):
         """The depth-only pipeline for ``mesh``'s position layout (one for all meshes of the same layout)."""
         attributes = mesh_has(mesh.data)
         _vbo, layout = self.meshes.vertex_buffer(mesh, attributes)
-        key = (SHADOW_SHADER, attributes)
+        key = (shader.name, attributes)
         pipeline = self._pipelines.get(key)
         if pipeline is None:
             buffers = [self._vertex_layout(layout), _INSTANCE_LAYOUT]
@@ -303,14 +284,14 @@ class WebGPURenderer(Renderer):
     def _sky_draw(self, texture_name: str, assets: Assets, reverse_z: bool) -> tuple[Any, Any]:
         """The sky pass's pipeline and bind group, built on first use (only scenes with a skybox pay for it)."""
         texture = self.resolve_sky(texture_name, assets)
-        shader = self.shaders.build(SKY_SHADER, SNIPPETS_DIR / "skybox.wgsl")
+        shader = self.pass_shader("sky")
         material = self._sky_materials.get(texture_name)
         if material is None:
             material = self.device.create_bind_group(layout=self._sky_layout(), entries=[
                 {"binding": 0, "resource": texture.view}, {"binding": 1, "resource": texture.sampler},
             ])
             self._sky_materials[texture_name] = material
-        key = (SKY_SHADER, reverse_z, self._target_format)
+        key = (shader.name, reverse_z, self._target_format)
         pipeline = self._pipelines.get(key)
         if pipeline is None:
             pipeline = self._pipelines[key] = self._create_pipeline(shader, [], SKY_STATE, reverse_z,
@@ -318,15 +299,13 @@ class WebGPURenderer(Renderer):
         return pipeline, material
 
     def _upload_instances(self, instances: np.ndarray) -> None:
-        nbytes = instances.nbytes
-        if self._instance_buffer is None or self._instance_buffer.size < nbytes:
+        capacity = self._instance_capacity(instances.nbytes)
+        if capacity is not None:
             if self._instance_buffer is not None:
                 self._instance_buffer.destroy()
-            capacity = instance_capacity(nbytes)
             self._instance_buffer = self.device.create_buffer(
                 size=capacity, usage=wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.COPY_DST
             )
-            self.stats["buffers_created"] += 1
         self.device.queue.write_buffer(self._instance_buffer, 0, instances)
 
     def _pipeline(self, material: WGPUMaterial, mesh: WGPUMesh, reverse_z: bool,
@@ -455,8 +434,8 @@ class _PresentBlit:
     """Draws the offscreen target onto the window's surface texture with a full-screen triangle."""
 
     def __init__(self, device: Any, surface_format: str) -> None:
-        code = resources.files(__package__).joinpath("present.wgsl").read_text()
-        module = device.create_shader_module(code=code, label="present.wgsl")
+        (path,) = engine_shader_files("present", "wgsl")
+        module = device.create_shader_module(code=load_shader(path).text, label=path.name)
         self.device = device
         self.pipeline = device.create_render_pipeline(
             layout="auto",

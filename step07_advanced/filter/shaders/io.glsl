@@ -4,8 +4,9 @@
 // (OUT_FORMAT: rgba32f or rgba8).
 layout(binding = 0) uniform sampler2D u_src;
 layout(std430, binding = 0) readonly buffer Weights { float weights[]; };  // 2 * u_radius + 1 taps
-uniform int u_radius;       // 0..MAX_RADIUS
-uniform ivec2 u_direction;  // (1, 0): horizontal pass, (0, 1): vertical pass
+// The Params block (u_direction: (1, 0) horizontal pass, (0, 1) vertical; u_radius: 0..MAX_RADIUS):
+// declared once in shaders.py, written here by the engine.
+#include "filter_params.glsl"
 
 // The image's size in pixels.
 ivec2 image_size() { return textureSize(u_src, 0); }

@@ -3,13 +3,9 @@
 // (rgba8unorm input or rgba32float intermediate); the output is a write-only storage texture
 // (OUT_FORMAT: rgba32float or rgba8unorm). WebGPU has no read-write storage textures without a
 // feature, and no sRGB storage format: the filters treat the stored 8-bit values as data.
-struct Params {
-    direction: vec2<i32>,  // (1, 0): horizontal pass, (0, 1): vertical pass
-    radius: i32,           // 0..MAX_RADIUS
-    _pad: i32,
-};
-
-@group(0) @binding(0) var<uniform> params: Params;
+// Params (direction: (1, 0) horizontal pass, (0, 1) vertical; radius: 0..MAX_RADIUS): declared
+// once in shaders.py, written here by the engine.
+#include "filter_params.wgsl"
 @group(0) @binding(1) var src: texture_2d<f32>;
 @group(0) @binding(2) var<storage, read> weights: array<f32>;  // 2 * radius + 1 taps
 @group(0) @binding(3) var dst: texture_storage_2d<OUT_FORMAT, write>;

@@ -2,7 +2,7 @@
 // The weight table on the GPU: one invocation per tap, each calls the student's gaussian_weight.
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) writeonly buffer Weights { float weights[]; };
-uniform int u_radius;
+#include "filter_params.glsl"
 
 #include "blur_kernel.glsl"
 

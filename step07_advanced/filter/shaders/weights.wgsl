@@ -1,13 +1,7 @@
 // The weight table on the GPU: one invocation per tap, each calls the student's gaussian_weight.
 #include "blur_kernel.wgsl"
 
-struct Params {
-    direction: vec2<i32>,
-    radius: i32,
-    _pad: i32,
-};
-
-@group(0) @binding(0) var<uniform> params: Params;
+#include "filter_params.wgsl"
 @group(0) @binding(2) var<storage, read_write> weights: array<f32>;
 
 @compute @workgroup_size(64)

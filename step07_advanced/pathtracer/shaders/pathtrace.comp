@@ -6,15 +6,9 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 // --8<-- [start:bindings]
-layout(std140, binding = 4) uniform Params {
-    vec4 u_origin;      // xyz: the camera position
-    vec4 u_right;       // xyz: camera right * tan(fov / 2) * aspect
-    vec4 u_up;          // xyz: camera up * tan(fov / 2)
-    vec4 u_forward;     // xyz: the unit view direction
-    vec4 u_background;  // rgb: the background without a sky; w: the sky's face size (0: no sky)
-    uvec4 u_size;       // width, height, sample index (the frame of the accumulation), seed
-    uvec4 u_counts;     // spheres, triangles, BVH nodes, maximum bounces
-};
+// Params (the camera, the background, the size and sample index, the counts; binding 4: 0 and 1
+// are the engine's Frame and Lights): declared once in shaders.py, written here by the engine.
+#include "pathtrace_params.glsl"
 // (centre, radius), (material, -, -, -)
 layout(std430, binding = 0) readonly buffer Spheres { vec4 spheres[]; };
 // (albedo, kind), (fuzz, ior, -, -)

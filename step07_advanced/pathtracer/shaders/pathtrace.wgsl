@@ -4,16 +4,9 @@
 // kernel in GLSL, line for line.
 
 // --8<-- [start:bindings]
-struct Params {
-    origin: vec4<f32>,      // xyz: the camera position
-    right: vec4<f32>,       // xyz: camera right * tan(fov / 2) * aspect
-    up: vec4<f32>,          // xyz: camera up * tan(fov / 2)
-    forward: vec4<f32>,     // xyz: the unit view direction
-    background: vec4<f32>,  // rgb: the background without a sky; w: the sky's face size (0: no sky)
-    size: vec4<u32>,        // width, height, sample index (the frame of the accumulation), seed
-    counts: vec4<u32>,      // spheres, triangles, BVH nodes, maximum bounces
-};
-@group(0) @binding(0) var<uniform> params: Params;
+// Params (the camera, the background, the size and sample index, the counts): declared once in
+// shaders.py, written here by the engine.
+#include "pathtrace_params.wgsl"
 // (centre, radius), (material, -, -, -)
 @group(0) @binding(1) var<storage, read> spheres: array<vec4<f32>>;
 // (albedo, kind), (fuzz, ior, -, -)

@@ -9,17 +9,10 @@ struct Particle {
     vec4 position;  // xyz: position, w: remaining life (s)
     vec4 velocity;  // xyz: velocity
 };
-struct SimParams {
-    vec4 gravity;      // xyz: acceleration (m/s²)
-    vec4 emitter;      // xyz: where particles are born, w: longest life (s)
-    float dt;
-    float restitution;
-    float floor_y;
-    uint seed;         // changes every step: new random launch velocities
-};
-
-layout(std140, binding = 4) uniform Sim { SimParams u_sim; };  // 0 and 1 are the engine's
-                                                               // Frame and Lights
+// The SimParams struct (gravity, emitter, dt, restitution, floor_y, seed) and its uniform block
+// `u_sim` (binding 4: 0 and 1 are the engine's Frame and Lights): declared once in shaders.py,
+// written here by the engine.
+#include "sim_params.glsl"
 layout(std430, binding = 1) buffer Particles { Particle particles[]; };
 
 #include "particle_step.glsl"

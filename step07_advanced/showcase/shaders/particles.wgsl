@@ -6,16 +6,9 @@ struct Particle {
     position: vec4<f32>,  // xyz: position, w: remaining life (s)
     velocity: vec4<f32>,  // xyz: velocity
 };
-struct SimParams {
-    gravity: vec4<f32>,   // xyz: acceleration (m/s²)
-    emitter: vec4<f32>,   // xyz: where particles are born, w: longest life (s)
-    dt: f32,
-    restitution: f32,
-    floor_y: f32,
-    seed: u32,            // changes every step: new random launch velocities
-};
-
-@group(0) @binding(0) var<uniform> sim: SimParams;
+// SimParams (gravity, emitter, dt, restitution, floor_y, seed) and its uniform `sim`: declared
+// once in shaders.py, written here by the engine.
+#include "sim_params.wgsl"
 @group(0) @binding(1) var<storage, read_write> particles: array<Particle>;
 
 #include "particle_step.wgsl"

@@ -6,12 +6,8 @@
 // meets it vertex for vertex. Cells beyond n write degenerate triangles.
 #include "terrain.wgsl"
 
-struct Params {
-    eye: vec4<f32>,   // the camera's world position
-    lod: vec4<f32>,   // scale, min level, max level
-    grid: vec4<f32>,  // terrain size, height scale, patches per side, budget L
-};
-@group(0) @binding(0) var<uniform> params: Params;
+// Params (eye, lod, grid): declared once in shaders.py, written here by the engine.
+#include "tessellate_params.wgsl"
 @group(0) @binding(1) var heightmap: texture_2d<f32>;
 @group(0) @binding(2) var<storage, read_write> vertices: array<vec4<f32>>;  // (u, v, world y, 1)
 // per pid: outer[4]; (inner, n, 0, 0)
