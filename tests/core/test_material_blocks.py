@@ -127,10 +127,8 @@ def test_no_shader_declares_the_material_block_by_hand():
 def test_no_loose_material_uniforms_are_left_in_the_project_shaders():
     loose = re.compile(r"^\s*uniform\s+(?!sampler|isampler|usampler)\w+\s+u_\w+", re.M)
     roots = [REPO_ROOT / "gandalf_core", *sorted(REPO_ROOT.glob("step*"))]
-    # compute programs the step's own code drives (not materials) keep plain uniforms
-    allowed = {"weights.comp", "io.glsl"}
     found = [str(p.relative_to(REPO_ROOT)) for root in roots for p in sorted(root.rglob("*"))
-             if p.suffix in (".frag", ".vert", ".geom", ".tesc", ".tese", ".glsl") and p.name not in allowed
+             if p.suffix in (".frag", ".vert", ".geom", ".tesc", ".tese", ".glsl", ".comp")
              and ".snap" not in p.parts and loose.search(p.read_text())]
     assert not found, f"loose u_ material uniforms (use the Material block): {found}"
 
