@@ -24,7 +24,7 @@ TOUR_FRAMES = 90
 BALLS = ((1.5, (0.9, 0.9, 0.9)), (2.5, (0.95, 0.6, 0.25)), (3.5, (0.35, 0.6, 0.95)))
 
 
-def build_gravity_scene() -> Scene:
+def build_gravity_scene(impl: ModuleType | None = None) -> Scene:
     """Three balls dropped from 1.5, 2.5 and 3.5 m onto a floor that gives back 80 % of their speed."""
     scene = Scene("gravity")
     assets = scene.assets
@@ -51,10 +51,7 @@ def build_gravity_scene() -> Scene:
     return scene
 
 
-def build_scene(impl: ModuleType | None = None) -> Scene:
-    """The bouncing balls (the variants pass the step's ``impl``; this concept has no exercise)."""
-    return build_gravity_scene()
-
-
 #: What the variants (``opengl.py``, ``webgpu.py``) hand the launcher: this concept, its scene and the step's shaders.
-PART = Part(__package__, build_scene, SHADERS)
+PART = Part(__package__, build_gravity_scene, SHADERS)
+#: The concept's scene by its common name (``impl`` unused: this concept has no exercise).
+build_scene = build_gravity_scene

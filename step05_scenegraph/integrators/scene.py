@@ -29,7 +29,7 @@ SPRING_COLUMNS = (
 )
 
 
-def build_springs_scene() -> Scene:
+def build_springs_scene(impl: ModuleType | None = None) -> Scene:
     """Four damped springs with the same k, m, c and start, one per integrator.
 
     Explicit Euler gains energy every step until its mass runs away and is reset; implicit Euler loses
@@ -68,10 +68,7 @@ def build_springs_scene() -> Scene:
     return scene
 
 
-def build_scene(impl: ModuleType | None = None) -> Scene:
-    """The springs (the variants pass the step's ``impl``; the scene runs the reference integrators)."""
-    return build_springs_scene()
-
-
 #: What the variants (``opengl.py``, ``webgpu.py``) hand the launcher: this concept, its scene and the step's shaders.
-PART = Part(__package__, build_scene, SHADERS)
+PART = Part(__package__, build_springs_scene, SHADERS)
+#: The concept's scene by its common name (``impl`` unused: the scene runs the reference integrators).
+build_scene = build_springs_scene
