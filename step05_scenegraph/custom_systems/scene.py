@@ -7,13 +7,13 @@ from __future__ import annotations
 
 from types import ModuleType
 
-from gandalf_core import ClearColorComponent, InfoComponent, Scene, TransformComponent
+from gandalf_core import InfoComponent, Scene, TransformComponent
 from gandalf_core.app.cli import Part
 from gandalf_core.components import MaterialComponent, MeshComponent
-from gandalf_core.resources import MaterialData, plane, uv_sphere
+from gandalf_core.resources import MaterialData, uv_sphere
 
 from .. import SHADERS
-from ..hierarchy.scene import add_camera
+from ..hierarchy.scene import add_camera, add_floor
 from .components import GravityComponent
 from .systems import GravitySystem
 
@@ -29,13 +29,7 @@ def build_gravity_scene(impl: ModuleType | None = None) -> Scene:
     scene = Scene("gravity")
     assets = scene.assets
     assets.mesh("gravity.ball", uv_sphere(1.0, 24, 12))
-    assets.mesh("gravity.floor", plane(1.0))
-    assets.material("gravity.floor", MaterialData("shaded", color=(0.35, 0.4, 0.35), name="gravity.floor"))
-    scene.create_entity(InfoComponent("background"), ClearColorComponent((0.12, 0.12, 0.15)))
-    scene.create_entity(
-        InfoComponent("floor"), TransformComponent((0.0, -0.05, 0.0), scale=(14.0, 1.0, 6.0)),
-        MeshComponent("gravity.floor"), MaterialComponent("gravity.floor"),
-    )
+    add_floor(scene, "gravity")
     # --8<-- [start:balls]
     for i, (height, color) in enumerate(BALLS):
         material = f"gravity.ball{i}"

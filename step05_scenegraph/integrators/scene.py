@@ -7,13 +7,13 @@ from __future__ import annotations
 
 from types import ModuleType
 
-from gandalf_core import ClearColorComponent, InfoComponent, Scene, TransformComponent
+from gandalf_core import InfoComponent, Scene, TransformComponent
 from gandalf_core.app.cli import Part
 from gandalf_core.components import MaterialComponent, MeshComponent
-from gandalf_core.resources import MaterialData, cube, plane
+from gandalf_core.resources import MaterialData, cube
 
 from .. import SHADERS
-from ..hierarchy.scene import add_camera
+from ..hierarchy.scene import add_camera, add_floor
 from .components import SpringComponent
 from .systems import SpringSystem
 
@@ -38,14 +38,8 @@ def build_springs_scene(impl: ModuleType | None = None) -> Scene:
     scene = Scene("springs")
     assets = scene.assets
     assets.mesh("springs.cube", cube(1.0))
-    assets.mesh("springs.floor", plane(1.0))
     assets.material("springs.anchor", MaterialData("shaded", color=(0.6, 0.6, 0.65), name="springs.anchor"))
-    assets.material("springs.floor", MaterialData("shaded", color=(0.35, 0.4, 0.35), name="springs.floor"))
-    scene.create_entity(InfoComponent("background"), ClearColorComponent((0.12, 0.12, 0.15)))
-    scene.create_entity(
-        InfoComponent("floor"), TransformComponent((0.0, -0.05, 0.0), scale=(14.0, 1.0, 6.0)),
-        MeshComponent("springs.floor"), MaterialComponent("springs.floor"),
-    )
+    add_floor(scene, "springs")
     # --8<-- [start:springs]
     for i, (integrator, color) in enumerate(SPRING_COLUMNS):
         x = -2.4 + 1.6 * i
