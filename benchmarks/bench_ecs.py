@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import statistics
 import subprocess
 import sys
@@ -32,29 +31,14 @@ ROOT = HERE.parent
 
 
 def teaching(n: int, frames: int) -> dict:
-    import numpy as np
+    from bench_rotate import RotateComponent, RotateEntitySystem
 
-    from gandalf_core import Component, Scene, System, TransformComponent
-    from gandalf_core.math import quat_from_axis_angle, quat_mul, quat_normalize
-
-    class Rotate(Component):
-        def __init__(self, axis: tuple[float, float, float], speed: float) -> None:
-            self.axis = np.asarray(axis, dtype=np.float64)
-            self.speed = float(speed)
-
-    class RotateSystem(System):
-        def __init__(self) -> None:
-            super().__init__([TransformComponent, Rotate])
-
-        def on_update_entity(self, ts: float, entity: object, components: tuple) -> None:
-            transform, rotate = components
-            step = quat_from_axis_angle(rotate.axis, math.radians(rotate.speed) * ts)
-            transform.quaternion = quat_normalize(quat_mul(step, transform.quaternion))
+    from gandalf_core import Scene, TransformComponent
 
     scene = Scene("teaching")
     for i in range(n):
-        scene.create_entity(TransformComponent((float(i), 0.0, 0.0)), Rotate((0.0, 1.0, 0.0), 30.0 + i % 7))
-    scene.add_system(RotateSystem())
+        scene.create_entity(TransformComponent((float(i), 0.0, 0.0)), RotateComponent((0.0, 1.0, 0.0), 30.0 + i % 7))
+    scene.add_system(RotateEntitySystem(normalize=True))
     wall, cpu = [], []
     for _ in range(frames):
         a, c = time.perf_counter(), time.process_time()

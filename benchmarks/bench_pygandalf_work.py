@@ -68,8 +68,9 @@ def model_mesh(model: str) -> Any:
 # ------------------------------------------------------------------------------------------------
 def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
     import numpy as np
+    from bench_rotate import RotateComponent, RotateEntitySystem
 
-    from gandalf_core import Application, Component, Scene, System, TransformComponent
+    from gandalf_core import Application, Scene, TransformComponent
     from gandalf_core.components import (
         CameraComponent,
         LightComponent,
@@ -77,24 +78,8 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
         MeshComponent,
         SkyboxComponent,
     )
-    from gandalf_core.math import quat_from_axis_angle, quat_mul
+    from gandalf_core.math import quat_from_axis_angle
     from gandalf_core.resources import CubeTextureData, MaterialData
-
-    class RotateComponent(Component):
-        def __init__(self, axis: tuple[float, float, float], speed: float) -> None:
-            self.axis = np.asarray(axis, dtype=np.float64)
-            self.speed = float(speed)  # degrees per second
-
-    class RotateSystem(System):
-        """The teaching form: one Python call per entity per frame."""
-
-        def __init__(self) -> None:
-            super().__init__([TransformComponent, RotateComponent])
-
-        def on_update_entity(self, ts: float, entity: Any, components: tuple[Any, ...]) -> None:
-            transform, rotate = components
-            step = quat_from_axis_angle(rotate.axis, math.radians(rotate.speed) * ts)
-            transform.quaternion = quat_mul(step, transform.quaternion)
 
     n, rotating = SCENES[cfg["scene"]]
     width, height = cfg["size"]
@@ -124,7 +109,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
             components.append(RotateComponent(axis, 30.0 + 10.0 * (i % 7)))
         scene.create_entity(*components)
     if rotating:
-        scene.add_system(RotateSystem())
+        scene.add_system(RotateEntitySystem())
     app.add_scene(scene)
     t_scene = time.perf_counter()
 

@@ -75,28 +75,12 @@ SYNC_MODES = ("pixel", "full", "none")
 # ------------------------------------------------------------------------------------------------
 def build_scene(n: int, rotating: bool, model: str, rotate_mode: str, spawn: str = "bulk") -> tuple[Any, Any]:
     """The benchmark scene and its model's MeshData: ``n`` lit models on a grid, a camera that sees them all."""
-    from gandalf_core import Component, Scene, System, TransformComponent
+    from bench_rotate import RotateComponent, RotateEntitySystem
+
+    from gandalf_core import Scene, System, TransformComponent
     from gandalf_core.components import CameraComponent, ClearColorComponent, MaterialComponent, MeshComponent
     from gandalf_core.math import quat_from_axis_angle, quat_mul
     from gandalf_core.resources import MaterialData, primitives
-
-    class RotateComponent(Component):
-        """Spin about ``axis`` at ``speed`` degrees per second."""
-
-        def __init__(self, axis: tuple[float, float, float], speed: float) -> None:
-            self.axis = np.asarray(axis, dtype=np.float64)
-            self.speed = float(speed)
-
-    class RotateEntitySystem(System):
-        """Teaching form: one Python call per entity per frame."""
-
-        def __init__(self) -> None:
-            super().__init__([TransformComponent, RotateComponent])
-
-        def on_update_entity(self, ts: float, entity: Any, components: tuple[Any, ...]) -> None:
-            transform, rotate = components
-            step = quat_from_axis_angle(rotate.axis, math.radians(rotate.speed) * ts)
-            transform.quaternion = quat_mul(step, transform.quaternion)
 
     class RotateBatchSystem(System):
         """Fast form: one vectorised quaternion product over the store's quaternion column."""

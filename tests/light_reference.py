@@ -1,5 +1,5 @@
 """The numpy light model the step 06 and step 07 references share (float64, linear light): what a light sends to
-points of a surface, and the 8-bit sRGB encoding of the framebuffer."""
+points of a surface, the 8-bit sRGB encoding of the framebuffer, and how close a picture must come to it."""
 
 from __future__ import annotations
 
@@ -32,3 +32,21 @@ def incoming(light, transform, p: np.ndarray, n: np.ndarray) -> tuple[np.ndarray
 def to_srgb8(linear: np.ndarray) -> np.ndarray:
     """Linear colours clipped to [0, 1], encoded to 8-bit sRGB (as floats) like the framebuffer."""
     return np.round(linear_to_srgb(np.clip(linear, 0.0, 1.0)) * 255.0)
+
+
+#: How close a rendered sphere must come to its numpy reference (8-bit steps, every channel of the pixels inside
+#: its silhouette): the mean absolute error and the 99th percentile.
+MEAN_TOLERANCE = 1.0
+P99_TOLERANCE = 3.0
+
+
+def pixel_errors(image: np.ndarray, expected: np.ndarray, mask: np.ndarray) -> tuple[float, float]:
+    """(mean, 99th percentile) absolute channel error in 8-bit steps over the pixels of ``mask``."""
+    diff = np.abs(image[..., :3].astype(np.float64) - expected)[mask]
+    return float(diff.mean()), float(np.percentile(diff, 99))
+
+
+def assert_near_reference(image: np.ndarray, expected: np.ndarray, mask: np.ndarray) -> None:
+    """``image`` within :data:`MEAN_TOLERANCE` and :data:`P99_TOLERANCE` of ``expected`` over ``mask``."""
+    mean, p99 = pixel_errors(image, expected, mask)
+    assert mean <= MEAN_TOLERANCE and p99 <= P99_TOLERANCE, f"mean error {mean:.2f}, 99th percentile {p99:.1f}"

@@ -79,21 +79,21 @@ def gl_context():
 
 
 def glsl_source(prelude: str, expression: str, arrays: list[tuple[str, str, np.ndarray]], output: str) -> str:
-    lines = ["#version 430", f"layout(local_size_x = {WORKGROUP}) in;"]
-    for binding, (name, kind, _) in enumerate(arrays):
-        lines.append(f"layout(std430, binding = {binding}) readonly buffer In{binding} {{ {TYPES[kind][0]} "
-                     f"in_{name}[]; }};")
-    lines.append(f"layout(std430, binding = {len(arrays)}) writeonly buffer Out {{ {TYPES[output][0]} result[]; }};")
-    lines.append("uniform uint u_count;")
-    lines.append(prelude)
-    lines.append("void main() {")
-    lines.append("    uint i = gl_GlobalInvocationID.x;")
-    lines.append("    if (i >= u_count) { return; }")
-    for name, kind, _ in arrays:
-        lines.append(f"    {TYPES[kind][0]} {name} = in_{name}[i];")
-    lines.append(f"    result[i] = {expression};")
-    lines.append("}")
-    return "\n".join(lines) + "\n"
+    inputs = "\n".join(f"layout(std430, binding = {binding}) readonly buffer In{binding} {{ {TYPES[kind][0]} "
+                       f"in_{name}[]; }};" for binding, (name, kind, _) in enumerate(arrays))
+    reads = "".join(f"    {TYPES[kind][0]} {name} = in_{name}[i];\n" for name, kind, _ in arrays)
+    return f"""#version 430
+layout(local_size_x = {WORKGROUP}) in;
+{inputs}
+layout(std430, binding = {len(arrays)}) writeonly buffer Out {{ {TYPES[output][0]} result[]; }};
+uniform uint u_count;
+{prelude}
+void main() {{
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= u_count) {{ return; }}
+{reads}    result[i] = {expression};
+}}
+"""
 
 
 def eval_glsl(prelude: str, expression: str, inputs: Inputs, output: str,
@@ -142,19 +142,18 @@ def wgpu_device():
 
 
 def wgsl_source(prelude: str, expression: str, arrays: list[tuple[str, str, np.ndarray]], output: str) -> str:
-    lines = [prelude]
-    for binding, (name, kind, _) in enumerate(arrays):
-        lines.append(f"@group(0) @binding({binding}) var<storage, read> in_{name}: array<{TYPES[kind][1]}>;")
-    lines.append(f"@group(0) @binding({len(arrays)}) var<storage, read_write> result: array<{TYPES[output][1]}>;")
-    lines.append(f"@compute @workgroup_size({WORKGROUP})")
-    lines.append("fn harness_main(@builtin(global_invocation_id) gid: vec3<u32>) {")
-    lines.append("    let i = gid.x;")
-    lines.append("    if (i >= arrayLength(&result)) { return; }")
-    for name, _, _ in arrays:
-        lines.append(f"    let {name} = in_{name}[i];")
-    lines.append(f"    result[i] = {expression};")
-    lines.append("}")
-    return "\n".join(lines) + "\n"
+    inputs = "".join(f"@group(0) @binding({binding}) var<storage, read> in_{name}: array<{TYPES[kind][1]}>;\n"
+                     for binding, (name, kind, _) in enumerate(arrays))
+    reads = "".join(f"    let {name} = in_{name}[i];\n" for name, _, _ in arrays)
+    return f"""{prelude}
+{inputs}@group(0) @binding({len(arrays)}) var<storage, read_write> result: array<{TYPES[output][1]}>;
+@compute @workgroup_size({WORKGROUP})
+fn harness_main(@builtin(global_invocation_id) gid: vec3<u32>) {{
+    let i = gid.x;
+    if (i >= arrayLength(&result)) {{ return; }}
+{reads}    result[i] = {expression};
+}}
+"""
 
 
 def eval_wgsl(prelude: str, expression: str, inputs: Inputs, output: str,

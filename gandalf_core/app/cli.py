@@ -4,6 +4,7 @@ A variant file (``opengl.py`` / ``webgpu.py``) has one shape: a docstring that t
 API's backend, and one line handing the part's description and the backend to :func:`launcher`::
 
     create_app, main = launcher(PART, "opengl", __doc__)        # nothing but the API differs
+    create_app, main = launcher(PART, "opengl", __doc__, shaders=register_shaders)   # the API's own programs
     create_app, main = launcher(PART, OpenGL(), __doc__)        # a Backend subclass: the API's own stages
 
 ``PART`` (a :class:`Part`, in the part's ``scene.py``) is what both variants share: the package, its scene and
@@ -183,13 +184,15 @@ class Backend:
         raise NotImplementedError(f"{type(self).__name__}.scene: build the API's part and return the scene")
 
 
-def launcher(part: Part, backend: str | Backend, description: str = "",
+def launcher(part: Part, backend: str | Backend, description: str = "", *,
+             shaders: Callable[[Application, ModuleType], None] | None = None,
              ) -> tuple[Callable[..., Application], Callable[..., int]]:
     """A variant's ``create_app`` and ``main``: ``create_app, main = launcher(PART, "opengl", __doc__)``.
 
     ``create_app(headless=None, student=False, width=640, height=480, *, impl=None, **options)`` opens the app in
     ``backend``'s API, builds the part's shader table, then the scene: ``backend.scene(app, impl, **options)``, or
-    ``part.build_scene(impl, **options)`` where ``backend`` is just the API's name. ``impl`` (a package like
+    ``part.build_scene(impl, **options)`` where ``backend`` is just the API's name (after ``shaders(app, impl)``,
+    where the part's own programs are built in this API only). ``impl`` (a package like
     ``exercises``) overrides ``student``. ``main(argv)`` runs it from the command line (``description``: its help),
     or, for a step of several parts, the part ``--<option>`` names.
     """
@@ -208,6 +211,8 @@ def launcher(part: Part, backend: str | Backend, description: str = "",
             folder = Path(importlib.import_module(part.step).__file__).resolve().parent / "shaders"
             build_shaders(app, part.shaders, folder,
                           [Path(impl.__file__).resolve().parent] if part.include_impl else [])
+            if shaders is not None:
+                shaders(app, impl)
             scenes = (part.build_scene(impl, **options) if isinstance(backend, str)
                       else backend.scene(app, impl, **options))
             for scene in [scenes] if isinstance(scenes, Scene) else scenes:

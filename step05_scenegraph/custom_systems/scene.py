@@ -7,13 +7,13 @@ from __future__ import annotations
 
 from types import ModuleType
 
-from gandalf_core import ClearColorComponent, InfoComponent, Scene, TransformComponent
+from gandalf_core import InfoComponent, Scene, TransformComponent
 from gandalf_core.app.cli import Part
 from gandalf_core.components import MaterialComponent, MeshComponent
-from gandalf_core.resources import MaterialData, plane, uv_sphere
+from gandalf_core.resources import MaterialData, uv_sphere
 
 from .. import SHADERS
-from ..hierarchy.scene import add_camera
+from ..hierarchy.scene import add_camera, add_floor
 from .components import GravityComponent
 from .systems import GravitySystem
 
@@ -24,18 +24,12 @@ TOUR_FRAMES = 90
 BALLS = ((1.5, (0.9, 0.9, 0.9)), (2.5, (0.95, 0.6, 0.25)), (3.5, (0.35, 0.6, 0.95)))
 
 
-def build_gravity_scene() -> Scene:
+def build_gravity_scene(impl: ModuleType | None = None) -> Scene:
     """Three balls dropped from 1.5, 2.5 and 3.5 m onto a floor that gives back 80 % of their speed."""
     scene = Scene("gravity")
     assets = scene.assets
     assets.mesh("gravity.ball", uv_sphere(1.0, 24, 12))
-    assets.mesh("gravity.floor", plane(1.0))
-    assets.material("gravity.floor", MaterialData("shaded", color=(0.35, 0.4, 0.35), name="gravity.floor"))
-    scene.create_entity(InfoComponent("background"), ClearColorComponent((0.12, 0.12, 0.15)))
-    scene.create_entity(
-        InfoComponent("floor"), TransformComponent((0.0, -0.05, 0.0), scale=(14.0, 1.0, 6.0)),
-        MeshComponent("gravity.floor"), MaterialComponent("gravity.floor"),
-    )
+    add_floor(scene, "gravity")
     # --8<-- [start:balls]
     for i, (height, color) in enumerate(BALLS):
         material = f"gravity.ball{i}"
@@ -51,10 +45,7 @@ def build_gravity_scene() -> Scene:
     return scene
 
 
-def build_scene(impl: ModuleType | None = None) -> Scene:
-    """The bouncing balls (the variants pass the step's ``impl``; this concept has no exercise)."""
-    return build_gravity_scene()
-
-
 #: What the variants (``opengl.py``, ``webgpu.py``) hand the launcher: this concept, its scene and the step's shaders.
-PART = Part(__package__, build_scene, SHADERS)
+PART = Part(__package__, build_gravity_scene, SHADERS)
+#: The concept's scene by its common name (``impl`` unused: this concept has no exercise).
+build_scene = build_gravity_scene

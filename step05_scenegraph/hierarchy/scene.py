@@ -1,8 +1,9 @@
 """The hierarchy's scene, the same for OpenGL and WebGPU: a solar system built from parent links.
 
-``build_scene(impl)`` returns it (``impl`` is unused: the hierarchy has no exercise). :func:`add_child` and
-:func:`add_camera` are the two helpers the step's other scenes reuse. Resource names carry the scene's name as a
-prefix (``solar.sphere``): the scenes of ``several_scenes`` share one renderer, which caches GPU objects by name.
+``build_scene(impl)`` returns it (``impl`` is unused: the hierarchy has no exercise). :func:`add_child`,
+:func:`add_camera` and :func:`add_floor` are the helpers the step's other scenes reuse. Resource names carry the
+scene's name as a prefix (``solar.sphere``): the scenes of ``several_scenes`` share one renderer, which caches GPU
+objects by name.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from gandalf_core import ClearColorComponent, Component, InfoComponent, LinkComp
 from gandalf_core.app.cli import Part
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
-from gandalf_core.resources import MaterialData, TextureData, uv_sphere, value_noise
+from gandalf_core.resources import MaterialData, TextureData, plane, uv_sphere, value_noise
 from gandalf_core.systems import SpinComponent, SpinSystem
 
 from .. import SHADERS
@@ -36,6 +37,16 @@ def add_camera(scene: Scene, eye: tuple[float, float, float], target: tuple[floa
         TransformComponent(eye_arr, quaternion=look_at_rotation(eye_arr, target)),
         CameraComponent(fov, 0.1, 100.0),
     )
+
+
+def add_floor(scene: Scene, prefix: str) -> None:
+    """A dark background and a 14 m x 6 m grey-green floor just below y = 0 (mesh and material ``<prefix>.floor``)."""
+    name = f"{prefix}.floor"
+    scene.assets.mesh(name, plane(1.0))
+    scene.assets.material(name, MaterialData("shaded", color=(0.35, 0.4, 0.35), name=name))
+    scene.create_entity(InfoComponent("background"), ClearColorComponent((0.12, 0.12, 0.15)))
+    scene.create_entity(InfoComponent("floor"), TransformComponent((0.0, -0.05, 0.0), scale=(14.0, 1.0, 6.0)),
+                        MeshComponent(name), MaterialComponent(name))
 
 
 # --8<-- [start:child]

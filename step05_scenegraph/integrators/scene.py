@@ -7,13 +7,13 @@ from __future__ import annotations
 
 from types import ModuleType
 
-from gandalf_core import ClearColorComponent, InfoComponent, Scene, TransformComponent
+from gandalf_core import InfoComponent, Scene, TransformComponent
 from gandalf_core.app.cli import Part
 from gandalf_core.components import MaterialComponent, MeshComponent
-from gandalf_core.resources import MaterialData, cube, plane
+from gandalf_core.resources import MaterialData, cube
 
 from .. import SHADERS
-from ..hierarchy.scene import add_camera
+from ..hierarchy.scene import add_camera, add_floor
 from .components import SpringComponent
 from .systems import SpringSystem
 
@@ -29,7 +29,7 @@ SPRING_COLUMNS = (
 )
 
 
-def build_springs_scene() -> Scene:
+def build_springs_scene(impl: ModuleType | None = None) -> Scene:
     """Four damped springs with the same k, m, c and start, one per integrator.
 
     Explicit Euler gains energy every step until its mass runs away and is reset; implicit Euler loses
@@ -38,14 +38,8 @@ def build_springs_scene() -> Scene:
     scene = Scene("springs")
     assets = scene.assets
     assets.mesh("springs.cube", cube(1.0))
-    assets.mesh("springs.floor", plane(1.0))
     assets.material("springs.anchor", MaterialData("shaded", color=(0.6, 0.6, 0.65), name="springs.anchor"))
-    assets.material("springs.floor", MaterialData("shaded", color=(0.35, 0.4, 0.35), name="springs.floor"))
-    scene.create_entity(InfoComponent("background"), ClearColorComponent((0.12, 0.12, 0.15)))
-    scene.create_entity(
-        InfoComponent("floor"), TransformComponent((0.0, -0.05, 0.0), scale=(14.0, 1.0, 6.0)),
-        MeshComponent("springs.floor"), MaterialComponent("springs.floor"),
-    )
+    add_floor(scene, "springs")
     # --8<-- [start:springs]
     for i, (integrator, color) in enumerate(SPRING_COLUMNS):
         x = -2.4 + 1.6 * i
@@ -68,10 +62,7 @@ def build_springs_scene() -> Scene:
     return scene
 
 
-def build_scene(impl: ModuleType | None = None) -> Scene:
-    """The springs (the variants pass the step's ``impl``; the scene runs the reference integrators)."""
-    return build_springs_scene()
-
-
 #: What the variants (``opengl.py``, ``webgpu.py``) hand the launcher: this concept, its scene and the step's shaders.
-PART = Part(__package__, build_scene, SHADERS)
+PART = Part(__package__, build_springs_scene, SHADERS)
+#: The concept's scene by its common name (``impl`` unused: the scene runs the reference integrators).
+build_scene = build_springs_scene

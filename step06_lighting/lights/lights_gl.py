@@ -2,8 +2,8 @@
 
 A sphere (drawn as a full-frame triangle whose fragment shader works out the sphere's normal) is lit by
 directional lights with the Lambert term. The lights are one std140 block of bytes: a count, then up to
-``MAX_LIGHTS`` (direction, colour) pairs. OpenGL binds the buffer to an indexed *binding point* and tells the
-program which point its ``Lights`` block reads.
+``MAX_LIGHTS`` (direction, colour) pairs (``light_block.py``). OpenGL binds the buffer to an indexed *binding
+point* and tells the program which point its ``Lights`` block reads.
 Compare with ``lights_wgpu.py``: the same bytes, bound through a bind group.
 """
 
@@ -14,11 +14,7 @@ import numpy as np
 
 from gandalf_tools import lesson
 
-MAX_LIGHTS = 4
-#: (direction towards the light, linear RGB colour); the fourth slot is beyond ``count`` and must not show.
-LIGHTS = [((-1.0, 1.0, 1.0), (0.8, 0.6, 0.3)), ((1.0, 0.0, 0.5), (0.1, 0.2, 0.6)),
-          ((0.0, 0.0, -1.0), (1.0, 1.0, 1.0)), ((0.0, 0.0, 1.0), (5.0, 0.0, 5.0))]
-COUNT, AMBIENT = 3, 0.05
+from .light_block import light_block
 
 VERTEX_SHADER = """
 #version 330 core
@@ -47,13 +43,6 @@ void main() {
 }
 """
 
-
-def light_block() -> bytes:
-    """The std140 bytes of the ``Lights`` block: uint count (padded to 16 bytes), then vec4 pairs."""
-    rows = np.zeros((2 * MAX_LIGHTS, 4))
-    for i, (direction, color) in enumerate(LIGHTS):
-        rows[2 * i, :3], rows[2 * i + 1, :3] = direction, color
-    return np.array([COUNT, 0, 0, 0], np.uint32).tobytes() + rows.astype("f4").tobytes()
 
 
 def render(width: int = 64, height: int = 64) -> np.ndarray:

@@ -2,8 +2,9 @@
 
 A sphere (drawn as a full-frame triangle whose fragment shader works out the sphere's normal) is lit by
 directional lights with the Lambert term. The lights are one block of bytes laid out as WGSL's uniform rules
-ask (the same as std140 here): a count, then up to ``MAX_LIGHTS`` (direction, colour) pairs. WebGPU puts the
-buffer in a bind group whose layout matches the shader's ``@group(0) @binding(0)``.
+ask (the same as std140 here): a count, then up to ``MAX_LIGHTS`` (direction, colour) pairs
+(``light_block.py``). WebGPU puts the buffer in a bind group whose layout matches the shader's
+``@group(0) @binding(0)``.
 Compare with ``lights_gl.py``: the same bytes, bound to a binding point.
 """
 
@@ -14,11 +15,7 @@ import wgpu
 
 from gandalf_tools import lesson
 
-MAX_LIGHTS = 4
-#: (direction towards the light, linear RGB colour); the fourth slot is beyond ``count`` and must not show.
-LIGHTS = [((-1.0, 1.0, 1.0), (0.8, 0.6, 0.3)), ((1.0, 0.0, 0.5), (0.1, 0.2, 0.6)),
-          ((0.0, 0.0, -1.0), (1.0, 1.0, 1.0)), ((0.0, 0.0, 1.0), (5.0, 0.0, 5.0))]
-COUNT, AMBIENT = 3, 0.05
+from .light_block import light_block
 
 SHADER = """
 struct Light { direction: vec4<f32>, color: vec4<f32> };
@@ -42,13 +39,6 @@ struct VertexOut { @builtin(position) position: vec4<f32>, @location(0) ndc: vec
 }
 """
 
-
-def light_block() -> bytes:
-    """The uniform buffer's bytes: u32 count (the array starts at byte 16), then vec4 pairs."""
-    rows = np.zeros((2 * MAX_LIGHTS, 4))
-    for i, (direction, color) in enumerate(LIGHTS):
-        rows[2 * i, :3], rows[2 * i + 1, :3] = direction, color
-    return np.array([COUNT, 0, 0, 0], np.uint32).tobytes() + rows.astype("f4").tobytes()
 
 
 def render(width: int = 64, height: int = 64) -> np.ndarray:

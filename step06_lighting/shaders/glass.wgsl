@@ -1,11 +1,6 @@
 // Ice or glass: the environment seen through one refraction, mixed
 // with the reflection by Schlick's Fresnel.
-#include "lit_vertex.wgsl"
-#include "lighting.wgsl"
-
-#include "material.wgsl"  // the Material block, declared in Python with the shader
-@group(1) @binding(1) var env: texture_cube<f32>;
-@group(1) @binding(2) var env_sampler: sampler;
+#include "environment.wgsl"  // the vertex stage, the Material block, env and env_sampler
 
 // --8<-- [start:fragment]
 @fragment

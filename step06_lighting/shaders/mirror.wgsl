@@ -1,11 +1,6 @@
 // A mirror (the silver bunny): the environment seen in the reflected
 // direction, tinted by the colour.
-#include "lit_vertex.wgsl"
-#include "lighting.wgsl"
-
-#include "material.wgsl"  // the Material block, declared in Python with the shader
-@group(1) @binding(1) var env: texture_cube<f32>;
-@group(1) @binding(2) var env_sampler: sampler;
+#include "environment.wgsl"  // the vertex stage, the Material block, env and env_sampler
 
 @fragment
 fn fs_main(in: LitOut) -> @location(0) vec4<f32> {

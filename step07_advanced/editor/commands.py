@@ -64,22 +64,19 @@ class CommandStack:
 
     def undo(self) -> str | None:
         """Take back the last edit; returns its label (None when there is nothing to undo)."""
-        if not self.done:
-            return None
-        command = self.done.pop()
-        command.undo()
-        self.undone.append(command)
-        self._sealed = True
-        self.version += 1
-        return command.label
+        return self._move(self.done, self.undone, "undo")
 
     def redo(self) -> str | None:
         """Apply the last undone edit again; returns its label (None when there is nothing to redo)."""
-        if not self.undone:
+        return self._move(self.undone, self.done, "do")
+
+    def _move(self, source: list, target: list, action: str) -> str | None:
+        """Pop the last command of ``source``, run its ``action`` (``undo`` or ``do``) and push it on ``target``."""
+        if not source:
             return None
-        command = self.undone.pop()
-        command.do()
-        self.done.append(command)
+        command = source.pop()
+        getattr(command, action)()
+        target.append(command)
         self._sealed = True
         self.version += 1
         return command.label

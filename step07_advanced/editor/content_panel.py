@@ -8,6 +8,8 @@ console with its file:line.
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Iterator
+
 from imgui_bundle import imgui
 
 from .components import EditorPanelComponent
@@ -24,39 +26,39 @@ class ContentPanelSystem(PanelSystem):
     def draw(self, panel: EditorPanelComponent) -> None:
         editor = self.editor
         assets = self.scene.assets
-        if imgui.tree_node_ex(f"Meshes ({len(assets.meshes)})", imgui.TreeNodeFlags_.default_open):
-            for name in sorted(assets.meshes):
-                if imgui.small_button(f"+##{name}"):
-                    self.act(editor.spawn_mesh, name)
-                imgui.same_line()
-                imgui.selectable(name, False)
-                self.remember(f"content/mesh/{name}")
-                self._source(MESH_PAYLOAD, "mesh", name)
-            imgui.tree_pop()
-        if imgui.tree_node_ex(f"Textures ({len(assets.textures)})", imgui.TreeNodeFlags_.default_open):
-            for name in sorted(assets.textures):
-                data = assets.textures[name]
-                size = getattr(data, "width", None), getattr(data, "height", None)
-                imgui.selectable(f"{name}  {size[0]}x{size[1]}" if size[0] else name, False)
-                self.remember(f"content/texture/{name}")
-                self._source(TEXTURE_PAYLOAD, "texture", name)
-            imgui.tree_pop()
-        if imgui.tree_node_ex(f"Materials ({len(assets.materials)})", imgui.TreeNodeFlags_.default_open):
-            for name in sorted(assets.materials):
-                data = assets.materials[name]
-                imgui.selectable(f"{name}  ({data.shader})", False)
-                self.remember(f"content/material/{name}")
-                self.texture_drop_target(name, 0)
-            imgui.tree_pop()
+        for name in self._section("Meshes", sorted(assets.meshes)):
+            if imgui.small_button(f"+##{name}"):
+                self.act(editor.spawn_mesh, name)
+            imgui.same_line()
+            imgui.selectable(name, False)
+            self.remember(f"content/mesh/{name}")
+            self._source(MESH_PAYLOAD, "mesh", name)
+        for name in self._section("Textures", sorted(assets.textures)):
+            data = assets.textures[name]
+            size = getattr(data, "width", None), getattr(data, "height", None)
+            imgui.selectable(f"{name}  {size[0]}x{size[1]}" if size[0] else name, False)
+            self.remember(f"content/texture/{name}")
+            self._source(TEXTURE_PAYLOAD, "texture", name)
+        for name in self._section("Materials", sorted(assets.materials)):
+            data = assets.materials[name]
+            imgui.selectable(f"{name}  ({data.shader})", False)
+            self.remember(f"content/material/{name}")
+            self.texture_drop_target(name, 0)
         shaders = editor.app.renderer.shaders
-        if imgui.tree_node_ex(f"Shaders ({len(shaders)})", imgui.TreeNodeFlags_.default_open):
-            for name in shaders.names():
-                imgui.text(name)
-                files = editor.shader_files(name)
-                if files:
-                    imgui.same_line()
-                    if imgui.small_button(f"reload##{name}"):
-                        self.act(editor.reload_shader, name)
+        for name in self._section("Shaders", shaders.names()):
+            imgui.text(name)
+            files = editor.shader_files(name)
+            if files:
+                imgui.same_line()
+                if imgui.small_button(f"reload##{name}"):
+                    self.act(editor.reload_shader, name)
+
+    @staticmethod
+    def _section(title: str, names: Iterable[str]) -> Iterator[str]:
+        """The ``names`` to draw under a tree node ``title (count)``, open at first; none while it is closed."""
+        names = list(names)
+        if imgui.tree_node_ex(f"{title} ({len(names)})", imgui.TreeNodeFlags_.default_open):
+            yield from names
             imgui.tree_pop()
 
     def _source(self, payload_type: str, kind: str, name: str) -> None:

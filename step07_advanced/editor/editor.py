@@ -265,18 +265,19 @@ class Editor(EditorActions):
     @property
     def wants_mouse(self) -> bool:
         """True while the pointer is over a panel: camera controllers should leave the mouse alone."""
-        if not self.enabled:
-            return False
-        self._imgui.set_current_context(self._context)
-        return bool(self._imgui.get_io().want_capture_mouse)
+        return self._io_wants("want_capture_mouse")
 
     @property
     def wants_keyboard(self) -> bool:
         """True while a text field has the keyboard."""
+        return self._io_wants("want_capture_keyboard")
+
+    def _io_wants(self, flag: str) -> bool:
+        """Dear ImGui's ``io.<flag>`` for this editor's context (False while the editor is off)."""
         if not self.enabled:
             return False
         self._imgui.set_current_context(self._context)
-        return bool(self._imgui.get_io().want_capture_keyboard)
+        return bool(getattr(self._imgui.get_io(), flag))
 
     # --- material colours (sRGB, as the colour picker shows them) ----------------------------------
     def material_color(self, name: str) -> tuple[float, ...] | None:

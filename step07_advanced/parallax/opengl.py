@@ -9,10 +9,10 @@ from __future__ import annotations
 
 from types import ModuleType
 
-from gandalf_core import Application, Scene
-from gandalf_core.app.cli import Backend, launcher
+from gandalf_core import Application
+from gandalf_core.app.cli import launcher
 
-from .scene import PART, build_scene
+from .scene import PART
 from .shaders import GL_FRAG, GL_VERT, MATERIAL, SHADER, include_dirs
 
 
@@ -24,17 +24,7 @@ def register_shaders(app: Application, impl: ModuleType) -> None:
 # --8<-- [end:register]
 
 
-class OpenGL(Backend):
-    """The wall with the GLSL program."""
-
-    api = "opengl"
-
-    def scene(self, app: Application, impl: ModuleType) -> Scene:
-        register_shaders(app, impl)
-        return build_scene(impl)
-
-
-create_app, main = launcher(PART, OpenGL(), __doc__)
+create_app, main = launcher(PART, "opengl", __doc__, shaders=register_shaders)
 
 
 if __name__ == "__main__":

@@ -182,5 +182,5 @@ def study_scene(method: str, layers: int = LAYERS, height_scale: float = HEIGHT_
                        name=f"parallax study {label}", prefix=f"study_{label}_")
 
 
-#: The technique the variants (``opengl.py``, ``webgpu.py``) hand the launcher with their backends.
-PART = Part(__package__)
+#: The technique the variants (``opengl.py``, ``webgpu.py``) hand the launcher with their programs.
+PART = Part(__package__, build_scene)

@@ -33,6 +33,7 @@ from pathlib import Path
 import numpy as np
 
 from gandalf_tools.plots import figure, save_figure
+from gandalf_tools.studies import markdown_table
 
 from .reference import bilinear_sampler, march_np, parallax_offset_np
 from .scene import (
@@ -179,21 +180,19 @@ def measure_backend(backend: str, rows: list[tuple[str, int]], width: int, heigh
 
 # --- the outputs ----------------------------------------------------------------------------------
 def table(rows: list[tuple[str, int]], uv: dict, measured: dict[str, dict], backends: list[str]) -> str:
-    head = "| method | layers | uv error mean (texels) | uv error p99 (texels) |"
-    rule = "|---|---:|---:|---:|"
+    header = ["method", "layers", "uv error mean (texels)", "uv error p99 (texels)"]
     for b in backends:
-        head += f" {b} RMSE (8-bit) | {b} ms/frame |"
-        rule += "---:|---:|"
-    lines = [head, rule]
+        header += [f"{b} RMSE (8-bit)", f"{b} ms/frame"]
+    cells = []
     for key in rows:
         method, layers = key
         name = LABELS[method] + (" (reference)" if layers == REFERENCE_LAYERS else "")
         shown = layers if method in ("steep", "occlusion") else "–"
-        line = f"| {name} | {shown} | {uv[key]['mean']:.3f} | {uv[key]['p99']:.3f} |"
+        row = [name, shown, f"{uv[key]['mean']:.3f}", f"{uv[key]['p99']:.3f}"]
         for b in backends:
-            line += f" {measured[b][key]['rmse']:.2f} | {measured[b][key]['ms']:.2f} |"
-        lines.append(line)
-    return "\n".join(lines) + "\n"
+            row += [f"{measured[b][key]['rmse']:.2f}", f"{measured[b][key]['ms']:.2f}"]
+        cells.append(row)
+    return markdown_table(header, cells)
 
 
 def plot(path: Path, layers: tuple[int, ...], uv: dict, measured: dict[str, dict], backends: list[str]) -> None:

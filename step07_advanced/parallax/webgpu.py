@@ -8,10 +8,10 @@ from __future__ import annotations
 
 from types import ModuleType
 
-from gandalf_core import Application, Scene
-from gandalf_core.app.cli import Backend, launcher
+from gandalf_core import Application
+from gandalf_core.app.cli import launcher
 
-from .scene import PART, build_scene
+from .scene import PART
 from .shaders import MATERIAL, SHADER, WGSL, include_dirs
 
 
@@ -23,17 +23,7 @@ def register_shaders(app: Application, impl: ModuleType) -> None:
 # --8<-- [end:register]
 
 
-class WebGPU(Backend):
-    """The wall with the WGSL module."""
-
-    api = "webgpu"
-
-    def scene(self, app: Application, impl: ModuleType) -> Scene:
-        register_shaders(app, impl)
-        return build_scene(impl)
-
-
-create_app, main = launcher(PART, WebGPU(), __doc__)
+create_app, main = launcher(PART, "webgpu", __doc__, shaders=register_shaders)
 
 
 if __name__ == "__main__":

@@ -100,5 +100,5 @@ def build_scene(impl: ModuleType | None = None, ibl: IBLMaps | None = None, env_
     return scene
 
 
-#: The technique the variants (``opengl.py``, ``webgpu.py``) hand the launcher with their backends.
-PART = Part(__package__)
+#: The technique the variants (``opengl.py``, ``webgpu.py``) hand the launcher with their programs.
+PART = Part(__package__, build_scene)

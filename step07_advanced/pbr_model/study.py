@@ -32,6 +32,7 @@ from pathlib import Path
 import numpy as np
 
 from gandalf_tools.plots import figure, save_figure
+from gandalf_tools.studies import markdown_table
 
 SAMPLES = (4, 8, 16, 32, 64, 128, 256, 512)
 QUICK_SAMPLES = (4, 8, 16, 32, 64)
@@ -179,20 +180,18 @@ def plot_maps(maps, path: Path) -> None:
 
 
 def table(rows: list[dict], backends: list[str]) -> str:
-    head = ("| method | samples M | prefilter time (s, median) | relative RMS error | max error (8-bit steps), "
-            "levels 1/2/3/4/5 |")
-    rule = "|---|---:|---:|---:|---:|"
+    header = ["method", "samples M", "prefilter time (s, median)", "relative RMS error",
+              "max error (8-bit steps), levels 1/2/3/4/5"]
     for b in backends:
-        head += f" {b} PSNR to reference maps (dB) | {b} frame (ms) |"
-        rule += "---:|---:|"
-    lines = [head, rule]
+        header += [f"{b} PSNR to reference maps (dB)", f"{b} frame (ms)"]
+    cells = []
     for r in rows:
-        line = (f"| {r['method']} | {r['samples']} | {r['prefilter_s']:.3f} | {r['rms_error']:.4f} | "
-                f"{'/'.join(f'{x:.0f}' for x in r['max_steps_per_level'])} |")
+        row = [r["method"], r["samples"], f"{r['prefilter_s']:.3f}", f"{r['rms_error']:.4f}",
+               "/".join(f"{x:.0f}" for x in r["max_steps_per_level"])]
         for b in backends:
-            line += f" {r[b]['psnr_db']:.1f} | {r[b]['frame_ms']:.2f} |"
-        lines.append(line)
-    return "\n".join(lines) + "\n"
+            row += [f"{r[b]['psnr_db']:.1f}", f"{r[b]['frame_ms']:.2f}"]
+        cells.append(row)
+    return markdown_table(header, cells)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -126,21 +126,18 @@ def test_a_missing_texture_file_names_file_material_and_field(tmp_path):
         assert part in message, message
 
 
-def test_mirrored_repeat_is_refused(tmp_path):
+@pytest.mark.parametrize("wraps, parts", [
+    ({"wrapS": 33648, "wrapT": 33648}, ("quad.gltf", "material 'Painted'", "baseColorTexture", "wrapS",
+                                        "MIRRORED_REPEAT")),
+    ({"wrapS": 10497, "wrapT": 33071}, ("material 'Painted'", "baseColorTexture",
+                                        "wrapS REPEAT differs from wrapT CLAMP_TO_EDGE")),
+], ids=["mirrored-repeat", "different-wraps-per-axis"])
+def test_an_unsupported_wrap_is_refused(tmp_path, wraps, parts):
     write_png(tmp_path, "albedo.png")
-    path = write_gltf(tmp_path, textured(), textures=[{"source": 0, "sampler": 0}],
-                      samplers=[{"wrapS": 33648, "wrapT": 33648}], images=[{"uri": "albedo.png"}])
+    path = write_gltf(tmp_path, textured(), textures=[{"source": 0, "sampler": 0}], samplers=[wraps],
+                      images=[{"uri": "albedo.png"}])
     message = _error(path)
-    for part in ("quad.gltf", "material 'Painted'", "baseColorTexture", "wrapS", "MIRRORED_REPEAT"):
-        assert part in message, message
-
-
-def test_different_wraps_per_axis_are_refused(tmp_path):
-    write_png(tmp_path, "albedo.png")
-    path = write_gltf(tmp_path, textured(), textures=[{"source": 0, "sampler": 0}],
-                      samplers=[{"wrapS": 10497, "wrapT": 33071}], images=[{"uri": "albedo.png"}])
-    message = _error(path)
-    for part in ("material 'Painted'", "baseColorTexture", "wrapS REPEAT differs from wrapT CLAMP_TO_EDGE"):
+    for part in parts:
         assert part in message, message
 
 

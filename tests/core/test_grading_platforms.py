@@ -24,6 +24,11 @@ ROOT = Path(__file__).resolve().parents[2]
 ENV = {k: v for k, v in os.environ.items() if k != "GANDALF_IMPL"}
 
 
+def _run(args: list[str], timeout: float) -> subprocess.CompletedProcess:
+    """``args`` run from the repository root in the test environment, their output captured as text."""
+    return subprocess.run(args, cwd=ROOT, env=ENV, capture_output=True, text=True, timeout=timeout)
+
+
 def test_batch_grades_sample_submissions_into_the_right_gradebook(tmp_path):
     subs, out = tmp_path / "subs", tmp_path / "out"
     make = [sys.executable, str(ROOT / "scripts" / "make_sample_submissions.py"), "--out", str(subs)]
@@ -34,15 +39,8 @@ def test_batch_grades_sample_submissions_into_the_right_gradebook(tmp_path):
     students = sorted(manifest)
     kinds = ["stubs", "solutions", "runaway loop", "hard exit", "random"]  # student_05's syntax error is in step 03
     assert [manifest[s]["kind"] for s in students] == kinds
-    proc = subprocess.run(
-        [sys.executable, "-m", "gandalf_tools.grading.batch", str(subs), "--out", str(out), "--steps", "step01"]
-        + ["step02", "--jobs", "2", "--timeout", "20"],
-        cwd=ROOT,
-        env=ENV,
-        capture_output=True,
-        text=True,
-        timeout=600,
-    )
+    proc = _run([sys.executable, "-m", "gandalf_tools.grading.batch", str(subs), "--out", str(out), "--steps", "step01",
+                 "step02", "--jobs", "2", "--timeout", "20"], timeout=600)
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
     assert "[  5/5]" in proc.stdout, proc.stdout  # the progress line
     rows = {row["student"]: row for row in csv.DictReader((out / "gradebook.csv").open())}
@@ -56,7 +54,7 @@ def test_batch_grades_sample_submissions_into_the_right_gradebook(tmp_path):
         report = (out / student / "report.md").read_text()
         assert report.startswith(f"# {student}") and why in report, report[-2000:]
     # Every student's points equal the points of the exercises done from the solutions (the manifest).
-    checked = subprocess.run(make + ["--check", str(out)], env=ENV, capture_output=True, text=True, timeout=60)
+    checked = _run(make + ["--check", str(out)], timeout=60)
     assert checked.returncode == 0 and "5 students checked against the manifest: 0 mismatches" in checked.stdout, (
         checked.stdout + checked.stderr
     )
@@ -89,14 +87,7 @@ def test_each_classroom_command_collects_its_graded_tests(entry):
     t = _classroom()[entry]
     args = shlex.split(t["run"])
     assert args[0] == ".venv/bin/python"
-    proc = subprocess.run(
-        [sys.executable, *args[1:], "--collect-only", "-m", "exercise"],
-        cwd=ROOT,
-        env=ENV,
-        capture_output=True,
-        text=True,
-        timeout=120,
-    )
+    proc = _run([sys.executable, *args[1:], "--collect-only", "-m", "exercise"], timeout=120)
     assert proc.returncode == 0, proc.stdout[-2000:] + proc.stderr[-2000:]
     collected = [line for line in proc.stdout.splitlines() if "::" in line]
     step = args[3].split("/")[-1]

@@ -181,38 +181,39 @@ def test_a_cube_map_in_a_2d_slot_of_a_block_material_names_the_slot(backend):
             r.materials.build("M", MaterialData("unlit", ["sky"]))
 
 
-def test_glsl_a_varying_the_vertex_stage_never_declares_names_shader_file_and_varying():
-    frag = GL_FRAG.replace("in vec3 v_world;", "in vec3 v_world;\nin vec2 v_uv;").replace(
-        "vec4(v_world, 0.0) * 0.0", "vec4(v_world + vec3(v_uv, 0.0), 0.0) * 0.0")
-    check_refused("opengl", r"shader 'probe' \(probe\.frag\): the fragment stage reads "
-                  r"varying 'v_uv' \(vec2\), which the vertex stage \(probe\.vert\) "
-                  r"never declares as 'out' \(its outputs: v_world\)", frag=frag)
+#: Stage interfaces that do not match, each refused naming the shader, its file and the variable: the API, the
+#: source edited (``frag``, ``vert`` or ``wgsl``), its ``(old, new)`` edits and the expected message (a pattern).
+MISMATCHED_INTERFACES = {
+    "glsl-varying-never-declared": ("opengl", "frag", [
+        ("in vec3 v_world;", "in vec3 v_world;\nin vec2 v_uv;"),
+        ("vec4(v_world, 0.0) * 0.0", "vec4(v_world + vec3(v_uv, 0.0), 0.0) * 0.0"),
+    ], r"shader 'probe' \(probe\.frag\): the fragment stage reads varying 'v_uv' \(vec2\), which the vertex stage "
+       r"\(probe\.vert\) never declares as 'out' \(its outputs: v_world\)"),
+    "glsl-varying-never-written": ("opengl", "vert", [("    v_world = world.xyz;\n", "")],
+                                   r"shader 'probe' \(probe\.frag\): the fragment stage reads varying 'v_world', "
+                                   r"which the vertex stage \(probe\.vert\) declares but never writes"),
+    "glsl-varying-of-another-type": ("opengl", "frag", [
+        ("in vec3 v_world;", "in vec4 v_world;"), ("vec4(v_world, 0.0)", "v_world"),
+    ], r"varying 'v_world' is vec4 here but vec3 in the vertex stage"),
+    "wgsl-input-never-returned": ("webgpu", "wgsl", [
+        ("@fragment fn fs_main(in: VOut)", "@fragment fn fs_main(in: VOut, @location(3) uv: vec2<f32>)"),
+    ], r"shader 'probe': probe\.wgsl:\d+: fragment entry point 'fs_main' reads @location\(3\) \(Float32x2\), "
+       r"which vertex entry point 'vs_main' never returns"),
+    "wgsl-input-of-another-type": ("webgpu", "wgsl", [
+        ("@fragment fn fs_main(in: VOut)", "@fragment fn fs_main(@location(0) world: vec4<f32>)"),
+    ], r"probe\.wgsl:\d+: fragment entry point 'fs_main' reads @location\(0\) \(Float32x4\), which vertex entry "
+       r"point 'vs_main' never returns \(.*fewer components or another type"),
+}
 
 
-def test_glsl_a_varying_declared_but_never_written_is_an_error():
-    vert = GL_VERT.replace("    v_world = world.xyz;\n", "")
-    check_refused("opengl", r"shader 'probe' \(probe\.frag\): the fragment stage reads "
-                  r"varying 'v_world', which the vertex stage \(probe\.vert\) "
-                  r"declares but never writes", vert=vert)
-
-
-def test_glsl_a_varying_of_another_type_is_an_error():
-    frag = GL_FRAG.replace("in vec3 v_world;", "in vec4 v_world;").replace("vec4(v_world, 0.0)", "v_world")
-    check_refused("opengl", r"varying 'v_world' is vec4 here but vec3 in the vertex stage", frag=frag)
-
-
-def test_wgsl_a_fragment_input_the_vertex_stage_never_returns_names_shader_file_and_location():
-    wgsl = WGSL.replace("@fragment fn fs_main(in: VOut)", "@fragment fn fs_main(in: VOut, @location(3) uv: vec2<f32>)")
-    check_refused("webgpu", r"shader 'probe': probe\.wgsl:\d+: fragment entry point 'fs_main' "
-                  r"reads @location\(3\) \(Float32x2\), which vertex entry "
-                  r"point 'vs_main' never returns", wgsl=wgsl)
-
-
-def test_wgsl_a_fragment_input_of_another_type_is_an_error():
-    wgsl = WGSL.replace("@fragment fn fs_main(in: VOut)", "@fragment fn fs_main(@location(0) world: vec4<f32>)")
-    check_refused("webgpu", r"probe\.wgsl:\d+: fragment entry point 'fs_main' reads "
-                  r"@location\(0\) \(Float32x4\), which vertex entry point "
-                  r"'vs_main' never returns \(.*fewer components or another type", wgsl=wgsl)
+@pytest.mark.parametrize("case", MISMATCHED_INTERFACES)
+def test_a_stage_interface_mismatch_names_shader_file_and_variable(case):
+    api, stage, edits, pattern = MISMATCHED_INTERFACES[case]
+    source = {"frag": GL_FRAG, "vert": GL_VERT, "wgsl": WGSL}[stage]
+    for old, new in edits:
+        assert old in source, f"{case}: the probe shader no longer has {old!r}"
+        source = source.replace(old, new)
+    check_refused(api, pattern, **{stage: source})
 
 
 def test_a_declared_block_no_stage_includes_names_the_shader_and_files(backend):

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from core_shaders import SHADERS
 
 from gandalf_core import Application, ClearColorComponent, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, LightComponent, MaterialComponent, MeshComponent
@@ -54,19 +55,9 @@ void main() {
 }
 """
 SHADOWED_WGSL = """
-#include "frame.wgsl"
-#include "instance.wgsl"
+#include "lit_vertex.wgsl"
 #include "shadow.wgsl"
 #include "material.wgsl"
-struct VOut { @builtin(position) position: vec4<f32>, @location(0) world: vec3<f32>, @location(1) normal: vec3<f32> };
-@vertex fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, inst: Instance) -> VOut {
-    var out: VOut;
-    let world = instance_model(inst) * vec4<f32>(position, 1.0);
-    out.position = frame.projection * frame.view * world;
-    out.world = world.xyz;
-    out.normal = instance_normal(inst, normal);
-    return out;
-}
 @fragment fn fs_main(in: VOut) -> @location(0) vec4<f32> {
     let n = normalize(in.normal);
     var c = lights.ambient.rgb * material.color.rgb;
@@ -85,7 +76,7 @@ def make_app(backend: str) -> Application:
     if backend == "opengl":
         app.renderer.shaders.build("shadowed", SHADOWED_VERT, SHADOWED_FRAG)
     else:
-        app.renderer.shaders.build("shadowed", SHADOWED_WGSL)
+        app.renderer.shaders.build("shadowed", SHADOWED_WGSL, include_dirs=[SHADERS])
     return app
 
 

@@ -22,6 +22,12 @@ def expected_view(distance: float, yaw: float, pitch: float) -> np.ndarray:
     return gm.look_at(eye, TARGET)
 
 
+def assert_next_frame_view(app, distance: float, yaw: float, pitch: float) -> None:
+    """Run one frame: the camera it renders from is the orbit (``distance``, ``yaw``, ``pitch``) around TARGET."""
+    app.step()
+    np.testing.assert_allclose(rendered_camera(app)[0], expected_view(distance, yaw, pitch), atol=1e-9)
+
+
 def orbit_of(app) -> OrbitCameraComponent:
     return app.scene.get_component(app.scene.query(OrbitCameraComponent).entities[0], OrbitCameraComponent)
 
@@ -34,23 +40,19 @@ def app(impl):
 
 @pytest.mark.exercise("OrbitCameraSystem")
 def test_camera_starts_at_its_orbit(app):
-    app.step()
-    np.testing.assert_allclose(rendered_camera(app)[0], expected_view(9.0, 30.0, 25.0), atol=1e-9)
+    assert_next_frame_view(app, 9.0, 30.0, 25.0)
 
 
 @pytest.mark.exercise("OrbitCameraSystem")
 def test_left_drag_turns_the_orbit(app):
     app.input.move_mouse(100, 100)
-    app.step()  # moving without a button does nothing
-    np.testing.assert_allclose(rendered_camera(app)[0], expected_view(9.0, 30.0, 25.0), atol=1e-9)
+    assert_next_frame_view(app, 9.0, 30.0, 25.0)  # moving without a button does nothing
     app.input.button(0, "press")
     app.input.move_mouse(140, 80)  # dx = 40, dy = -20 pixels at 0.5 degrees per pixel
-    app.step()
-    np.testing.assert_allclose(rendered_camera(app)[0], expected_view(9.0, 10.0, 15.0), atol=1e-9)
+    assert_next_frame_view(app, 9.0, 10.0, 15.0)
     app.input.button(0, "release")
     app.input.move_mouse(300, 300)
-    app.step()
-    np.testing.assert_allclose(rendered_camera(app)[0], expected_view(9.0, 10.0, 15.0), atol=1e-9)
+    assert_next_frame_view(app, 9.0, 10.0, 15.0)
 
 
 @pytest.mark.exercise("OrbitCameraSystem")
@@ -71,15 +73,13 @@ def test_drag_and_scroll_update_the_orbit_values(app):
 def test_right_button_does_not_orbit(app):
     app.input.button(1, "press")
     app.input.move_mouse(50, 70)
-    app.step()
-    np.testing.assert_allclose(rendered_camera(app)[0], expected_view(9.0, 30.0, 25.0), atol=1e-9)
+    assert_next_frame_view(app, 9.0, 30.0, 25.0)
 
 
 @pytest.mark.exercise("OrbitCameraSystem")
 def test_scroll_zooms_and_clamps(app):
     app.input.scroll(0, 2)  # two steps in: 9 * 0.9^2
-    app.step()
-    np.testing.assert_allclose(rendered_camera(app)[0], expected_view(9.0 * 0.81, 30.0, 25.0), atol=1e-9)
+    assert_next_frame_view(app, 9.0 * 0.81, 30.0, 25.0)
     app.input.scroll(0, -100)
     app.step()
     assert orbit_of(app).distance == pytest.approx(50.0)

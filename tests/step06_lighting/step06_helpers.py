@@ -120,11 +120,6 @@ def reference_sphere(material: MaterialData, lights, size: tuple[int, int] = SIZ
     return to_srgb8(color), hit
 
 
-def pixel_errors(image: np.ndarray, expected: np.ndarray, mask: np.ndarray) -> tuple[float, float]:
-    """(mean, 99th percentile) absolute channel error in 8-bit steps over the pixels of ``mask``."""
-    diff = np.abs(image[..., :3].astype(np.float64) - expected)[mask]
-    return float(diff.mean()), float(np.percentile(diff, 99))
-
 
 # --- the concepts' pictures ---------------------------------------------------------------------------
 CONCEPT_SIZE = {"width": 160, "height": 120}

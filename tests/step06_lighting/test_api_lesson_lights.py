@@ -14,6 +14,7 @@ import pytest
 from cli_checks import check_main_writes_a_png_and_help_only_helps
 
 from step06_lighting.lights import lights_gl, lights_wgpu
+from step06_lighting.lights.light_block import AMBIENT, COUNT, LIGHTS, MAX_LIGHTS, light_block
 
 SIZE = 64
 
@@ -25,8 +26,8 @@ def reference(size: int) -> tuple[np.ndarray, np.ndarray]:
     px, py = x / 0.9, y / 0.9
     r2 = px * px + py * py
     normal = np.stack([px, py, np.sqrt(np.clip(1 - r2, 0, None))], axis=-1)
-    color = np.full(r2.shape + (3,), lights_gl.AMBIENT)
-    for direction, light in lights_gl.LIGHTS[:lights_gl.COUNT]:
+    color = np.full(r2.shape + (3,), AMBIENT)
+    for direction, light in LIGHTS[:COUNT]:
         d = np.asarray(direction) / np.linalg.norm(direction)
         color += np.clip(normal @ d, 0, None)[..., None] * np.asarray(light)
     color = np.where((r2 <= 1)[..., None], np.minimum(color, 1.0), 0.0)
@@ -49,9 +50,15 @@ def test_both_apis_give_the_same_picture():
     assert same >= 0.995, f"only {100 * same:.2f} % of pixels agree to 2 steps (allowed ≥ 99.5 %)"
 
 
-def test_both_apis_upload_the_same_bytes():
-    assert lights_gl.light_block() == lights_wgpu.light_block()
-    assert len(lights_gl.light_block()) == 16 + 32 * lights_gl.MAX_LIGHTS
+def test_both_apis_upload_the_same_block_of_count_then_vec4_pairs():
+    assert lights_gl.light_block is lights_wgpu.light_block is light_block
+    data = light_block()
+    assert len(data) == 16 + 32 * MAX_LIGHTS
+    assert np.frombuffer(data[:16], np.uint32).tolist() == [COUNT, 0, 0, 0]
+    rows = np.frombuffer(data[16:], np.float32).reshape(2 * MAX_LIGHTS, 4)
+    for i, (direction, color) in enumerate(LIGHTS):
+        np.testing.assert_allclose(rows[2 * i], [*direction, 0.0], err_msg=f"light {i}'s direction")
+        np.testing.assert_allclose(rows[2 * i + 1], [*color, 0.0], err_msg=f"light {i}'s colour")
 
 
 @pytest.mark.parametrize("module", [lights_gl, lights_wgpu], ids=["gl", "wgpu"])

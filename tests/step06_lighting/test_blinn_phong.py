@@ -8,12 +8,10 @@ error <= 1.0 and 99th percentile <= 3. The reference solution measures 0.10 and 
 from __future__ import annotations
 
 import pytest
-from step06_helpers import ambient, directional, inner, pixel_errors, point, reference_sphere, render, sphere_scene
+from light_reference import assert_near_reference
+from step06_helpers import ambient, directional, inner, point, reference_sphere, render, sphere_scene
 
 from gandalf_core.resources import MaterialData
-
-MEAN_TOLERANCE = 1.0
-P99_TOLERANCE = 3.0
 
 
 def _lights():
@@ -27,8 +25,7 @@ def _lights():
 def _check(backend, impl, material, lights):
     expected, hit = reference_sphere(material, lights)
     image = render(backend, impl, sphere_scene(material, lights))
-    mean, p99 = pixel_errors(image, expected, inner(hit))
-    assert mean <= MEAN_TOLERANCE and p99 <= P99_TOLERANCE, f"mean error {mean:.2f}, 99th percentile {p99:.1f}"
+    assert_near_reference(image, expected, inner(hit))
 
 
 @pytest.mark.exercise("blinn_phong")

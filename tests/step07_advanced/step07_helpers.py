@@ -183,11 +183,6 @@ def reference_sphere(material: MaterialData, lights, size: tuple[int, int] = SIZ
     return to_srgb8(color), hit
 
 
-def pixel_errors(image: np.ndarray, expected: np.ndarray, mask: np.ndarray) -> tuple[float, float]:
-    """(mean, 99th percentile) absolute channel error in 8-bit steps over ``mask``."""
-    diff = np.abs(image[..., :3].astype(np.float64) - expected)[mask]
-    return float(diff.mean()), float(np.percentile(diff, 99))
-
 
 def sample_bilinear(texture: TextureData, uv: np.ndarray) -> np.ndarray:
     """Bilinear lookup (repeat wrap, level 0, values in [0, 1]) of ``texture`` at ``uv`` (..., 2)."""

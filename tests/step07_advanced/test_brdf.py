@@ -13,20 +13,8 @@ passes once those are written too; ``test_pbr_model_brdf.py`` grades every funct
 from __future__ import annotations
 
 import pytest
-from step07_helpers import (
-    ambient,
-    directional,
-    inner,
-    pbr_material,
-    pixel_errors,
-    point,
-    reference_sphere,
-    render,
-    sphere_scene,
-)
-
-MEAN_TOLERANCE = 1.0
-P99_TOLERANCE = 3.0
+from light_reference import assert_near_reference
+from step07_helpers import ambient, directional, inner, pbr_material, point, reference_sphere, render, sphere_scene
 
 
 def _lights():
@@ -43,5 +31,4 @@ def test_pbr_sphere_matches_the_numpy_reference(impl, backend, metallic, roughne
     material = pbr_material((0.9, 0.6, 0.35), metallic, roughness)
     expected, hit = reference_sphere(material, _lights())
     image = render(backend, impl, sphere_scene(material, _lights()))
-    mean, p99 = pixel_errors(image, expected, inner(hit))
-    assert mean <= MEAN_TOLERANCE and p99 <= P99_TOLERANCE, f"mean error {mean:.2f}, 99th percentile {p99:.1f}"
+    assert_near_reference(image, expected, inner(hit))

@@ -12,7 +12,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from step07_helpers import inner, pixel_errors, render, sample_bilinear, to_srgb8
+from light_reference import pixel_errors
+from step07_helpers import inner, render, sample_bilinear, to_srgb8
 
 from gandalf_core import Scene, TransformComponent
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent

@@ -11,6 +11,7 @@ with the same seed: PSNR ≥ 30 dB (measured: the two pictures are identical, PS
 
 from __future__ import annotations
 
+import contextlib
 import importlib
 from pathlib import Path
 
@@ -39,6 +40,15 @@ def tracer_app(backend: str, build, size=SIZE, student: bool = False):
     kernel = variant.create_tracer(app, load_impl("step07_advanced", student))
     app.add_scene(build(kernel))
     return app, kernel
+
+
+@contextlib.contextmanager
+def traced(backend: str, build, frames: int):
+    """The app of :func:`tracer_app` after ``frames`` frames, open: ``(app, kernel, the accumulation it read)``."""
+    app, kernel = tracer_app(backend, build)
+    with app:
+        app.run(frames=frames)
+        yield app, kernel, kernel.read()
 
 
 def sky_scene(kernel, samples: int = 3) -> Scene:
@@ -82,10 +92,7 @@ def test_random_numbers_are_the_same_in_glsl_wgsl_and_numpy(language):
 # --- the sky, the camera and the display ------------------------------------------------------------------------
 @pytest.mark.parametrize("backend", ["opengl", "webgpu"])
 def test_sky_only_picture_matches_numpy_and_accumulation_stops_and_restarts(backend):
-    app, kernel = tracer_app(backend, sky_scene)
-    with app:
-        app.run(frames=2)
-        acc = kernel.read()
+    with traced(backend, sky_scene, frames=2) as (app, kernel, acc):
         assert np.all(acc[..., 3] == 2.0), f"{backend}: after 2 frames every pixel must hold 2 samples"
         packed = kernel.packed
         texels = pt.sky_texels(app.scene.assets.textures["sky"])
@@ -175,10 +182,7 @@ def bunny_scene(kernel) -> Scene:
 
 @pytest.mark.parametrize("backend", ["opengl", "webgpu"])
 def test_gpu_bvh_traversal_matches_brute_force(backend):
-    app, kernel = tracer_app(backend, bunny_scene)
-    with app:
-        app.run(frames=1)
-        acc = kernel.read()
+    with traced(backend, bunny_scene, frames=1) as (app, kernel, acc):
         trace = pt.gather(app.scene)
         w, h = SIZE
         dirs = pt.camera_rays_np(kernel.packed, w, h, 0).reshape(-1, 3)

@@ -22,7 +22,8 @@ import importlib
 
 import numpy as np
 import pytest
-from step07_helpers import EYE, FOV, brdf_lut_texture, inner, pixel_errors, to_srgb8, with_reference_files
+from light_reference import pixel_errors
+from step07_helpers import EYE, FOV, brdf_lut_texture, inner, to_srgb8, with_reference_files
 
 from gandalf_core import Application, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent

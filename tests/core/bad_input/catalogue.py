@@ -17,8 +17,9 @@ mark is removed with the fix) and the reason says what is wrong.
 from __future__ import annotations
 
 import warnings
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -124,3 +125,10 @@ def run(case: Case, *args: Any) -> Any:
     ok = verdict is None or (isinstance(verdict, (bool, np.bool_)) and bool(verdict))
     assert ok, f"[{case.id}] expected {expected}, got {value!r:.300}"
     return value
+
+
+def write_files(root: Path, files: Mapping[str, str]) -> Path:
+    """Write the catalogue's input files (name -> text) into the folder ``root``; returns ``root``."""
+    for name, text in files.items():
+        (root / name).write_text(text)
+    return root

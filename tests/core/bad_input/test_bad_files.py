@@ -28,7 +28,7 @@ from gandalf_core.resources import (
 )
 from gandalf_core.resources.assets import Assets
 
-from .catalogue import error, params, result, run
+from .catalogue import error, params, result, run, write_files
 
 TRIANGLE = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
 FILES = {
@@ -53,9 +53,7 @@ FILES = {
 
 @pytest.fixture(scope="module")
 def folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    root = tmp_path_factory.mktemp("files")
-    for name, text in FILES.items():
-        (root / name).write_text(text)
+    root = write_files(tmp_path_factory.mktemp("files"), FILES)
     (root / "folder.obj").mkdir()
     (root / "folder.png").mkdir()
     checkerboard(8, 2).save_png(root / "good.png") if hasattr(TextureData, "save_png") else _png(root / "good.png")

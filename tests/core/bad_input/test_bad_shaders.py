@@ -13,7 +13,7 @@ import pytest
 from gandalf_core.render.errors import ShaderCompileError
 from gandalf_core.resources import ResourceError
 
-from .catalogue import error, params_per_backend, result, run
+from .catalogue import error, params_per_backend, result, run, write_files
 
 FILES = {
     "plain.vert": """#version 330 core
@@ -145,10 +145,7 @@ void not_main() { gl_Position = vec4(a_position, 1.0); }
 
 @pytest.fixture(scope="module")
 def folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    root = tmp_path_factory.mktemp("shaders")
-    for name, text in FILES.items():
-        (root / name).write_text(text)
-    return root
+    return write_files(tmp_path_factory.mktemp("shaders"), FILES)
 
 
 _n = [0]
