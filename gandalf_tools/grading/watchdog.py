@@ -38,6 +38,8 @@ class ExerciseTimeout(BaseException):
     ends, for a loop that catches even this)."""
 
 
+#: The functions that ran past their budget (by module and qualified name: another step's function of the same name
+#: is another function) -> the sentence every later call fails with.
 _hung: dict[str, str] = {}
 _depth = threading.local()
 
@@ -103,10 +105,12 @@ _watcher = _Watcher()
 
 
 def _wrap(fn: Callable[..., Any], name: str, budget: float) -> Callable[..., Any]:
+    key = f"{fn.__module__}.{fn.__qualname__}"
+
     @functools.wraps(fn)
     def guarded(*args: Any, **kwargs: Any) -> Any:
-        if name in _hung:
-            raise ExerciseTimeout(_hung[name])
+        if key in _hung:
+            raise ExerciseTimeout(_hung[key])
         depth = getattr(_depth, "value", 0)
         if depth:  # only the outermost student call runs the clock
             return fn(*args, **kwargs)
@@ -119,7 +123,7 @@ def _wrap(fn: Callable[..., Any], name: str, budget: float) -> Callable[..., Any
             finally:
                 _watcher.disarm()  # first: no interrupt may land after the call has ended
         except ExerciseTimeout:
-            _hung[name] = message
+            _hung[key] = message
             raise ExerciseTimeout(message) from None
         finally:
             _depth.value = 0

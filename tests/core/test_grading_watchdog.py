@@ -82,6 +82,17 @@ def test_a_runaway_call_is_stopped_and_later_calls_fail_at_once(student):
     assert time.perf_counter() - start < 0.1
 
 
+def test_a_hung_function_does_not_fail_another_of_the_same_name(student, tmp_path, monkeypatch):
+    with pytest.raises(watchdog.ExerciseTimeout):
+        student.spin(1)
+    other = tmp_path / "other_pkg"
+    other.mkdir()
+    (other / "__init__.py").write_text("def spin(x):\n    return x\n")
+    module = watchdog.guard(importlib.import_module("other_pkg"), budget=0.5)
+    assert module.spin(7) == 7  # another package's spin, another function
+    sys.modules.pop("other_pkg", None)
+
+
 def test_a_loop_that_catches_every_exception_is_still_stopped(student):
     with pytest.raises(watchdog.ExerciseTimeout, match=r"stubborn\('x'\)"):
         student.stubborn("x")
