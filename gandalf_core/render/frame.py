@@ -139,8 +139,11 @@ def clip_scale(projection: np.ndarray, near_ndc: float) -> float:
     if projection[3, 3] != 0.0 or projection[2, 3] == 0.0:
         return 1.0
     # z_ndc = (P22 z + P23) / (P32 z) = near_ndc at the near plane: w there is P32 z = -P23 P32 / (P22 - near_ndc P32).
-    w_near = abs(projection[2, 3] * projection[3, 2] / (projection[2, 2] - near_ndc * projection[3, 2]))
-    if not (np.isfinite(w_near) and w_near > 0.0):
+    denominator = float(projection[2, 2] - near_ndc * projection[3, 2])
+    if denominator == 0.0:
+        return 1.0
+    w_near = abs(float(projection[2, 3] * projection[3, 2]) / denominator)
+    if not (math.isfinite(w_near) and w_near > 0.0):
         return 1.0
     return math.ldexp(1.0, -math.frexp(w_near)[1])  # 2^-e with w_near = m 2^e, m in [0.5, 1): w from 0.5 to 1
 

@@ -10,6 +10,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 from core_shaders import build_shaders
@@ -124,3 +126,18 @@ def test_tiny_and_huge_objects_keep_their_normals(backend, s):
     scaled = render(backend, scaled_scene(s))[0]
     worst = int(np.abs(reference.astype(int) - scaled.astype(int)).max())
     assert worst <= 2, f"{backend}: a sphere of radius {s} shades differently from one of radius 1 (up to {worst}/255)"
+
+
+@pytest.mark.parametrize("near", [1e-21, 1e-3, 0.1, 7.0, 1e14])
+@pytest.mark.parametrize("depth", [(-1.0, 1.0), (0.0, 1.0)])
+def test_the_uploaded_projection_puts_clip_w_near_1_on_the_near_plane_exactly(near, depth):
+    from gandalf_core.render.frame import clip_scale
+
+    projection = CameraComponent(50.0, near, 100.0 * near).projection_matrix(depth, 1.5)
+    k = clip_scale(projection, depth[0])
+    assert math.frexp(k)[0] == 0.5, f"{k} is not a power of two (scaling would round)"
+    assert 0.5 <= k * near < 1.0  # clip w is -z_eye: near on the near plane
+    if depth == (0.0, 1.0):  # reverse-Z: the near plane at NDC depth 1
+        reverse = CameraComponent(50.0, near, 100.0 * near, reverse_z=True).projection_matrix(depth, 1.5)
+        assert 0.5 <= clip_scale(reverse, 1.0) * near < 1.0
+    assert clip_scale(np.eye(4), -1.0) == 1.0  # orthographic (w = 1) and the identity stay as they are
