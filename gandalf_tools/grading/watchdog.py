@@ -137,11 +137,9 @@ def guard(package: ModuleType, budget: float = DEFAULT_BUDGET) -> ModuleType:
     returns ``package``. ``budget <= 0`` leaves it as it is."""
     if budget <= 0 or getattr(package, _GUARDED, None) == budget:
         return package
-    prefix = package.__name__
-    modules = [m for m in list(_modules_of(package)) if m.__name__ == prefix or m.__name__.startswith(prefix + ".")]
-    for module in modules:
+    for module in _modules_of(package):
         for attr, value in list(vars(module).items()):
-            if getattr(value, "__module__", None) is None or not str(value.__module__).startswith(prefix):
+            if not _inside(str(getattr(value, "__module__", None)), package.__name__):
                 continue
             if inspect.isfunction(value) and not getattr(value, _GUARDED, False):
                 setattr(module, attr, _wrap(value, value.__name__, budget))
@@ -158,6 +156,11 @@ def _guard_class(cls: type, budget: float) -> None:
         setattr(cls, attr, _wrap(value, f"{cls.__name__}.{attr}", budget))
 
 
+def _inside(module: str, package: str) -> bool:
+    """Whether ``module`` is ``package`` or one of its modules."""
+    return module == package or module.startswith(package + ".")
+
+
 def _modules_of(package: ModuleType) -> list[ModuleType]:
-    return [m for name, m in list(sys.modules.items()) if isinstance(m, ModuleType)
-            and (name == package.__name__ or name.startswith(package.__name__ + "."))]
+    """The package and its imported modules."""
+    return [m for name, m in list(sys.modules.items()) if isinstance(m, ModuleType) and _inside(name, package.__name__)]
