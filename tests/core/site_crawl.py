@@ -46,7 +46,10 @@ _FACTS = """
   const article = document.querySelector("article.md-content__inner") || document.body;
   const column = (document.querySelector(".md-content") || document.body).getBoundingClientRect();
   const first = (el) => (el.textContent || "").trim().split("\\n")[0].slice(0, 80);
-  const scrolls = (el) => ["auto", "scroll"].includes(getComputedStyle(el).overflowX);
+  const scrolls = (el) => {  // overflow does not clip an element drawn as a table: its wrapper must scroll
+    const cs = getComputedStyle(el);
+    return ["auto", "scroll"].includes(cs.overflowX) && cs.display !== "table";
+  };
   const facts = {code: [], long_lines: 0, code_blocks: 0, code_scrolling: 0, tables: [], table_count: 0,
                  tables_scrolling: 0, maths: [], formulas: [], roles: [], diagrams: [], headings: []};
 
@@ -73,16 +76,17 @@ _FACTS = """
         facts.code.push({problem: "scrolls with its scrollbar hidden", first: first(el)});
       }
     }
-    const plain = !/language-(?!text|plain|console)/.test(`${pre.className} ${el.className} ${pre.parentElement.className}`);
+    const lang = pre.closest('[class*="language-"]');
+    const plain = !lang || /language-(text|plain|console)\b/.test(lang.className);
     if (plain && FORMULA.test(text)) facts.formulas.push(`code block: ${first(el)}`);
   });
 
   article.querySelectorAll("table").forEach((table) => {
     if (table.closest(".highlighttable") || table.clientWidth === 0) return;
     facts.table_count++;
-    let scroller = null;
+    let scroller = null;  // the narrowest box around the table that scrolls (Material's wrapper, or the table)
     for (let el = table; el && el !== article; el = el.parentElement) {
-      if (scrolls(el)) { scroller = el; break; }
+      if (scrolls(el) && (!scroller || el.clientWidth < scroller.clientWidth)) scroller = el;
     }
     const box = (scroller || table).getBoundingClientRect();
     const head = (table.querySelector("tr") || table).textContent.trim().replace(/\\s+/g, " ").slice(0, 60);
@@ -108,7 +112,9 @@ _FACTS = """
     const text = node.textContent;
     const role = text.match(ROLE);
     if (role) facts.roles.push(`${role[0]} in "${text.trim().slice(0, 60)}"`);
-    if (!node.parentElement.closest("code") && FORMULA.test(text)) facts.formulas.push(`text: ${text.trim().slice(0, 70)}`);
+    if (!node.parentElement.closest("code") && FORMULA.test(text)) {
+      facts.formulas.push(`text: ${text.trim().slice(0, 70)}`);
+    }
   }
 
   article.querySelectorAll("img").forEach((img) => {
