@@ -84,9 +84,13 @@ _FACTS = """
   article.querySelectorAll("table").forEach((table) => {
     if (table.closest(".highlighttable") || table.clientWidth === 0) return;
     facts.table_count++;
-    let scroller = null;  // the narrowest box around the table that scrolls (Material's wrapper, or the table)
+    // The box that clips the table: the innermost scrolling box it overflows (Material's wrapper), else the
+    // outermost scrolling box around it (it fits), else the table itself.
+    let scroller = null;
     for (let el = table; el && el !== article; el = el.parentElement) {
-      if (scrolls(el) && (!scroller || el.clientWidth < scroller.clientWidth)) scroller = el;
+      if (!scrolls(el)) continue;
+      if (el.scrollWidth > el.clientWidth + 1) { scroller = el; break; }
+      scroller = el;
     }
     const box = (scroller || table).getBoundingClientRect();
     const head = (table.querySelector("tr") || table).textContent.trim().replace(/\\s+/g, " ").slice(0, 60);
