@@ -19,6 +19,8 @@ playwright's own. Without it the tests are skipped, saying so; CI installs it, s
 
 from __future__ import annotations
 
+import importlib
+import inspect
 import os
 import re
 import shutil
@@ -134,6 +136,20 @@ def test_every_formula_is_typeset(crawled: dict) -> None:
 def test_no_raw_sphinx_roles(crawled: dict) -> None:
     problems = [f"{rel}: {role}" for rel, page in crawled["facts"][WIDTHS[0]].items() for role in page["roles"]]
     assert not problems, _report(problems, "raw Sphinx roles shown")
+
+
+def test_api_page_documents_every_public_class(crawled: dict) -> None:
+    """Every class a package of gandalf_core exports (``__all__``) has its entry on the API page."""
+    ids = set(crawled["facts"][WIDTHS[0]]["api/"]["ids"])
+    missing = []
+    for init in sorted((ROOT / "gandalf_core").rglob("__init__.py")):
+        package = ".".join(init.parent.relative_to(ROOT).parts)
+        module = importlib.import_module(package)
+        for name in getattr(module, "__all__", ()):
+            obj = getattr(module, name)
+            if inspect.isclass(obj) and f"{obj.__module__}.{obj.__qualname__}" not in ids:
+                missing.append(f"{package}.{name} ({obj.__module__}.{obj.__qualname__})")
+    assert not missing, _report(missing, "public classes missing from the API page")
 
 
 def test_diagrams_explain_with_alt_text(crawled: dict) -> None:
