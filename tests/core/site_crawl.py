@@ -10,7 +10,7 @@ window width and returns, per width and page, what one script (``_FACTS``) measu
 * ``page_overflow``: the page itself wider than the window;
 * ``maths``: every ``arithmatex`` element and whether KaTeX typeset it; ``formulas``: formula-shaped text left
   untypeset (a plain-text code block or prose with ``=`` and a mathematical symbol such as ``α²`` or ``n·l``);
-* ``roles``: raw Sphinx roles (``:class:``, ``:func:`` ...) in the text outside code blocks;
+* ``roles``: raw Sphinx roles (``:class:``, ``:func:`` ...) in the text outside code;
 * ``diagrams``: the ``images/diagram_*`` pictures shown, with their alt text;
 * ``prev`` / ``next``: the footer's previous and next links; ``headings``: the page's h2 headings;
 * ``links``, ``images``, ``ids``: for the broken-link check.
@@ -114,9 +114,10 @@ _FACTS = """
     const node = walker.currentNode;
     if (node.parentElement.closest("pre, .katex, .arithmatex, script, style")) continue;
     const text = node.textContent;
+    if (node.parentElement.closest("code")) continue;  // code quoting a role's syntax is no raw role
     const role = text.match(ROLE);
     if (role) facts.roles.push(`${role[0]} in "${text.trim().slice(0, 60)}"`);
-    if (!node.parentElement.closest("code") && FORMULA.test(text)) {
+    if (FORMULA.test(text)) {
       facts.formulas.push(`text: ${text.trim().slice(0, 70)}`);
     }
   }

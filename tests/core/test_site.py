@@ -235,20 +235,30 @@ def test_site_test_finds_the_browser_set_up_installs() -> None:
 
 
 def test_make_diagrams_helps_refuses_to_overwrite_and_draws(tmp_path: Path) -> None:
-    """scripts/make_diagrams.py: --help only prints help; it keeps existing files unless --force; it draws all four."""
+    """scripts/make_diagrams.py: --help only prints help; it keeps existing files unless --force; it draws every
+    diagram, each an SVG of at most 100 KiB whose text stays text, the same bytes as the committed one and shown on
+    a page of docs/."""
     pytest.importorskip("matplotlib", reason="the diagrams need the dev extra (matplotlib)")
     script = [sys.executable, str(ROOT / "scripts" / "make_diagrams.py")]
     helped = subprocess.run([*script, "--help", "--out", str(tmp_path)], capture_output=True, text=True, timeout=60)
     assert helped.returncode == 0 and "usage:" in helped.stdout, helped.stderr
     assert not list(tmp_path.iterdir()), "--help must not write anything"
-    drawn = subprocess.run([*script, "--out", str(tmp_path)], capture_output=True, text=True, timeout=120)
+    drawn = subprocess.run([*script, "--out", str(tmp_path)], capture_output=True, text=True, timeout=300)
     assert drawn.returncode == 0, drawn.stderr
-    names = sorted(p.name for p in tmp_path.glob("diagram_*.png"))
-    assert names == ["diagram_ecs_frame.png", "diagram_pipeline.png", "diagram_sampling.png", "diagram_spaces.png"]
+    names = sorted(p.name for p in tmp_path.glob("diagram_*.svg"))
+    assert len(names) >= MIN_DIAGRAMS, names
+    committed = sorted(p.name for p in (ROOT / "docs" / "images").glob("diagram_*"))
+    assert names == committed, f"drawn {names}, committed {committed}: run scripts/make_diagrams.py --force"
     before = {p: p.stat().st_mtime_ns for p in tmp_path.iterdir()}
-    again = subprocess.run([*script, "--out", str(tmp_path)], capture_output=True, text=True, timeout=60)
+    again = subprocess.run([*script, "--out", str(tmp_path), "--only", names[0]], capture_output=True, text=True,
+                           timeout=60)
     assert again.returncode == 1 and "--force" in again.stderr, (again.returncode, again.stderr)
     assert before == {p: p.stat().st_mtime_ns for p in tmp_path.iterdir()}, "files changed without --force"
-    for name in names:  # every diagram the script draws is on a page of the site
-        pages = [p for p in (ROOT / "docs").rglob("*.md") if name in p.read_text()]
-        assert pages, f"{name} is on no page of docs/"
+    pages = "\n".join(p.read_text() for p in (ROOT / "docs").rglob("*.md"))
+    for name in names:
+        drawn_svg = (tmp_path / name).read_bytes()
+        assert len(drawn_svg) <= 100 * 1024, f"{name} is {len(drawn_svg) // 1024} KiB"
+        assert b"<text" in drawn_svg, f"{name}: its text was drawn as paths"
+        assert drawn_svg == (ROOT / "docs" / "images" / name).read_bytes(), (
+            f"{name} differs from the committed one: run scripts/make_diagrams.py --force --only {name}")
+        assert f"images/{name}" in pages, f"{name} is on no page of docs/"
