@@ -201,6 +201,23 @@ def test_notebooks_are_pages_with_pictures_linked_from_the_curriculum(site: Path
             f"the curriculum does not link {name}")
 
 
+def test_notebook_pages_show_the_notebooks_code() -> None:
+    """docs/notebooks/NN.md is its notebook run by scripts/export_notebooks.py: its code blocks are the notebook's
+    code cells, in order, so a changed notebook without a re-exported page fails here (no browser needed)."""
+    nbformat = pytest.importorskip("nbformat", reason="needs the dev extra (nbformat)")
+    for path in sorted((ROOT / "notebooks").glob("*.ipynb")):
+        page = ROOT / "docs" / "notebooks" / f"{path.stem}.md"
+        assert page.exists(), f"{path.name} has no page: run python scripts/export_notebooks.py --only {path.stem}"
+        shown = re.findall(r"^```python\n(.*?)\n```$", page.read_text(), flags=re.DOTALL | re.MULTILINE)
+        cells = [cell.source.rstrip() for cell in nbformat.read(path, as_version=4).cells if cell.cell_type == "code"]
+        assert shown == cells, (f"{page.relative_to(ROOT)} is not {path.name} any more: "
+                                f"run python scripts/export_notebooks.py --only {path.stem}")
+        pictures = re.findall(r"\]\(\.\./images/notebooks/([^)]+)\)", page.read_text())
+        assert pictures, f"{page.name} shows no picture"
+        for name in pictures:
+            assert (ROOT / "docs" / "images" / "notebooks" / name).exists(), f"{page.name}: {name} is missing"
+
+
 def test_site_figures(crawled: dict) -> None:
     """Prints what was measured (run with -s to see it); the assertions are in the tests above."""
     for width in WIDTHS:
