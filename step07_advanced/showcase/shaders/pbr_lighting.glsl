@@ -39,6 +39,7 @@ void light_at(int i, vec3 p, vec3 n, out vec3 l, out vec3 radiance) {
 // the lights block's ambient. diffuse_albedo = base (1 - metallic)(1 - F): what is reflected
 // specularly is not scattered. `shadow` is the part of the shadow-casting light that reaches p
 // (shadow_factor(); 1 without shadows).
+// --8<-- [start:direct]
 vec3 pbr_direct(vec3 p, vec3 n, vec3 v, vec3 base, float metallic, float roughness, float shadow) {
     float r = clamp(roughness, MIN_ROUGHNESS, 1.0);
     vec3 f0 = base_reflectance(base, metallic);
@@ -62,6 +63,7 @@ vec3 pbr_direct(vec3 p, vec3 n, vec3 v, vec3 base, float metallic, float roughne
     }
     return color;
 }
+// --8<-- [end:direct]
 
 // Image-based light from a (mip-mapped) cube map: blurrier mips stand in for
 // rougher lobes (split sum with Karis' analytic fit of the pre-integrated

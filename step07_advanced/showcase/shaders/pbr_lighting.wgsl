@@ -44,6 +44,7 @@ fn light_at(i: i32, p: vec3<f32>, n: vec3<f32>) -> LightSample {
 // the lights block's ambient. diffuse_albedo = base (1 - metallic)(1 - F): what is reflected
 // specularly is not scattered. `shadow` is the part of the shadow-casting light that reaches p
 // (shadow_factor(); 1 without shadows).
+// --8<-- [start:direct]
 fn pbr_direct(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>, metallic: f32,
               roughness: f32, shadow: f32) -> vec3<f32> {
     let r = clamp(roughness, MIN_ROUGHNESS, 1.0);
@@ -64,6 +65,7 @@ fn pbr_direct(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>, metalli
     }
     return color;
 }
+// --8<-- [end:direct]
 
 // Image-based light from a (mip-mapped) cube map: blurrier mips stand in for
 // rougher lobes (split sum with Karis' analytic fit of the pre-integrated
