@@ -288,12 +288,13 @@ def tess_levels(path: Path) -> None:
         for j in range(n):
             x0, y0 = i * cell, j * cell
             corners = np.array([[x0, y0], [x0 + cell, y0], [x0 + cell, y0 + cell], [x0, y0 + cell]])
-            inner = level(corners[0], corners[2])
+            edges = list(zip(corners, np.roll(corners, -1, axis=0)))
+            outer = [level(a, b) for a, b in edges]
+            inner = max(outer)  # the inside is cut as finely as the finest edge
             # the inner level cuts the patch into strips (drawn in one direction only)
             strips += [[(x0 + k * cell / inner, y0), (x0 + k * cell / inner, y0 + cell)] for k in range(1, inner)]
-            for a, b in zip(corners, np.roll(corners, -1, axis=0)):
+            for (a, b), segments in zip(edges, outer):
                 lines.append([tuple(a), tuple(b)])
-                segments = level(a, b)
                 dots += list(a + np.outer(np.linspace(0, 1, segments + 1)[1:-1], b - a))
             ax.text(x0 + cell / 2, y0 + cell / 2, str(inner), ha="center", va="center", fontsize=7,
                     color=ORANGE)
@@ -306,7 +307,8 @@ def tess_levels(path: Path) -> None:
     ax.set_xlim(-0.3, size + 0.3)
     ax.set_ylim(-1.1, size + 0.3)
     ax.axis("off")
-    ax.set_title(f"edge level = clamp({scale:g} · edge length / distance, {lo}, {hi}): blue dots cut the edges;\n"
+    ax.set_title(f"edge level = clamp({scale:g} · edge length / distance, {lo}, {hi}) (an illustrative scale): "
+                 "blue dots cut the edges;\n"
                  "the number is the patch's inner level. A shared edge gets one level from both patches: no cracks.",
                  fontsize=8.5)
     save(fig, path)
