@@ -3,6 +3,16 @@
 // write this model yourself.
 #include "frame.glsl"
 
+// A point light's falloff: the inverse square, windowed to reach zero at the light's range (range <= 0: none).
+float gandalf_range_falloff(float distance, float range) {
+    if (range <= 0.0) {
+        return 1.0;
+    }
+    float x = distance / range;
+    float window = clamp(1.0 - x * x * x * x, 0.0, 1.0);
+    return window * window / max(distance * distance, 1e-4);
+}
+
 vec3 gandalf_builtin_lighting(vec3 p, vec3 normal, vec3 albedo, float specular, float shininess) {
     float n_length = length(normal);
     vec3 n = n_length > 1e-12 ? normal / n_length : vec3(0.0, 1.0, 0.0);
@@ -19,12 +29,7 @@ vec3 gandalf_builtin_lighting(vec3 p, vec3 normal, vec3 albedo, float specular, 
             vec3 d = position.xyz - p;
             float distance = length(d);
             l = distance > 1e-6 ? d / distance : n;
-            float range = u_light_color[i].a;
-            if (range > 0.0) {  // windowed inverse square, zero at the range
-                float x = distance / range;
-                float window = clamp(1.0 - x * x * x * x, 0.0, 1.0);
-                radiance *= window * window / max(distance * distance, 1e-4);
-            }
+            radiance *= gandalf_range_falloff(distance, u_light_color[i].a);
         }
         float diffuse = max(dot(n, l), 0.0);
         vec3 h = l + v;

@@ -3,6 +3,13 @@
 // write this model yourself.
 #include "frame.wgsl"
 
+// A point light's falloff: the inverse square, windowed to reach zero at the light's range (range <= 0: none).
+fn gandalf_range_falloff(distance: f32, range: f32) -> f32 {
+    let x = distance / max(range, 1e-30);
+    let window = clamp(1.0 - x * x * x * x, 0.0, 1.0);
+    return select(1.0, window * window / max(distance * distance, 1e-4), range > 0.0);
+}
+
 fn gandalf_builtin_lighting(p: vec3<f32>, normal: vec3<f32>, albedo: vec3<f32>, specular: f32,
                             shininess: f32) -> vec3<f32> {
     let n_length = length(normal);
@@ -20,12 +27,7 @@ fn gandalf_builtin_lighting(p: vec3<f32>, normal: vec3<f32>, albedo: vec3<f32>, 
             let d = position.xyz - p;
             let distance = length(d);
             l = select(n, d / max(distance, 1e-6), distance > 1e-6);
-            let range = lights.color[i].a;
-            if (range > 0.0) {  // windowed inverse square, zero at the range
-                let x = distance / range;
-                let window = clamp(1.0 - x * x * x * x, 0.0, 1.0);
-                radiance *= window * window / max(distance * distance, 1e-4);
-            }
+            radiance *= gandalf_range_falloff(distance, lights.color[i].a);
         }
         let diffuse = max(dot(n, l), 0.0);
         let h_sum = l + v;
