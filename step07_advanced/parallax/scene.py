@@ -35,6 +35,7 @@ from gandalf_core.components import (
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, MeshData, ResourceError, TextureData, plane
 
+from ..checks import checked_number
 from ..showcase.textures import brick_textures
 from .reference import MAX_LAYERS
 from .shaders import SHADER
@@ -70,16 +71,6 @@ SPACING = STRIP[1] * math.sin(math.radians(ELEVATION)) + 0.16
 SUN = (-0.55, 0.55, -0.35)
 
 
-def _number(label: str, key: str, value, rule: str, ok) -> float:
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        raise ResourceError(label, key, f"expected a number, got {value!r}") from None
-    if not (math.isfinite(number) and ok(number)):
-        raise ResourceError(label, key, f"must be finite and {rule}, got {value!r}")
-    return number
-
-
 def validate_parallax(label: str, method: str, height_scale: float, layers: int) -> tuple[int, float, int]:
     """(method index, height_scale, layers) checked, or a ResourceError naming ``label`` and the parameter.
 
@@ -88,7 +79,7 @@ def validate_parallax(label: str, method: str, height_scale: float, layers: int)
     """
     if method not in METHODS:
         raise ResourceError(label, "method", f"{method!r} is not one of {', '.join(METHODS)}")
-    scale = _number(label, "height_scale", height_scale, ">= 0 (a depth in uv units)", lambda v: v >= 0.0)
+    scale = checked_number(label, "height_scale", height_scale, ">= 0 (a depth in uv units)", lambda v: v >= 0.0)
     if isinstance(layers, bool) or not isinstance(layers, int) or not 1 <= layers <= MAX_LAYERS:
         raise ResourceError(label, "layers", f"must be an int from 1 to {MAX_LAYERS} (the shader's "
                                              f"PARALLAX_MAX_LAYERS), got {layers!r}")
