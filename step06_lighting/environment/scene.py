@@ -25,9 +25,11 @@ TOUR_FRAMES = 30
 
 # --8<-- [start:sky]
 def add_sky(scene: Scene) -> None:
-    """The sky cube map (texture ``sky``), read from its six face files (+X, -X, +Y, -Y, +Z, -Z: ``models/sky/``,
-    written by ``make_sky.py``), and the skybox that draws it behind everything."""
-    scene.assets.texture("sky", CubeTextureData.from_files(SKY_FILES, name="sky"))
+    """The sky cube map (texture ``sky``), read from its six face files in +X, -X, +Y, -Y, +Z, -Z
+    order (``models/sky/``, written by ``make_sky.py``), and the skybox that draws it behind
+    everything."""
+    sky = CubeTextureData.from_files(SKY_FILES, name="sky")
+    scene.assets.texture("sky", sky)
     scene.create_entity(InfoComponent("sky"), SkyboxComponent("sky"))
 
 
