@@ -23,18 +23,13 @@ from typing import Any
 import numpy as np
 import wgpu
 
-from ...resources import (
-    ATTRIBUTE_LOCATIONS,
-    INSTANCE_LOCATIONS,
-    CubeTextureData,
-    MaterialData,
-    MeshData,
-    ResourceError,
-    ShaderSource,
-    TextureData,
-)
 from ...resources.blocks import WGSL_BINDINGS, MaterialDeclaration
+from ...resources.errors import ResourceError
 from ...resources.layout import BlockLayout, LayoutError
+from ...resources.material_data import MaterialData
+from ...resources.mesh_data import ATTRIBUTE_LOCATIONS, INSTANCE_LOCATIONS, MeshData
+from ...resources.shader_source import ShaderSource
+from ...resources.texture_data import CubeTextureData, TextureData
 from ..builtin_materials import prepare as prepare_builtin
 from ..entry_points import wgsl_entry
 from ..errors import ShaderCompileError
