@@ -177,7 +177,7 @@ def serve(site: Path) -> Iterator[str]:
 
 
 def crawl(site: Path, server: str, chromium: str, widths: tuple[int, ...]) -> dict:
-    """Open every page at every width; returns ``{"pages": [...], "load": [...], "facts": {width: {page: {...}}}}``."""
+    """Open every page and measure it at every width; returns ``{"pages", "load", "facts": {width: {page: {...}}}}``."""
     from playwright.sync_api import sync_playwright
 
     found = pages(site)
@@ -185,27 +185,29 @@ def crawl(site: Path, server: str, chromium: str, widths: tuple[int, ...]) -> di
     facts: dict[int, dict[str, dict]] = {}
     with sync_playwright() as pw:
         browser = pw.chromium.launch(executable_path=chromium, args=["--no-sandbox", "--disable-gpu"])
-        for width in widths:
-            page = browser.new_page(viewport={"width": width, "height": 800})
-            page.set_default_timeout(PAGE_TIMEOUT_MS)
-            current = {"page": ""}
-            page.on("console", lambda msg, c=current: msg.type == "error" and load.append(f"{c['page']}: {msg.text}"))
-            page.on("pageerror", lambda exc, c=current: load.append(f"{c['page']}: uncaught {exc}"))
-            # A request the browser itself aborts (the search worker's script, cut off when the crawl moves on) is no
-            # broken resource: a missing file answers 404, which the response check catches.
-            page.on("requestfailed", lambda req, c=current: req.url.startswith(server)
-                    and "ERR_ABORTED" not in str(req.failure)
-                    and load.append(f"{c['page']}: request failed: {req.url[len(server):]} ({req.failure})"))
-            page.on("response", lambda res, c=current: res.url.startswith(server) and res.status >= 400
-                    and load.append(f"{c['page']}: HTTP {res.status} for {res.url[len(server):]}"))
-            facts[width] = {}
-            for rel in found:
-                current["page"] = f"{rel or 'index'} @ {width} px"
-                response = page.goto(urljoin(server, rel), wait_until="load")
-                if response is None or response.status != 200:
-                    load.append(f"{rel}: HTTP {response.status if response else 'no response'}")
-                    continue
-                facts[width][rel] = page.evaluate(_FACTS, LONG_LINE)
-            page.close()
+        # One load per page, measured at every width by resizing the window (the layout follows; no reload).
+        page = browser.new_page(viewport={"width": widths[0], "height": 800})
+        page.set_default_timeout(PAGE_TIMEOUT_MS)
+        current = {"page": ""}
+        page.on("console", lambda msg: msg.type == "error" and load.append(f"{current['page']}: {msg.text}"))
+        page.on("pageerror", lambda exc: load.append(f"{current['page']}: uncaught {exc}"))
+        # A request the browser itself aborts (the search worker's script, cut off when the crawl moves on) is no
+        # broken resource: a missing file answers 404, which the response check catches.
+        page.on("requestfailed", lambda req: req.url.startswith(server) and "ERR_ABORTED" not in str(req.failure)
+                and load.append(f"{current['page']}: request failed: {req.url[len(server):]} ({req.failure})"))
+        page.on("response", lambda res: res.url.startswith(server) and res.status >= 400
+                and load.append(f"{current['page']}: HTTP {res.status} for {res.url[len(server):]}"))
+        for rel in found:
+            current["page"] = rel or "index"
+            page.set_viewport_size({"width": widths[0], "height": 800})
+            response = page.goto(urljoin(server, rel), wait_until="load")
+            if response is None or response.status != 200:
+                load.append(f"{rel}: HTTP {response.status if response else 'no response'}")
+                continue
+            for width in widths:
+                if width != widths[0]:
+                    page.set_viewport_size({"width": width, "height": 800})
+                facts.setdefault(width, {})[rel] = page.evaluate(_FACTS, LONG_LINE)
+        page.close()
         browser.close()
     return {"pages": found, "load": load, "facts": facts}
