@@ -74,8 +74,9 @@ class GLTFModel:
 class _File:
     """The JSON document and binary buffers of one .gltf or .glb file, with error labels naming it."""
 
-    def __init__(self, path: Path) -> None:
+    def __init__(self, path: Path, allow_outside: bool = False) -> None:
         self.path = path
+        self.allow_outside = allow_outside
         self.label = f"glTF file '{path}'"
         if path.suffix.lower() not in (".gltf", ".glb"):
             raise ResourceError(self.label, "path", f"expected a .gltf or .glb file, got {path.suffix or '(none)'!r}")
@@ -109,7 +110,11 @@ class _File:
                 return base64.b64decode(uri.split(",", 1)[1])
             except (IndexError, ValueError) as exc:
                 raise ResourceError(self.label, where, f"bad data URI: {exc}") from None
-        file = self.path.parent / uri
+        folder = self.path.parent.resolve()
+        file = (folder / uri).resolve()  # symlinks followed: a link to a file elsewhere lies elsewhere
+        if not self.allow_outside and not file.is_relative_to(folder):
+            raise ResourceError(self.label, where, f"the URI '{uri}' ({file}) lies outside the file's folder "
+                                                   f"{folder}: refused (allow_outside=True allows it)")
         if not file.is_file():
             raise ResourceError(self.label, where, f"file not found: '{uri}' (looked for {file})")
         return file.read_bytes()
@@ -220,12 +225,17 @@ def _material(file: _File, index: int, shader: str, extra_textures: Sequence[str
 
 
 def load_gltf(path: str | Path, shader: str = "pbr_model", extra_textures: Sequence[str] = (),
-              params: Mapping[str, Any] | None = None) -> GLTFModel:
+              params: Mapping[str, Any] | None = None, *, allow_outside: bool = False) -> GLTFModel:
     """Read a .gltf/.glb file: meshes (with tangents), metallic-roughness materials for ``shader`` and their
-    textures. ``extra_textures`` are appended to every material's textures, ``params`` to its params."""
-    from gandalf_core.resources.mesh_loader import _parts, _to_mesh_data
+    textures. ``extra_textures`` are appended to every material's textures, ``params`` to its params.
 
-    file = _File(Path(path))
+    Buffer and image URIs must lie in the file's folder (after following symlinks) unless ``allow_outside``."""
+    from gandalf_core.resources.mesh_loader import _parts, _to_mesh_data, _trimesh_load
+
+    file = _File(Path(path), allow_outside)
+    for i, buffer in enumerate(file.items("buffers")):  # refused here before trimesh reads them
+        if "uri" in buffer:
+            file.buffer(i, f"buffer {i}")
     required = file.doc.get("extensionsRequired", [])
     if required:
         raise ResourceError(file.label, "extensionsRequired", f"{', '.join(map(str, required))} not supported")
@@ -252,10 +262,8 @@ def load_gltf(path: str | Path, shader: str = "pbr_model", extra_textures: Seque
                 raise ResourceError(file.label, f"mesh '{mesh.get('name', mesh_index)}' primitive {k}",
                                     f"material '{by_index[material_index]}' has {textured[0]} but the mesh has no "
                                     "UVs (TEXCOORD_0)")
-    import trimesh
-
     try:
-        loaded = trimesh.load(str(file.path), process=False, split_objects=True, group_material=False)
+        loaded = _trimesh_load(file.path, allow_outside)
     except Exception as exc:  # trimesh raises many types for bad files
         raise ResourceError(file.label, "contents", f"trimesh cannot read it: {exc}") from None
     meshes: dict[str, MeshData] = {}

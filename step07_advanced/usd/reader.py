@@ -226,7 +226,8 @@ class _Reader:
         for kind, folder, read_one, register in (
             ("mesh", MESHES, asset_prims.read_mesh, scene.assets.mesh),
             ("material", MATERIALS, asset_prims.read_material, scene.assets.material),
-            ("texture", TEXTURES, lambda ctx, p: asset_prims.read_texture(ctx, p, self.path.parent),
+            ("texture", TEXTURES,
+             lambda ctx, p: asset_prims.read_texture(ctx, p, self.path.parent, self.allow_outside),
              scene.assets.texture),
         ):
             parent = self.stage.GetPrimAtPath(folder)
