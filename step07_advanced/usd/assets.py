@@ -14,7 +14,7 @@ from pxr import Gf, Sdf, Usd, UsdGeom, UsdShade, Vt
 
 from gandalf_core.resources import CubeTextureData, MaterialData, MeshData, ResourceError, TextureData, srgb_to_linear
 
-from .attributes import FileContext, authored, numeric_array, read, read_floats, write
+from .attributes import FileContext, authored, mesh_attribute, numeric_array, read, read_floats, write
 from .mapping import CUBE_FACE_SUFFIXES, PREVIEW_ST_READER, PREVIEW_SURFACE, PREVIEW_TEXTURE
 
 T = Sdf.ValueTypeNames
@@ -102,7 +102,7 @@ def read_mesh(ctx: FileContext, prim: Usd.Prim) -> tuple[str, MeshData]:
     try:
         return name, MeshData(**fields, name=read(ctx, prim, "gandalf:meshName", "string", name))
     except ResourceError as exc:
-        raise ctx.fail(prim, exc.field, exc.detail) from None
+        raise ctx.fail(prim, mesh_attribute(exc.field), exc.detail) from None
 
 
 # --- materials ----------------------------------------------------------------------------------------
@@ -317,5 +317,7 @@ def read_texture(ctx: FileContext, prim: Usd.Prim, folder: Path,
         return name, TextureData.from_file(paths[0], wrap=read(ctx, prim, "gandalf:wrap", "string", "repeat"),
                                            **settings)
     except ResourceError as exc:
-        raise ctx.fail(prim, "gandalf:" + exc.field, exc.detail) from None
+        # The image's own problems (its path, pixels, mode) are the problems of the file named in gandalf:files.
+        attribute = "gandalf:files" if exc.field in ("path", "pixels", "mode") else "gandalf:" + exc.field
+        raise ctx.fail(prim, attribute, exc.detail) from None
 

@@ -34,7 +34,7 @@ from gandalf_core.resources import MaterialData, ResourceError, TextureData, lin
 
 from . import assets as asset_prims
 from . import foreign
-from .attributes import FileContext, authored, read, read_float, read_floats
+from .attributes import FileContext, authored, mesh_attribute, read, read_float, read_floats
 from .errors import USDSceneError, USDSceneWarning
 from .foreign import PreviewSurface, default_preview_material, inside
 from .mapping import ASSETS, ENTITY_MESH_MARK, FORMAT_VERSION, LIGHT_KINDS, MATERIALS, MESHES, SYSTEMS, TEXTURES
@@ -257,7 +257,7 @@ class _Reader:
         if transform is not None:
             out.append(transform)
         if prim.GetTypeName() == "Camera":
-            out.append(self.guard(prim, "gandalf:fov", lambda: self.camera(prim)))
+            out.append(self.camera(prim))
         light = self.light(prim)
         if light is not None:
             out.append(light)
@@ -308,7 +308,7 @@ class _Reader:
                 if data is None:
                     self.notes.append((path, f"prim type '{prim.GetTypeName()}' is not drawn (no engine mapping)"))
         except ResourceError as exc:
-            raise self.ctx.fail(prim, exc.field, exc.detail) from None
+            raise self.ctx.fail(prim, mesh_attribute(exc.field), exc.detail) from None
         if data is None:
             return []
         scene.assets.mesh(path, data)
@@ -485,6 +485,13 @@ class _Reader:
         aperture = usd.GetVerticalApertureAttr().Get()
         # Files from other tools lack the exact gandalf: values; fall back to the standard camera attributes
         # (read only then: a gandalf file's own values must not depend on them).
+        # Each field's source in this file, so an error names the attribute the file holds.
+        source = {"fov": "gandalf:fov" if authored(prim, "gandalf:fov") else "focalLength",
+                  "near": "gandalf:near" if authored(prim, "gandalf:near") else "clippingRange",
+                  "far": "gandalf:far" if authored(prim, "gandalf:far") else "clippingRange",
+                  "height": "gandalf:height" if authored(prim, "gandalf:height") else "verticalAperture",
+                  "aspect": "gandalf:aspect", "projection": "projection", "primary": "gandalf:primary",
+                  "reverse_z": "gandalf:reverseZ"}
         if authored(prim, "gandalf:fov"):
             fov = read_float(ctx, prim, "gandalf:fov")
         else:
@@ -493,10 +500,10 @@ class _Reader:
                 raise ctx.fail(prim, "focalLength", f"needs a positive focal length and aperture, got {focal}, "
                                                     f"{aperture}")
             fov = math.degrees(2.0 * math.atan(aperture / 2.0 / focal))
-        return CameraComponent(
-            fov,
-            read_float(ctx, prim, "gandalf:near", float(clip[0])),
-            read_float(ctx, prim, "gandalf:far", float(clip[1]), allow_inf=True),
+        values = dict(
+            fov=fov,
+            near=read_float(ctx, prim, "gandalf:near", float(clip[0])),
+            far=read_float(ctx, prim, "gandalf:far", float(clip[1]), allow_inf=True),
             projection=str(projection),
             height=read_float(ctx, prim, "gandalf:height", aperture / 10.0),
             aspect=read_float(ctx, prim, "gandalf:aspect", None),
@@ -504,6 +511,15 @@ class _Reader:
             primary=read(ctx, prim, "gandalf:primary", "bool", self._first_camera()),
             reverse_z=read(ctx, prim, "gandalf:reverseZ", "bool", False),
         )
+        try:
+            return CameraComponent(**values)
+        except (ValueError, TypeError) as exc:
+            # The first field the message names (a far below near names both: CameraComponent.far first).
+            message = str(exc)
+            named = sorted((message.find(f"CameraComponent.{f}"), f) for f in source
+                           if f"CameraComponent.{f}" in message)
+            attribute = source[named[0][1]] if named else "projection"
+            raise ctx.fail(prim, attribute, message) from None
 
     def _first_camera(self) -> bool:
         first = not self._cameras_seen
