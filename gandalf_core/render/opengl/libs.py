@@ -115,17 +115,20 @@ class TextureLib(_InContext, ResourceLib[Any]):
         self.stats["textures_created"] += 1
         return tex
 
-    # glTexSubImage2D(target, level, x, y, width, height, format, type, pixels), loaded from the context itself
-    # (moderngl has no per-level cube-map write; glcontext's loader works for EGL, GLX, WGL and CGL alike).
+    # glTexSubImage2D(target, level, x, y, width, height, format, type, pixels), loaded through the context's own
+    # loader (moderngl 5.13's TextureCube.write has no level): glcontext's ``load`` for a standalone context (EGL,
+    # GLX, WGL, CGL), moderngl's DefaultLoader ``load_opengl_function`` for a window's context (glfw).
     _GL_TEXTURE_CUBE_MAP_POSITIVE_X, _GL_RGBA, _GL_UNSIGNED_BYTE = 0x8515, 0x1908, 0x1401
 
     def _write_cube_levels(self, tex: Any, chain: list[np.ndarray]) -> None:
         import ctypes
 
-        try:
-            address = self.ctx.mglo._context.load("glTexSubImage2D")
-        except AttributeError as exc:  # a moderngl without glcontext's loader
-            raise RuntimeError(f"this moderngl cannot load glTexSubImage2D to write cube-map levels: {exc}") from None
+        loader = getattr(self.ctx.mglo, "_context", None)
+        load = getattr(loader, "load", None) or getattr(loader, "load_opengl_function", None)
+        address = load("glTexSubImage2D") if load is not None else 0
+        if not address:
+            raise RuntimeError(f"cannot load glTexSubImage2D through this context's loader "
+                               f"({type(loader).__name__}) to write cube-map levels")
         sub_image = ctypes.CFUNCTYPE(None, *[ctypes.c_uint] + [ctypes.c_int] * 5 + [ctypes.c_uint] * 2
                                      + [ctypes.c_void_p])(address)
         tex.use(0)  # binds it to GL_TEXTURE_CUBE_MAP on unit 0; materials bind their own units before drawing
