@@ -33,7 +33,7 @@ from gandalf_core.ecs import Component, Scene
 from gandalf_core.resources import MaterialData, ResourceError, TextureData, linear_to_srgb
 
 from . import assets as asset_prims
-from . import foreign
+from . import foreign, units
 from .attributes import FileContext, authored, mesh_attribute, read, read_float, read_floats
 from .errors import USDSceneError, USDSceneWarning
 from .foreign import PreviewSurface, default_preview_material, inside
@@ -154,6 +154,9 @@ class _Reader:
         self._cameras_seen = 0
         self._layer_assets: dict[str, object] = {}  # referenced gandalf files' assets, by layer
         self.system_prims: dict[int, Usd.Prim] = {}
+        #: (rotation quaternion, metres per unit) taking the stage's up axis and unit to the engine's Y-up metres,
+        #: applied to every root entity; None for a Y-up stage in metres (gandalf's own files).
+        self.stage_to_engine = units.stage_frame(stage)
 
     def scene_named(self, name: str | None) -> Scene:
         ctx, stage = self.ctx, self.stage
@@ -252,6 +255,8 @@ class _Reader:
         transform, resets = self.transform(prim)
         parent = prim.GetParent()
         parent_entity = None if resets else self.entity_of.get(str(parent.GetPath()))
+        if parent_entity is None and transform is not None and self.stage_to_engine is not None:
+            transform = units.to_engine_frame(transform, *self.stage_to_engine)  # a root: into Y-up metres
         if parent_entity is not None or read(ctx, prim, "gandalf:link", "bool", False):
             out.append(LinkComponent(parent_entity))
         if transform is not None:
@@ -445,12 +450,13 @@ class _Reader:
             return None, False
         if list(order) != _XFORM_OPS:
             return self.any_transform(prim), UsdGeom.Xformable(prim).GetResetXformStack()
-        t = read_floats(ctx, prim, "xformOp:translate", ("double3",), 3)
-        q = read(ctx, prim, "xformOp:orient", "quatd")
+        # Doubles as gandalf writes them, or the floats (and halves) many exporters write: widened exactly.
+        t = read_floats(ctx, prim, "xformOp:translate", ("double3", "float3", "half3"), 3)
+        q = read(ctx, prim, "xformOp:orient", ("quatd", "quatf", "quath"))
         quat = np.array([q.GetReal(), *q.GetImaginary()], dtype=np.float64)  # USD real-first = gandalf (w, x, y, z)
         if not np.isfinite(quat).all() or float(quat @ quat) < 1e-24:
             raise ctx.fail(prim, "xformOp:orient", f"must be a finite, non-zero quaternion, got {quat.tolist()}")
-        s = read_floats(ctx, prim, "xformOp:scale", ("double3",), 3)
+        s = read_floats(ctx, prim, "xformOp:scale", ("double3", "float3", "half3"), 3)
         component = TransformComponent(t, scale=s)
         component.quaternion = quat  # exactly as saved (the constructor would renormalise)
         return component, False
@@ -537,13 +543,17 @@ class _Reader:
                 color = read_floats(ctx, prim, "gandalf:lightColor", ("double3",), 3)
             else:  # another tool's light: the standard (linear) colour
                 color = linear_to_srgb(read_floats(ctx, prim, "inputs:color", ("color3f",), 3, np.ones(3)))
+            light_range = read_float(ctx, prim, "gandalf:range", 0.0)
             if authored(prim, "gandalf:intensity"):
                 intensity = read_float(ctx, prim, "gandalf:intensity")
-            else:
-                intensity = read_float(ctx, prim, "inputs:intensity", 1.0) * 2.0 ** read_float(
-                    ctx, prim, "inputs:exposure", 0.0)  # UsdLux: intensity x 2^exposure
+            else:  # another tool's light: its power, and a range where it has faded below what 8 bits show
+                intensity, light_range = units.lux_intensity(
+                    prim, read_float(ctx, prim, "inputs:intensity", 1.0), read_float(ctx, prim, "inputs:exposure", 0.0),
+                    self.stage_to_engine[1] if self.stage_to_engine else 1.0, self.notes)
+                if authored(prim, "gandalf:range"):
+                    light_range = read_float(ctx, prim, "gandalf:range")
             return LightComponent(
-                kind, color, intensity, read_float(ctx, prim, "gandalf:range", 0.0),
+                kind, color, intensity, light_range,
                 cast_shadows=read(ctx, prim, "gandalf:castShadows", "bool", False),
                 shadow_extent=read_float(ctx, prim, "gandalf:shadowExtent", 10.0),
                 shadow_depth=read_float(ctx, prim, "gandalf:shadowDepth", 50.0),
