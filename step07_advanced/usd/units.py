@@ -2,9 +2,9 @@
 
 **Frame.** The engine is Y-up in metres. A Z-up stage is turned by -90° about X ((x, y, z) -> (x, z, -y)) and a
 stage of ``metersPerUnit`` m is scaled by m (a stage that does not author it is taken as metres, not as USD's
-fallback of centimetres: most hand-made files that omit it mean the engine's unit): :func:`stage_frame` gives that rotation and scale, and
-:func:`to_engine_frame` applies it to a root entity's transform (a rotation and a uniform scale keep a
-translate-rotate-scale a translate-rotate-scale: ``C·T·R·S = T(m·Rc·t)·(Rc·R)·S(m·s)``).
+fallback of centimetres: most hand-made files that omit it mean the engine's unit). :func:`stage_frame` gives
+that rotation and scale, and :func:`to_engine_frame` applies it to a root entity's transform (a rotation and a
+uniform scale keep a translate-rotate-scale one: ``C·T·R·S = T(m·Rc·t)·(Rc·R)·S(m·s)``).
 
 **Lights.** UsdLux's ``intensity`` is scaled by ``2^exposure``. A ``SphereLight`` emits that radiance from its
 surface (radius r in world metres, xform scale and ``metersPerUnit`` included): power ``Φ = π·I·4πr²``, or

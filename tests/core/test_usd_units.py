@@ -31,7 +31,7 @@ def new_stage(path: Path, up=UsdGeom.Tokens.y, metres: float = 1.0) -> Usd.Stage
     return stage
 
 
-def exporter_ops(stage: Usd.Stage, orient=Gf.Quatf(0.5, Gf.Vec3f(0.5, -0.5, 0.5))) -> None:
+def exporter_ops(stage: Usd.Stage, orient: Gf.Quatf | None = None) -> None:
     """What many exporters write: translate/orient/scale in floats, two deep, under a double-precision parent.
 
     The child's ``quatf`` is exactly unit (0.5s): pxr builds its matrix from the quaternion as stored, without
@@ -42,7 +42,7 @@ def exporter_ops(stage: Usd.Stage, orient=Gf.Quatf(0.5, Gf.Vec3f(0.5, -0.5, 0.5)
     parent.AddScaleOp().Set(Gf.Vec3d(2.0, 2.0, 2.0))
     child = UsdGeom.Xform.Define(stage, "/World/parent/child")
     child.AddTranslateOp(UsdGeom.XformOp.PrecisionFloat).Set(Gf.Vec3f(0.1, 0.7, -3.3))
-    child.AddOrientOp(UsdGeom.XformOp.PrecisionFloat).Set(orient)
+    child.AddOrientOp(UsdGeom.XformOp.PrecisionFloat).Set(orient or Gf.Quatf(0.5, Gf.Vec3f(0.5, -0.5, 0.5)))
     child.AddScaleOp(UsdGeom.XformOp.PrecisionFloat).Set(Gf.Vec3f(0.5, 1.25, 3.0))
     leaf = UsdGeom.Xform.Define(stage, "/World/parent/child/leaf")
     leaf.AddTranslateOp(UsdGeom.XformOp.PrecisionHalf).Set(Gf.Vec3h(0.5, 0.25, 2.0))
