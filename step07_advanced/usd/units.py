@@ -12,7 +12,8 @@ surface (radius r in world metres, xform scale and ``metersPerUnit`` included): 
 The engine's point light gives irradiance ``intensity / d²``, so its intensity is ``Φ / 4π``: ``π·I·r²``, or
 ``I / 4`` normalised. It falls off with the inverse square out to a range where it has faded below 1/512 of
 white (``sqrt(512 · intensity · max colour)``; the window there costs < 3 % at a fifth of the range).
-``DistantLight`` and ``DomeLight`` intensities are taken as the irradiance they give (``I·2^exposure``).
+``DistantLight`` and ``DomeLight`` intensities are taken as the irradiance they give (``I·2^exposure``), as Hydra's
+Storm and Blender's exporter treat a sun (not scaled by the disc's solid angle as a path tracer would).
 """
 
 from __future__ import annotations
