@@ -89,6 +89,19 @@ def _nan_points(stage: Usd.Stage) -> None:
     mesh.CreateFaceVertexIndicesAttr([0, 1, 2])
 
 
+def float_ops(folder: Path) -> Path:
+    """good.usda with every orient a quatf and every translate and scale a float3 (what many exporters write)."""
+    path = edited("gandalf:sceneName", "gandalf:sceneName", "float_ops.usda")(folder)
+    text = path.read_text()
+    for old, new in (("quatd xformOp:orient", "quatf xformOp:orient"),
+                     ("double3 xformOp:scale", "float3 xformOp:scale"),
+                     ("double3 xformOp:translate", "float3 xformOp:translate")):
+        assert old in text
+        text = text.replace(old, new)
+    path.write_text(text)
+    return path
+
+
 def corrupt_texture_file(folder: Path) -> Path:
     path = edited("gandalf:sceneName", "gandalf:sceneName", "bad_png.usda")(folder)
     (folder / "bad_png_usda_textures" / "checker.png").write_bytes(b"not a png")
@@ -199,6 +212,9 @@ CASES = [
           USDSceneError, "index.usda", "attribute 'faceVertexIndices'", "999"),
     error("texture-file-not-an-image", loads(corrupt_texture_file), USDSceneError, "prim </Assets/Textures/checker>",
           "attribute 'gandalf:files'"),
+    result("float-xform-ops-accepted", loads(float_ops),
+           lambda s: [float(s.get_component(e, TransformComponent).translation[1]) for e in s.entities
+                      if s.get_component(e, InfoComponent).name == "bulb"] == [3.0]),
     error("missing-texture-file", loads(missing_texture_file), USDSceneError, "prim </Assets/Textures/checker>",
           "checker.png"),
     error("duplicate-asset-names", loads(edited('gandalf:name = "blue"', 'gandalf:name = "red"', "dup.usda")),
