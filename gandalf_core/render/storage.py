@@ -121,9 +121,13 @@ _GLSL_MEMBER = re.compile(r"(?:\b(?:readonly|writeonly|coherent|volatile|restric
                           r"([A-Za-z_]\w*)\s+[A-Za-z_]\w*\s*(\[\s*(\d*)\s*\])?\s*;")
 
 
-def _glsl_members(body: str) -> list[tuple[str, int | None, bool]]:
-    return [(m.group(1), int(m.group(3)) if m.group(3) else None, m.group(2) is not None and not m.group(3))
-            for m in _GLSL_MEMBER.finditer(body)]
+def _glsl_members(body: str) -> list[tuple[str, int | None, bool]] | None:
+    """The members of a block or struct body; None when one is beyond this reader (a layout qualifier, an array
+    of arrays): then nothing is checked rather than something wrong."""
+    statements = [part.strip() for part in body.split(";") if part.strip()]
+    found = [(m.group(1), int(m.group(3)) if m.group(3) else None, m.group(2) is not None and not m.group(3))
+             for m in _GLSL_MEMBER.finditer(body)]
+    return found if len(found) == len(statements) and "layout" not in body else None
 
 
 def glsl_storage_layouts(texts: list[str]) -> dict[str, StorageLayout]:
@@ -131,12 +135,15 @@ def glsl_storage_layouts(texts: list[str]) -> dict[str, StorageLayout]:
     structs, blocks = {}, []
     for text in map(_strip, texts):
         for m in re.finditer(r"\bstruct\s+([A-Za-z_]\w*)\s*\{([^}]*)\}", text):
-            structs[m.group(1)] = [(t, n) for t, n, _ in _glsl_members(m.group(2))]
+            members = _glsl_members(m.group(2))
+            if members is not None:  # else unknown: blocks that use it are not checked
+                structs[m.group(1)] = [(t, n) for t, n, _ in members]
         blocks += re.findall(r"\bbuffer\s+([A-Za-z_]\w*)\s*\{([^}]*)\}", text)
     types = _Types(structs)
     out = {}
     for name, body in blocks:
-        layout = types.block(name, _glsl_members(body))
+        members = _glsl_members(body)
+        layout = types.block(name, members) if members is not None else None
         if layout is not None:
             out.setdefault(name, layout)
     return out
@@ -170,8 +177,9 @@ def wgsl_storage_layouts(text: str, group: int) -> dict[int, StorageLayout]:
     """Each ``@group(group) @binding(N) var<storage, ...> name: T;`` of WGSL ``text`` by binding, where it can be
     laid out (WGSL's storage rules)."""
     text = _strip(text)
+    # A struct with attributes (@align, @size) is beyond this reader: left unknown, so not checked.
     fields = {m.group(1): _wgsl_fields(m.group(2)) for m in re.finditer(r"\bstruct\s+([A-Za-z_]\w*)\s*\{([^}]*)\}",
-                                                                         text)}
+                                                                         text) if "@" not in m.group(2)}
     types = _Types({name: [(t, n) for t, n, _ in members] for name, members in fields.items()})
     out = {}
     for m in re.finditer(rf"@group\(\s*{group}\s*\)\s*@binding\(\s*(\d+)\s*\)\s*var<\s*storage[^>]*>\s*"
