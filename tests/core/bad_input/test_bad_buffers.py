@@ -106,3 +106,25 @@ CASES = [
 @pytest.mark.parametrize(("case", "backend"), params_per_backend(CASES))
 def test_buffers(case, backend, apps):
     run(case, apps[backend])
+
+
+@pytest.mark.parametrize(("glsl", "wgsl", "fixed", "stride"), [
+    ("buffer B { vec4 v[]; };", "var<storage, read> v: array<vec4<f32>>;", 0, 16),
+    ("buffer B { vec3 v[]; };", "var<storage, read> v: array<vec3<f32>>;", 0, 16),  # vec3: aligned as a vec4
+    ("buffer B { float v[]; };", "var<storage, read> v: array<f32>;", 0, 4),  # no std140 padding in storage
+    ("buffer B { uint n; vec2 v[]; };", "struct B { n: u32, v: array<vec2<f32>>, };\n"
+     "@group(1) @binding(1) var<storage, read> b: B;", 8, 8),
+    ("struct P { vec3 p; float w; vec3 q; }; buffer B { P v[]; };",  # w packs after p: 12 + 4, q at 16
+     "struct P { p: vec3<f32>, w: f32, q: vec3<f32>, };\n@group(1) @binding(1) var<storage, read> v: array<P>;", 0, 32),
+    ("buffer B { mat3 m; vec4 v[2]; };", "struct B { m: mat3x3<f32>, v: array<vec4<f32>, 2>, };\n"
+     "@group(1) @binding(1) var<storage, read> b: B;", 80, 0),
+])
+def test_the_bytes_a_declaration_needs(glsl, wgsl, fixed, stride):
+    """std430 and WGSL's storage rules, the same for the course's types: the fixed part and the element stride."""
+    from gandalf_core.render.storage import glsl_storage_layouts, wgsl_storage_layouts
+
+    (gl,) = glsl_storage_layouts([glsl]).values()
+    source = wgsl if "@binding" in wgsl else f"@group(1) @binding(1) {wgsl}"
+    (wg,) = wgsl_storage_layouts(source, 1).values()
+    assert (gl.fixed, gl.stride) == (fixed, stride), glsl
+    assert (wg.fixed, wg.stride) == (fixed, stride), wgsl
