@@ -224,7 +224,12 @@ def gather(scene: Scene) -> TraceScene:
         raise ResourceError(scene.describe(cam_entity), "CameraComponent.projection",
                             f"the path tracer shoots perspective rays; got {camera.projection!r}")
     m = _world_of(scene, cam_entity)
-    axes = m[:3, :3] / np.linalg.norm(m[:3, :3], axis=0)
+    lengths = np.linalg.norm(m[:3, :3], axis=0)
+    if not np.all(np.isfinite(lengths) & (lengths > 0.0)):  # its axes, and so its rays, would be NaN
+        raise ResourceError(scene.describe(cam_entity), "TransformComponent.scale",
+                            f"the path tracer's camera needs a non-zero world scale on every axis (its axes give the "
+                            f"rays' directions); got axis lengths {lengths.tolist()}")
+    axes = m[:3, :3] / lengths
     materials: list[TraceMaterial] = []
     index: dict[int, int] = {}
 
