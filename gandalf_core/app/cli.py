@@ -35,7 +35,10 @@ from .extensions import extension
 
 def has_solutions(step_package: str) -> bool:
     """Whether ``step_package`` holds its reference ``solutions`` (a student's release does not)."""
-    return importlib.util.find_spec(f"{step_package}.solutions") is not None
+    try:
+        return importlib.util.find_spec(f"{step_package}.solutions") is not None
+    except ModuleNotFoundError:  # not a step package
+        return False
 
 
 def load_impl(step_package: str, student: bool = False) -> ModuleType:
