@@ -69,7 +69,7 @@ def unfinished_exercise(error: BaseException) -> str | None:
     shown = "/".join(parts[step:]) if step is not None else str(path)
     name = str(error).removeprefix("exercise:").strip() or function
     tests = f"tests/{parts[step]}" if step is not None else "tests"
-    return (f"the exercise {name} is not written yet: fill it in in {shown} (its docstring says what it must do), "
+    return (f"the exercise {name} is still a stub: write it in {shown} (its docstring says what it must do), "
             f"then run this again; 'python -m gandalf_tools.grading {tests}' grades it.")
 
 
