@@ -445,6 +445,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--solved", type=Path, metavar="DIR",
                         help="also write DIR: the release with the reference solutions copied over its exercises "
                         "(its graded tests must all pass; for checking the grader, never for students)")
+    parser.add_argument("--left-out-tests", type=Path, metavar="FILE",
+                        help="write the step test modules the release leaves out (hidden, or needing the reference) "
+                        "to FILE, one a line: the instructor's copy must still check them on the stubs")
     parser.add_argument("--borrow-venv", action="store_true",
                         help="give OUT (and DIR) a .venv that uses this Python's installed packages without its "
                         "editable install of the course (to check the release here without installing anything)")
@@ -462,6 +465,10 @@ def main(argv: list[str] | None = None) -> int:
         shutil.copytree(release.folder, args.solved)
         print(f"solved copy: {args.solved} (reference solutions over the exercises of "
               f"{', '.join(copy_solutions_over(args.solved, args.root))})")
+    if args.left_out_tests:
+        modules = [p for p in release.left_out if p.startswith("tests/step") and Path(p).name.startswith("test_")
+                   and p.endswith(".py")]
+        args.left_out_tests.write_text("".join(f"{p}\n" for p in modules))
     if args.borrow_venv:
         for folder in [release.folder] + ([args.solved] if args.solved else []):
             print(f"borrowed environment: {borrow_environment(folder)}")
