@@ -1,7 +1,7 @@
 """The student release: ``python -m gandalf_tools.release OUT [--zip]`` makes what students get.
 
 A template repository folder ``OUT`` (and with ``--zip``, ``OUT.zip`` beside it) built from the course's tracked files
-(``git ls-files``; outside a git checkout, the installed wheel's file list, which holds only the packages): the
+(``git ls-files``; outside a git checkout, the files of that copy, or of the installed wheel's packages only): the
 engine, the steps with their exercise stubs, the public tests, the docs, the notebooks, README, ``run.sh`` and the
 scripts. Left out, each for a stated reason:
 
@@ -43,7 +43,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-DISTRIBUTION = "gandalf-graphics-course"
+#: What a copy of the course that is not a git checkout holds besides the course (environments, build output).
+_NOT_COURSE = {".git", ".venv", "build", "dist", "site", "out", ".pytest_cache", ".ruff_cache", ".hypothesis",
+               "__pycache__"}
 
 #: Tracked paths (a folder ends with ``/``; a name ending in ``*`` is a prefix) that only the instructor gets.
 INSTRUCTOR_ONLY = {
@@ -72,19 +74,24 @@ _MD_IMPORT = re.compile(r"^\s*(?:from\s+\S*\bsolutions\b\S*\s+import|from\s+\S+\
 
 
 def tracked_files(root: Path = ROOT) -> tuple[Path, list[str]]:
-    """(base folder, the course's files relative to it): ``git ls-files`` in a checkout, else the installed
-    wheel's own files (its packages only: no tests, docs or scripts)."""
+    """(base folder, the course's files relative to it): ``git ls-files`` in a checkout; elsewhere every file of a
+    copy of the course (a folder with ``pyproject.toml``), or of the course's packages where they are installed from
+    the wheel (no tests, docs or scripts there)."""
+    root = Path(root).resolve()
     if (root / ".git").exists() and shutil.which("git"):
         out = subprocess.run(["git", "ls-files", "-z"], cwd=root, capture_output=True, check=True).stdout
         return root, sorted(p for p in out.decode().split("\0") if p and (root / p).is_file())
-    from importlib import metadata
-
-    dist = metadata.distribution(DISTRIBUTION)
-    base = Path(dist.locate_file("")).resolve()
-    files = [str(f) for f in dist.files or () if not str(f).startswith("..")]
-    keep = [f for f in files if ".dist-info" not in f.split("/")[0] and "__pycache__" not in f
-            and f.split("/")[0].startswith(("gandalf_core", "gandalf_tools", "step0"))]
-    return base, sorted(keep)
+    if (root / "pyproject.toml").is_file():
+        tops = [p for p in root.iterdir() if p.name not in _NOT_COURSE and not p.name.endswith(".egg-info")]
+    else:
+        packages = ("gandalf_core", "gandalf_tools", "step0")
+        tops = [p for p in root.iterdir() if p.is_dir() and p.name.startswith(packages)]
+    files = []
+    for top in tops:
+        for path in [top] if top.is_file() else top.rglob("*"):
+            if path.is_file() and "__pycache__" not in path.parts and path.suffix != ".pyc":
+                files.append(path.relative_to(root).as_posix())
+    return root, sorted(files)
 
 
 def is_hidden(path: str) -> bool:
@@ -376,7 +383,7 @@ def build(out: Path, root: Path = ROOT, *, make_zip: bool = False, force: bool =
 
 def make_archive(folder: Path) -> Path:
     """``folder.zip`` beside ``folder``, its files under the folder's name (scripts stay executable)."""
-    archive = folder.with_suffix(".zip")
+    archive = folder.parent / f"{folder.name}.zip"
     with zipfile.ZipFile(archive, "w", zipfile.ZIP_DEFLATED) as zf:
         for path in sorted(p for p in folder.rglob("*") if p.is_file()):
             zf.write(path, f"{folder.name}/{path.relative_to(folder).as_posix()}")
