@@ -224,9 +224,9 @@ def reference_of(base: Path, files: Iterable[str]) -> Reference:
 def leaks(base: Path, path: str, ref: Reference) -> list[str]:
     """Why the file ``path`` of a tree must not be in a release (empty: it may)."""
     why = []
-    data = (base / path).read_bytes()
-    if hashlib.sha256(data).hexdigest() in ref.hashes:
-        why.append(f"equal to {ref.hashes[hashlib.sha256(data).hexdigest()]}")
+    digest = hashlib.sha256((base / path).read_bytes()).hexdigest()
+    if digest in ref.hashes:
+        why.append(f"equal to {ref.hashes[digest]}")
     text = _read(base, path)
     if text is not None:
         why += solution_refs(path, text)
@@ -331,6 +331,38 @@ solution passes both: the tests check what the docstrings state, never the text 
 """
 
 
+def _imported_names(text: str) -> set[str]:
+    """The first name of every module a Python source imports (absolute imports only)."""
+    names = set()
+    for node in ast.walk(ast.parse(text)):
+        if isinstance(node, ast.Import):
+            names |= {a.name.split(".")[0] for a in node.names}
+        elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+            names.add(node.module.split(".")[0])
+    return names
+
+
+def _without_dependents(base: Path, ship: list[str], left_out: dict[str, str],
+                        instructor_tests: dict[str, list[str]]) -> list[str]:
+    """``ship`` less the test modules that import a test module left out (tests import their folder's helpers by
+    name), until none does; each one left out is recorded with the module it needs."""
+    packages = {Path(p.split("/")[0]).stem for p in ship}  # the course's own packages keep their names
+    while True:
+        gone = {Path(p).stem for p in left_out if p.startswith("tests/") and p.endswith(".py")} - packages
+        needing = {}
+        for path in ship:
+            if path.startswith("tests/") and path.endswith(".py"):
+                missing = sorted(_imported_names((base / path).read_text()) & gone)
+                if missing:
+                    needing[path] = f"imports {missing[0]}, which stays with the instructor"
+        if not needing:
+            return ship
+        for path, why in needing.items():
+            left_out[path] = "a test module that needs or shows the reference solutions"
+            instructor_tests[path] = [why]
+        ship = [p for p in ship if p not in needing]
+
+
 def _copy(base: Path, path: str, out: Path) -> int:
     target = out / path
     target.parent.mkdir(parents=True, exist_ok=True)
@@ -364,6 +396,7 @@ def build(out: Path, root: Path = ROOT, *, make_zip: bool = False, force: bool =
         if found:
             raise ValueError(f"{path} must ship but reaches the reference solutions: {'; '.join(found)}")
         ship.append(path)
+    ship = _without_dependents(base, ship, left_out, instructor_tests)
     out.mkdir(parents=True)
     size = sum(_copy(base, path, out) for path in ship)
     if "README.md" in ship or not (base / ".git").exists():
