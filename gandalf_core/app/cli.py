@@ -51,6 +51,19 @@ def load_impl(step_package: str, student: bool = False) -> ModuleType:
     return importlib.import_module(f"{step_package}.exercises")
 
 
+def stop_on_stub(prog: str, run: Callable[[], int]) -> int:
+    """``run()``; where it stops on an untouched exercise stub, print one sentence naming the exercise and its file
+    (no traceback) and return 1: a command line's way to say which exercise to write first."""
+    try:
+        return run()
+    except NotImplementedError as error:
+        sentence = unfinished_exercise(error)
+        if sentence is None:
+            raise
+        print(f"{prog}: {sentence}", file=sys.stderr)
+        return 1
+
+
 def unfinished_exercise(error: BaseException) -> str | None:
     """One sentence naming the exercise and its file when ``error`` is an untouched stub's ``NotImplementedError``
     (raised in a step's ``exercises/`` folder); None for any other error."""
@@ -88,17 +101,6 @@ def run_variant(create_app: Callable[..., Application], argv: list[str] | None =
     parser.add_argument("--save", default=None, metavar="FILE",
                         help="after the last frame, save the scene to this USD file (.usda or .usdc)")
     args = parser.parse_args(argv)
-    try:
-        return _run_variant(create_app, args)
-    except NotImplementedError as error:
-        sentence = unfinished_exercise(error)
-        if sentence is None:
-            raise
-        print(f"{prog or 'gandalf'}: {sentence}", file=sys.stderr)
-        return 1
-
-
-def _run_variant(create_app: Callable[..., Application], args: argparse.Namespace) -> int:
     width, height = (int(x) for x in args.size.lower().split("x"))
     app = create_app(headless=True if args.headless else None, student=args.student, width=width, height=height)
     if args.editor:
@@ -275,7 +277,8 @@ def launcher(part: Part, backend: str | Backend, description: str = "", *,
     def main(argv: list[str] | None = None) -> int:
         if part.parts:
             return launch_part(part.package, api, part.parts, part.option, argv, default=part.default)
-        return run_variant(create_app, argv, description=description, prog=f"python -m {part.package}.{api}")
+        prog = f"python -m {part.package}.{api}"
+        return stop_on_stub(prog, lambda: run_variant(create_app, argv, description=description, prog=prog))
 
     create_app.__doc__ = f"The {part.package} app in {title.rsplit(' · ', 1)[1]} (``headless``, ``student``, size)."
     main.__doc__ = f"Run the {part.package} app in {title.rsplit(' · ', 1)[1]} from the command line (``--help``)."
