@@ -31,7 +31,9 @@ def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo) -> objec
     if report.failed and call.excinfo is not None and item.get_closest_marker("exercise") is None:
         from gandalf_core.app.cli import unfinished_exercise
 
-        sentence = unfinished_exercise(call.excinfo.value)
+        error, sentence = call.excinfo.value, None
+        while error is not None and sentence is None:  # also behind pytest.raises/warns ("DID NOT WARN")
+            sentence, error = unfinished_exercise(error), error.__cause__ or error.__context__
         if sentence is not None:
             report.outcome = "skipped"
             report.longrepr = (str(item.path), item.location[1] or 0, f"waits for your exercise: {sentence}")
