@@ -313,7 +313,7 @@ python -m step05_scenegraph.opengl --concept house
 ```
 
 While an exercise is still a stub, its step stops with one sentence naming the exercise and the file to fill in.
-The tour skips such parts and says which.
+The tour skips such parts and says which, and so do the tests without a grade that run the step with your code.
 
 ## What is here, and what is not
 
@@ -321,7 +321,7 @@ The tour skips such parts and says which.
 |---|---|
 | `gandalf_core/` | the engine (read it, do not change it: the tests run against it) |
 | `stepNN_topic/exercises/` | **your code**: the stubs to fill in |
-| `tests/stepNN_topic/` | the public graded tests of each step (your feedback) and checks of the step's own code |
+| `tests/stepNN_topic/` | each step's public graded tests (your feedback), and checks of the step's own code |
 | `tests/core/` | the engine's own tests |
 | `docs/`, `notebooks/` | the course pages (`mkdocs serve`) and the notebooks of weeks 1-2 |
 
