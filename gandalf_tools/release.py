@@ -459,14 +459,17 @@ def copy_solutions_over(release: Path, root: Path = ROOT) -> list[str]:
 def borrow_environment(folder: Path, python: str = sys.executable) -> Path:
     """Give ``folder`` a ``.venv`` that uses the packages installed for ``python`` (this one) but not its editable
     install of the course, whose import hook would find the instructor's ``solutions`` from any folder: for
-    checking a release on the instructor's machine without installing anything. ``./run.sh`` then uses it as is."""
+    checking a release on the instructor's machine without installing anything. The release's own folder comes
+    first on its path, as its editable install would put it; ``./run.sh`` then uses the environment as is."""
     venv = Path(folder) / ".venv"
     subprocess.run([python, "-m", "venv", "--without-pip", str(venv)], check=True)
     probe = "import site, sys; print('\\n'.join(p for p in sys.path if p.endswith('-packages')))"
     paths = subprocess.run([python, "-c", probe], capture_output=True, text=True, check=True).stdout.split()
     site = next(venv.glob("lib/python*/site-packages"))
-    # Plain folder lines: their own .pth files (the editable install's hook among them) are not run.
-    (site / "borrowed.pth").write_text("".join(f"{p}\n" for p in paths if Path(p).is_dir()))
+    # The release itself first (as its own editable install would put it), then the borrowed folders: plain folder
+    # lines, whose own .pth files (the editable install's hook among them) are not run.
+    lines = [str(Path(folder).resolve()), *(p for p in paths if Path(p).is_dir())]
+    (site / "borrowed.pth").write_text("".join(f"{line}\n" for line in lines))
     (venv / ".gandalf-installed").touch()  # scripts/setup.sh: installed, nothing to do
     return venv
 
