@@ -133,7 +133,8 @@ def _overlay(step_package: str) -> ModuleType | None:
 
 
 def _has_solutions(step_package: str) -> bool:
-    """Whether the step holds its reference ``solutions`` (a student's release does not: it grades ``exercises``)."""
+    """Whether the step holds its reference ``solutions`` (a student's release does not: it grades ``exercises``);
+    ``gandalf_core.app.cli.has_solutions`` without importing the engine's app layer into every pytest start."""
     try:
         return importlib.util.find_spec(f"{step_package}.solutions") is not None
     except ModuleNotFoundError:  # not a step package
