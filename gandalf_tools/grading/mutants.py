@@ -63,6 +63,11 @@ class Mutant:
     def ident(self) -> str:
         return f"{self.step}:{self.exercise}:{self.name}"
 
+    @property
+    def is_control(self) -> bool:
+        """The stand-in of an unchanged copy of the solutions (see :meth:`_Job.placeholder`)."""
+        return self.exercise == "*" and self.name == "control"
+
 
 @dataclass
 class Outcome:
@@ -117,7 +122,7 @@ def patch(package: ModuleType, dotted: str, new: Any) -> Any:
 
 
 def _load_definitions(path: Path) -> ModuleType:
-    name = f"_gandalf_mutants_{path.stem}"
+    name = f"_gandalf_{path.parent.name}_{path.stem}"  # tests/mutants/ and tests/fairness/ share file names
     if name in sys.modules:
         return sys.modules[name]
     spec = importlib.util.spec_from_file_location(name, path)
@@ -129,11 +134,16 @@ def _load_definitions(path: Path) -> ModuleType:
     return module
 
 
-def load_mutants(folder: Path = DEFAULT_DIR) -> list[Mutant]:
-    """Every mutant defined in ``folder/step*.py``."""
+#: The lists a definitions file may hold: wrong implementations (``tests/mutants/``) and correct alternatives
+#: (``tests/fairness/``, see :mod:`gandalf_tools.grading.fairness`); both are built and graded the same way.
+DEFINITION_LISTS = ("MUTANTS", "ALTERNATIVES")
+
+
+def load_mutants(folder: Path = DEFAULT_DIR, attr: str = "MUTANTS") -> list[Mutant]:
+    """Every mutant (or, with ``attr="ALTERNATIVES"``, every alternative) defined in ``folder/step*.py``."""
     mutants: list[Mutant] = []
     for path in sorted(folder.glob("step*.py")):
-        for m in getattr(_load_definitions(path), "MUTANTS", []):
+        for m in getattr(_load_definitions(path), attr, []):
             m.source = str(path)
             mutants.append(m)
     return mutants
@@ -154,7 +164,7 @@ def load_known_gaps(path: Path) -> dict[str, str]:
 def apply_mutant(package_name: str, definitions: str, ident: str) -> None:
     """Called from the copied package's ``__init__.py`` in the graded process: apply mutant ``ident``."""
     module = _load_definitions(Path(definitions))
-    for m in module.MUTANTS:
+    for m in (m for attr in DEFINITION_LISTS for m in getattr(module, attr, [])):
         if m.ident == ident:
             if m.apply is not None:
                 m.apply(sys.modules[package_name])
@@ -450,7 +460,7 @@ def main(argv: list[str] | None = None) -> int:
 
     outcomes = run_jobs(jobs, args.jobs, args.timeout, progress)
 
-    controls = [o for o in outcomes if o.mutant.name == "control" and o.mutant.exercise == "*"]
+    controls = [o for o in outcomes if o.mutant.is_control]
     results = [o for o in outcomes if o not in controls]
     for o in results:
         if o.status == "survived" and o.mutant.ident in known:
