@@ -45,7 +45,8 @@ def _bricks(*, bricks_per_course=2, bed_at_bottom=False, head_at_right=False, ro
 for _name, _text, _options in [
     ("joints-bottom-right", "bed joint along the bottom of a course, head joint at the right end of a brick",
      {"bed_at_bottom": True, "head_at_right": True}),
-    ("four-per-course", "four bricks per course (the shift is then a quarter of the texture)", {"bricks_per_course": 4}),
+    ("four-per-course", "four bricks per course (the shift is then an eighth of the texture)",
+     {"bricks_per_course": 4}),
     ("joints-across-the-edge", "the whole pattern moved by one texel both ways: joints cross the texture's edge",
      {"roll": (1, 1), "shade": False}),
 ]:
@@ -66,9 +67,11 @@ def _camera(eye, target, fov):
 
 
 for _name, _text, _pose in [
-    ("three-quarter", "a three-quarter view from the front right, above the eaves", ((3.0, 2.2, 3.2), (0.0, 0.85, 0.0), 45.0)),
+    ("three-quarter", "a three-quarter view from the front right, above the eaves",
+     ((3.0, 2.2, 3.2), (0.0, 0.85, 0.0), 45.0)),
     ("wide-and-close", "a 60° field of view from closer in, from the left", ((-2.2, 1.5, 2.0), (0.0, 0.8, 0.0), 60.0)),
-    ("from-behind", "the house seen from behind (it looks the same from every side)", ((0.0, 1.8, -4.2), (0.0, 0.8, 0.0), 45.0)),
+    ("from-behind", "the house seen from behind (it looks the same from every side)",
+     ((0.0, 1.8, -4.2), (0.0, 0.8, 0.0), 45.0)),
 ]:
     alternative(ALTERNATIVES, STEP, "house_camera", _name, _text)(
         lambda pkg, _p=_pose: patch(pkg, "house.house_camera", _camera(*_p)))
@@ -77,7 +80,8 @@ for _name, _text, _pose in [
 # --- house_meshes: another way to move the meshes ---------------------------------------------------------
 
 
-@alternative(ALTERNATIVES, STEP, "house_meshes", "homogeneous-matrix", "moves the positions with a 4x4 translation matrix")
+@alternative(ALTERNATIVES, STEP, "house_meshes", "homogeneous-matrix",
+             "moves the positions with a 4x4 translation matrix")
 def _(pkg):
     def moved(mesh, dy, name):
         matrix = np.eye(4)
@@ -93,7 +97,8 @@ def _(pkg):
 # --- HouseRotationSystem: the wrap written with fmod ------------------------------------------------------
 
 
-@alternative(ALTERNATIVES, STEP, "HouseRotationSystem", "fmod-plus-360", "math.fmod, then 360 added to a negative angle")
+@alternative(ALTERNATIVES, STEP, "HouseRotationSystem", "fmod-plus-360",
+             "math.fmod, then 360 added to a negative angle; the angle converted by hand")
 def _(pkg):
     base = pkg.house.HouseRotationSystem
 
@@ -106,8 +111,6 @@ def _(pkg):
             if not rotation.paused:
                 angle = math.fmod(rotation.angle + rotation.speed * ts, 360.0)
                 rotation.angle = angle + 360.0 if angle < 0.0 else angle
-            half = math.radians(rotation.angle) / 2.0  # the quaternion written out: (x, y, z, w) about y
-            q = quat_from_axis_angle((0.0, 1.0, 0.0), math.radians(rotation.angle))
-            transform.quaternion = q if abs(q[1] - math.sin(half)) < 1e-12 else -q
+            transform.quaternion = quat_from_axis_angle(np.array([0.0, 1.0, 0.0]), rotation.angle * math.pi / 180.0)
 
     patch(pkg, "house.HouseRotationSystem", HouseRotationSystem)

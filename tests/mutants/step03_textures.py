@@ -70,6 +70,7 @@ for _name, _text, _slips in [
     ("no-wrap", "bricks not numbered modulo the bricks per course (seam)", {"no_wrap": True}),
     ("only-brighter", "factors from [1, 1 + variation] instead of 1 ± variation", {"only_brighter": True}),
     ("drops-settings", "ignores the extra settings (name, wrap, filter)", {"drop_settings": True}),
+    ("no-clip", "brick_color x factor not clipped to [0, 1] (a bright brick goes past 1)", {"no_clip": True}),
 ]:
     mutant(MUTANTS, STEP, "brick_texture", _name, _text)(lambda pkg, _s=_slips: _bricks(pkg, **_s))
 
