@@ -114,3 +114,32 @@ def _(pkg):
             transform.quaternion = quat_from_axis_angle(np.array([0.0, 1.0, 0.0]), rotation.angle * math.pi / 180.0)
 
     patch(pkg, "house.HouseRotationSystem", HouseRotationSystem)
+
+
+# --- integrators: RK4 from its Butcher tableau -----------------------------------------------------------
+
+
+@alternative(ALTERNATIVES, STEP, "rk4_step", "butcher-tableau", "the four stages in a loop over the classical tableau")
+def _(pkg):
+    def rk4_step(x, v, accel, dt):
+        nodes, weights = (0.0, 0.5, 0.5, 1.0), (1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0)
+        kx, kv = None, None
+        sum_x, sum_v = 0.0 * x, 0.0 * v
+        for c, b in zip(nodes, weights):
+            xs = x if kx is None else x + c * dt * kx
+            vs = v if kv is None else v + c * dt * kv
+            kx, kv = vs, accel(xs, vs)
+            sum_x, sum_v = sum_x + b * kx, sum_v + b * kv
+        return x + dt * sum_x, v + dt * sum_v
+
+    patch(pkg, "integrators.rk4_step", rk4_step)
+
+
+@alternative(ALTERNATIVES, STEP, "semi_implicit_euler_step", "symplectic-form",
+             "x + dt v + dt² a: the same update with the position written out")
+def _(pkg):
+    def semi_implicit_euler_step(x, v, accel, dt):
+        a = accel(x, v)
+        return x + dt * v + dt * dt * a, v + dt * a
+
+    patch(pkg, "integrators.semi_implicit_euler_step", semi_implicit_euler_step)
