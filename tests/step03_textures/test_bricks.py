@@ -124,6 +124,7 @@ def test_settings_reach_the_texture(impl):
 @pytest.mark.parametrize("kwargs,word", [
     ({"width": 0}, "width"), ({"height": 2.5}, "height"), ({"brick_size": (0, 8)}, "brick_size"),
     ({"mortar": -1}, "mortar"), ({"mortar": 8}, "mortar"), ({"variation": 1.5}, "variation"),
+    ({"variation": -0.1}, "variation"), ({"variation": float("nan")}, "variation"),
     ({"brick_color": (1.0, 0.2)}, "brick_color"), ({"mortar_color": (2.0, 0.0, 0.0)}, "mortar_color"),
 ])
 def test_bad_arguments_raise_value_errors_naming_them(impl, kwargs, word):
