@@ -157,7 +157,7 @@ def _(pkg):
     patch(pkg, "uvs.cube_cross_uvs", cube_cross_uvs)
 
 
-@mutant(MUTANTS, STEP, "cube_cross_uvs", "nan-only-check", "rejects NaN but lets an infinite position or normal through")
+@mutant(MUTANTS, STEP, "cube_cross_uvs", "nan-only-check", "rejects NaN but lets an infinite position or normal pass")
 def _(pkg):
     original = pkg.uvs.cube_cross_uvs
 
