@@ -17,14 +17,22 @@ rejected or cannot be built, or when the unchanged solutions (the control, grade
 
 from __future__ import annotations
 
-import argparse
 import json
-import os
 import sys
 import time
-from pathlib import Path
 
-from .mutants import ROOT, Mutant, Outcome, _select, load_mutants, mutant, run_jobs, shader_mutant
+from .mutants import (
+    ROOT,
+    Mutant,
+    Outcome,
+    _select,
+    command_parser,
+    load_mutants,
+    mutant,
+    print_list,
+    run_jobs,
+    shader_mutant,
+)
 
 DEFAULT_DIR = ROOT / "tests" / "fairness"
 
@@ -42,27 +50,13 @@ def _verdict(outcome: Outcome) -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(
-        prog="python -m gandalf_tools.grading.fairness",
-        description="Grade every correct alternative solution of the exercises; fail if one is rejected.",
-    )
-    parser.add_argument("--dir", type=Path, default=DEFAULT_DIR, help="alternatives (default: tests/fairness)")
-    parser.add_argument("--step", action="append", default=[], help="only this step (prefix, e.g. step05)")
-    parser.add_argument("--exercise", action="append", default=[], help="only this exercise")
-    parser.add_argument("-k", dest="keyword", help="only alternatives whose step:exercise:name contains this")
-    parser.add_argument("--jobs", "-j", type=int, default=os.cpu_count() or 2, help="alternatives graded at once")
-    parser.add_argument("--timeout", type=float, default=60.0, help="seconds per test (default 60)")
-    parser.add_argument("--no-control", action="store_true", help="skip the unchanged-solutions control runs")
-    parser.add_argument("--list", action="store_true", help="list the alternatives and exit")
-    parser.add_argument("--json", type=Path, help="write the outcomes as JSON to this file")
-    args = parser.parse_args(argv)
-
+    args = command_parser(
+        "fairness", "Grade every correct alternative solution of the exercises; fail if one is rejected.",
+        "alternatives", DEFAULT_DIR,
+    ).parse_args(argv)
     chosen = _select(load_mutants(args.dir, "ALTERNATIVES"), args.step, args.exercise, args.keyword)
     if args.list:
-        for m in chosen:
-            print(f"{m.ident:<60} {'shader' if m.edits else 'python':<7} {m.description}")
-        print(f"{len(chosen)} alternatives")
-        return 0
+        return print_list(chosen, "alternatives")
     if not chosen:
         print("no alternatives selected", file=sys.stderr)
         return 2

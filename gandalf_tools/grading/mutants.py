@@ -398,18 +398,35 @@ def _select(mutants: list[Mutant], steps: list[str], exercises: list[str], keywo
     return chosen
 
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(
-        prog="python -m gandalf_tools.grading.mutants",
-        description="Grade every mutant (a plausible wrong implementation) of the exercises; fail if one passes.",
-    )
-    parser.add_argument("--dir", type=Path, default=DEFAULT_DIR, help="mutant definitions (default: tests/mutants)")
+def command_parser(module: str, description: str, noun: str, folder: Path) -> argparse.ArgumentParser:
+    """The options the mutation check and the fairness check share: where the definitions of ``noun`` (mutants,
+    alternatives) are, which of them to grade, how many at once, and where the outcomes go."""
+    parser = argparse.ArgumentParser(prog=f"python -m gandalf_tools.grading.{module}", description=description)
+    parser.add_argument("--dir", type=Path, default=folder, help=f"{noun} (default: {folder.relative_to(ROOT)})")
     parser.add_argument("--step", action="append", default=[], help="only this step (prefix, e.g. step01)")
     parser.add_argument("--exercise", action="append", default=[], help="only this exercise")
-    parser.add_argument("-k", dest="keyword", help="only mutants whose step:exercise:name contains this")
-    parser.add_argument("--jobs", "-j", type=int, default=os.cpu_count() or 2, help="mutants graded at once")
+    parser.add_argument("-k", dest="keyword", help=f"only {noun} whose step:exercise:name contains this")
+    parser.add_argument("--jobs", "-j", type=int, default=os.cpu_count() or 2, help=f"{noun} graded at once")
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per test (default 60)")
     parser.add_argument("--no-control", action="store_true", help="skip the unchanged-solutions control runs")
+    parser.add_argument("--list", action="store_true", help=f"list the {noun} and exit")
+    parser.add_argument("--json", type=Path, help="write the outcomes as JSON to this file")
+    return parser
+
+
+def print_list(chosen: list[Mutant], noun: str) -> int:
+    """``--list``: one line per mutant or alternative (ident, kind, description) and the count."""
+    for m in chosen:
+        print(f"{m.ident:<60} {'shader' if m.edits else 'python':<7} {m.description}")
+    print(f"{len(chosen)} {noun}")
+    return 0
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = command_parser(
+        "mutants", "Grade every mutant (a plausible wrong implementation) of the exercises; fail if one passes.",
+        "mutants", DEFAULT_DIR,
+    )
     parser.add_argument(
         "--known-gaps",
         type=Path,
@@ -417,17 +434,11 @@ def main(argv: list[str] | None = None) -> int:
         help="survivors already reported (default: <dir>/known_gaps.txt); they are listed but do not fail the run",
     )
     parser.add_argument("--strict", action="store_true", help="fail on every survivor, known gaps too")
-    parser.add_argument("--list", action="store_true", help="list the mutants and exit")
-    parser.add_argument("--json", type=Path, help="write the outcomes as JSON to this file")
     args = parser.parse_args(argv)
 
     mutants = _select(load_mutants(args.dir), args.step, args.exercise, args.keyword)
     if args.list:
-        for m in mutants:
-            kind = "shader" if m.edits else "python"
-            print(f"{m.ident:<60} {kind:<7} {m.description}")
-        print(f"{len(mutants)} mutants")
-        return 0
+        return print_list(mutants, "mutants")
     if not mutants:
         print("no mutants selected", file=sys.stderr)
         return 2

@@ -6,14 +6,9 @@ Each case runs ``python -m gandalf_tools.grading.fairness`` in a subprocess on s
 
 from __future__ import annotations
 
-import json
-import os
-import subprocess
-import sys
-import textwrap
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
+from grading_checks import run_check
 
 DEFINITIONS = """
 import colorsys
@@ -42,17 +37,8 @@ def _(pkg):
 
 
 def _run(tmp_path: Path, *args: str) -> tuple[int, str, dict[str, dict]]:
-    folder = tmp_path / "fairness"
-    folder.mkdir(exist_ok=True)
-    (folder / "step01_window.py").write_text(textwrap.dedent(DEFINITIONS))
-    out = tmp_path / "outcomes.json"
-    env = {k: v for k, v in os.environ.items() if k != "GANDALF_IMPL"}
-    proc = subprocess.run(
-        [sys.executable, "-m", "gandalf_tools.grading.fairness", "--dir", str(folder), "--json", str(out), *args],
-        cwd=ROOT, env=env, capture_output=True, text=True, timeout=300,
-    )
-    outcomes = json.loads(out.read_text()) if out.exists() else []
-    return proc.returncode, proc.stdout + proc.stderr, {o["alternative"]: o for o in outcomes}
+    code, output, outcomes = run_check("fairness", tmp_path, "fairness", DEFINITIONS, *args)
+    return code, output, {o["alternative"]: o for o in outcomes}
 
 
 def test_a_correct_alternative_is_accepted_and_a_wrong_one_fails_the_run(tmp_path):
