@@ -25,12 +25,11 @@ from .mutants import (
     ROOT,
     Mutant,
     Outcome,
-    _select,
     command_parser,
-    load_mutants,
+    exercises_by_step,
     mutant,
-    print_list,
     run_jobs,
+    selected,
     shader_mutant,
 )
 
@@ -54,15 +53,11 @@ def main(argv: list[str] | None = None) -> int:
         "fairness", "Grade every correct alternative solution of the exercises; fail if one is rejected.",
         "alternatives", DEFAULT_DIR,
     ).parse_args(argv)
-    chosen = _select(load_mutants(args.dir, "ALTERNATIVES"), args.step, args.exercise, args.keyword)
-    if args.list:
-        return print_list(chosen, "alternatives")
-    if not chosen:
-        print("no alternatives selected", file=sys.stderr)
-        return 2
-
-    steps = sorted({m.step for m in chosen})
-    by_step = {s: sorted({m.exercise for m in chosen if m.step == s}) for s in steps}
+    chosen = selected(args, "ALTERNATIVES", "alternatives")
+    if isinstance(chosen, int):
+        return chosen
+    by_step = exercises_by_step(chosen)
+    steps = list(by_step)
     jobs: list[tuple[Mutant | None, str, list[str]]] = [] if args.no_control else [(None, s, by_step[s]) for s in steps]
     jobs += [(m, m.step, [m.exercise]) for m in chosen]
     print(f"fairness check: {len(chosen)} alternatives of {sum(map(len, by_step.values()))} exercises in "

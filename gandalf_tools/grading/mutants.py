@@ -422,6 +422,23 @@ def print_list(chosen: list[Mutant], noun: str) -> int:
     return 0
 
 
+def selected(args: argparse.Namespace, attr: str, noun: str) -> list[Mutant] | int:
+    """The mutants (``attr="MUTANTS"``) or alternatives the command's ``args`` select, or its exit code when there
+    is nothing to grade: 0 after ``--list`` printed them, 2 when none is selected."""
+    chosen = _select(load_mutants(args.dir, attr), args.step, args.exercise, args.keyword)
+    if args.list:
+        return print_list(chosen, noun)
+    if not chosen:
+        print(f"no {noun} selected", file=sys.stderr)
+        return 2
+    return chosen
+
+
+def exercises_by_step(chosen: list[Mutant]) -> dict[str, list[str]]:
+    """The exercises ``chosen`` touch, per step (steps and exercises sorted): what each control run grades."""
+    return {s: sorted({m.exercise for m in chosen if m.step == s}) for s in sorted({m.step for m in chosen})}
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = command_parser(
         "mutants", "Grade every mutant (a plausible wrong implementation) of the exercises; fail if one passes.",
@@ -436,15 +453,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--strict", action="store_true", help="fail on every survivor, known gaps too")
     args = parser.parse_args(argv)
 
-    mutants = _select(load_mutants(args.dir), args.step, args.exercise, args.keyword)
-    if args.list:
-        return print_list(mutants, "mutants")
-    if not mutants:
-        print("no mutants selected", file=sys.stderr)
-        return 2
-
-    steps = sorted({m.step for m in mutants})
-    by_step = {s: sorted({m.exercise for m in mutants if m.step == s}) for s in steps}
+    mutants = selected(args, "MUTANTS", "mutants")
+    if isinstance(mutants, int):
+        return mutants
+    by_step = exercises_by_step(mutants)
+    steps = list(by_step)
     jobs: list[tuple[Mutant | None, str, list[str]]] = []
     if not args.no_control:
         jobs += [(None, s, by_step[s]) for s in steps]
