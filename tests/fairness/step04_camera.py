@@ -61,3 +61,33 @@ def _(pkg):
         return np.linalg.inv(placement)
 
     patch(pkg, "projection.look_at", look_at)
+
+
+@alternative(ALTERNATIVES, STEP, "OrbitCameraSystem", "yaw-pitch-quaternion",
+             "the camera turned by quat(y, yaw) · quat(x, -pitch) instead of look_at_rotation")
+def _(pkg):
+    from gandalf_core.math import quat_from_axis_angle, quat_mul
+
+    base = pkg.orbit.OrbitCameraSystem
+
+    class OrbitCameraSystem(base):
+        def on_update_system(self, ts):
+            app = self.scene.app
+            dx = dy = scroll = 0.0
+            if app is not None:
+                if 0 in app.input.buttons_down:
+                    dx, dy = app.input.mouse_delta()
+                scroll = app.input.scroll_delta()
+            for orbit, transform in self.components:
+                orbit.yaw -= dx * orbit.sensitivity
+                orbit.pitch = min(max(orbit.pitch + dy * orbit.sensitivity, orbit.min_pitch), orbit.max_pitch)
+                orbit.distance = min(max(orbit.distance * orbit.zoom_factor**scroll, orbit.min_distance),
+                                     orbit.max_distance)
+                yaw, pitch = math.radians(orbit.yaw), math.radians(orbit.pitch)
+                offset = orbit.distance * np.array(
+                    [math.cos(pitch) * math.sin(yaw), math.sin(pitch), math.cos(pitch) * math.cos(yaw)])
+                transform.translation = np.asarray(orbit.target, dtype=float) + offset
+                transform.quaternion = quat_mul(quat_from_axis_angle((0.0, 1.0, 0.0), yaw),
+                                                quat_from_axis_angle((1.0, 0.0, 0.0), -pitch))
+
+    patch(pkg, "orbit.OrbitCameraSystem", OrbitCameraSystem)

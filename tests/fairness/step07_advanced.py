@@ -66,3 +66,33 @@ shader_alternative(ALTERNATIVES, STEP, "hit_sphere", "roots-by-comparison", "nea
                          "t0 = c / q < q / a ? c / q : q / a;\n        t1 = c / q < q / a ? q / a : c / q;",
                          wgsl_new="t0 = select(q / a, c / q, c / q < q / a);\n"
                                   "        t1 = select(c / q, q / a, c / q < q / a);"))
+
+# The exploding triangle: the raised cosine as sin², each edge scaled by its own largest component (the same
+# direction: a positive scale of each edge does not turn their cross product).
+shader_alternative(ALTERNATIVES, STEP, "explode_offset", "sine-squared", "(1 - cos(2 pi t / T)) / 2 as sin²(pi t / T)",
+                   [("explode.glsl", "float w = 0.5 - 0.5 * cos(6.283185307179586 * t / period);",
+                     "float sn = sin(3.141592653589793 * t / period);\n    float w = sn * sn;"),
+                    ("explode.wgsl", "let w = 0.5 - 0.5 * cos(6.283185307179586 * t / period);",
+                     "let sn = sin(3.141592653589793 * t / period);\n    let w = sn * sn;")])
+shader_alternative(ALTERNATIVES, STEP, "explode_offset", "per-edge-scale",
+                   "each edge divided by its own largest absolute component",
+                   _both("explode", "vec3 c = cross(e1 / s, e2 / s);",
+                         "vec3 c = cross(e1 / max(max(abs(e1.x), abs(e1.y)), max(abs(e1.z), 1e-38)),\n"
+                         "                   e2 / max(max(abs(e2.x), abs(e2.y)), max(abs(e2.z), 1e-38)));",
+                         "let c = cross(e1 / s, e2 / s);",
+                         "let c = cross(e1 / max(max(abs(e1.x), abs(e1.y)), max(abs(e1.z), 1e-38)),\n"
+                         "                  e2 / max(max(abs(e2.x), abs(e2.y)), max(abs(e2.z), 1e-38)));"))
+
+# Normal mapping with the TBN matrix; Schlick's fifth power multiplied out in the dielectric; the bounce with abs.
+shader_alternative(ALTERNATIVES, STEP, "normal_map", "tbn-matrix", "r = mat3(T, B, N) m",
+                   _both("normal_map", "vec3 r = t * m.x + b * m.y + n * m.z;", "vec3 r = mat3(t, b, n) * m;",
+                         "let r = t * m.x + b * m.y + n * m.z;", "let r = mat3x3<f32>(t, b, n) * m;"))
+shader_alternative(ALTERNATIVES, STEP, "scatter_dielectric", "fifth-power-multiplied", "(1 - cos_i)^5 as x²·x²·x",
+                   _both("dielectric", "pow(1.0 - cos_i, 5.0)",
+                         "((1.0 - cos_i) * (1.0 - cos_i) * (1.0 - cos_i) * (1.0 - cos_i) * (1.0 - cos_i))"))
+shader_alternative(ALTERNATIVES, STEP, "particle_step", "bounce-with-abs",
+                   "in the bounce (velocity.y < 0): abs(velocity.y) restitution; the overshoot mirrored",
+                   _both("particle_step", "velocity.y = -velocity.y * s.restitution;",
+                         "velocity.y = abs(velocity.y) * s.restitution;")
+                   + _both("particle_step", "position.y = s.floor_y + (s.floor_y - position.y) * s.restitution;",
+                           "position.y = s.floor_y - (position.y - s.floor_y) * s.restitution;"))
