@@ -75,13 +75,17 @@ shader_alternative(ALTERNATIVES, STEP, "explode_offset", "sine-squared", "(1 - c
                     ("explode.wgsl", "let w = 0.5 - 0.5 * cos(6.283185307179586 * t / period);",
                      "let sn = sin(3.141592653589793 * t / period);\n    let w = sn * sn;")])
 shader_alternative(ALTERNATIVES, STEP, "explode_offset", "per-edge-scale",
-                   "each edge divided by its own largest absolute component",
+                   "each edge divided by its own largest absolute component (a zero edge: no normal)",
                    _both("explode", "vec3 c = cross(e1 / s, e2 / s);",
-                         "vec3 c = cross(e1 / max(max(abs(e1.x), abs(e1.y)), max(abs(e1.z), 1e-38)),\n"
-                         "                   e2 / max(max(abs(e2.x), abs(e2.y)), max(abs(e2.z), 1e-38)));",
+                         "float s1 = max(abs(e1.x), max(abs(e1.y), abs(e1.z)));\n"
+                         "    float s2 = max(abs(e2.x), max(abs(e2.y), abs(e2.z)));\n"
+                         "    if (!(s1 > 0.0 && s2 > 0.0)) {\n        return vec3(0.0);\n    }\n"
+                         "    vec3 c = cross(e1 / s1, e2 / s2);",
                          "let c = cross(e1 / s, e2 / s);",
-                         "let c = cross(e1 / max(max(abs(e1.x), abs(e1.y)), max(abs(e1.z), 1e-38)),\n"
-                         "                  e2 / max(max(abs(e2.x), abs(e2.y)), max(abs(e2.z), 1e-38)));"))
+                         "let s1 = max(abs(e1.x), max(abs(e1.y), abs(e1.z)));\n"
+                         "    let s2 = max(abs(e2.x), max(abs(e2.y), abs(e2.z)));\n"
+                         "    if (!(s1 > 0.0 && s2 > 0.0)) {\n        return vec3<f32>(0.0);\n    }\n"
+                         "    let c = cross(e1 / s1, e2 / s2);"))
 
 # Normal mapping with the TBN matrix; Schlick's fifth power multiplied out in the dielectric; the bounce with abs.
 shader_alternative(ALTERNATIVES, STEP, "normal_map", "tbn-matrix", "r = mat3(T, B, N) m",
