@@ -67,25 +67,12 @@ shader_alternative(ALTERNATIVES, STEP, "hit_sphere", "roots-by-comparison", "nea
                          wgsl_new="t0 = select(q / a, c / q, c / q < q / a);\n"
                                   "        t1 = select(c / q, q / a, c / q < q / a);"))
 
-# The exploding triangle: the raised cosine as sin², each edge scaled by its own largest component (the same
-# direction: a positive scale of each edge does not turn their cross product).
+# The exploding triangle: the raised cosine as sin².
 shader_alternative(ALTERNATIVES, STEP, "explode_offset", "sine-squared", "(1 - cos(2 pi t / T)) / 2 as sin²(pi t / T)",
                    [("explode.glsl", "float w = 0.5 - 0.5 * cos(6.283185307179586 * t / period);",
                      "float sn = sin(3.141592653589793 * t / period);\n    float w = sn * sn;"),
                     ("explode.wgsl", "let w = 0.5 - 0.5 * cos(6.283185307179586 * t / period);",
                      "let sn = sin(3.141592653589793 * t / period);\n    let w = sn * sn;")])
-shader_alternative(ALTERNATIVES, STEP, "explode_offset", "per-edge-scale",
-                   "each edge divided by its own largest absolute component (a zero edge: no normal)",
-                   _both("explode", "vec3 c = cross(e1 / s, e2 / s);",
-                         "float s1 = max(abs(e1.x), max(abs(e1.y), abs(e1.z)));\n"
-                         "    float s2 = max(abs(e2.x), max(abs(e2.y), abs(e2.z)));\n"
-                         "    if (!(s1 > 0.0 && s2 > 0.0)) {\n        return vec3(0.0);\n    }\n"
-                         "    vec3 c = cross(e1 / s1, e2 / s2);",
-                         "let c = cross(e1 / s, e2 / s);",
-                         "let s1 = max(abs(e1.x), max(abs(e1.y), abs(e1.z)));\n"
-                         "    let s2 = max(abs(e2.x), max(abs(e2.y), abs(e2.z)));\n"
-                         "    if (!(s1 > 0.0 && s2 > 0.0)) {\n        return vec3<f32>(0.0);\n    }\n"
-                         "    let c = cross(e1 / s1, e2 / s2);"))
 
 # Normal mapping with the TBN matrix; Schlick's fifth power multiplied out in the dielectric; the bounce with abs.
 shader_alternative(ALTERNATIVES, STEP, "normal_map", "tbn-matrix", "r = mat3(T, B, N) m",
