@@ -72,21 +72,9 @@ def _(pkg):
 
     class OrbitCameraSystem(base):
         def on_update_system(self, ts):
-            app = self.scene.app
-            dx = dy = scroll = 0.0
-            if app is not None:
-                if 0 in app.input.buttons_down:
-                    dx, dy = app.input.mouse_delta()
-                scroll = app.input.scroll_delta()
+            super().on_update_system(ts)  # input, clamps and the eye as the reference
             for orbit, transform in self.components:
-                orbit.yaw -= dx * orbit.sensitivity
-                orbit.pitch = min(max(orbit.pitch + dy * orbit.sensitivity, orbit.min_pitch), orbit.max_pitch)
-                orbit.distance = min(max(orbit.distance * orbit.zoom_factor**scroll, orbit.min_distance),
-                                     orbit.max_distance)
                 yaw, pitch = math.radians(orbit.yaw), math.radians(orbit.pitch)
-                offset = orbit.distance * np.array(
-                    [math.cos(pitch) * math.sin(yaw), math.sin(pitch), math.cos(pitch) * math.cos(yaw)])
-                transform.translation = np.asarray(orbit.target, dtype=float) + offset
                 transform.quaternion = quat_mul(quat_from_axis_angle((0.0, 1.0, 0.0), yaw),
                                                 quat_from_axis_angle((1.0, 0.0, 0.0), -pitch))
 
