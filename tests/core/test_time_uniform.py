@@ -13,6 +13,7 @@ import math
 
 import numpy as np
 import pytest
+from core_shaders import FLAT_VERT
 
 from gandalf_core import Application, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
@@ -30,12 +31,6 @@ PROBE_WGSL = """
     let t = frame.time;
     return vec4<f32>(0.5 + 0.5 * sin(t.w), 0.5 + 0.5 * cos(3.0 * t.w), fract(t.x * 0.5), 1.0);
 }
-"""
-PROBE_VERT = """#version 330 core
-#include "frame.glsl"
-#include "instance.glsl"
-layout(location = 0) in vec3 a_position;
-void main() { gl_Position = u_projection * u_view * instance_model() * vec4(a_position, 1.0); }
 """
 PROBE_FRAG = """#version 330 core
 #include "frame.glsl"
@@ -73,7 +68,7 @@ def probe_scene() -> Scene:
 def test_the_time_forms_stay_smooth(backend, start):
     with Application(backend, 16, 12, headless=True, fixed_dt=1 / 60) as app:
         if backend == "opengl":
-            app.renderer.shaders.build("probe", PROBE_VERT, PROBE_FRAG)
+            app.renderer.shaders.build("probe", FLAT_VERT, PROBE_FRAG)  # the core tests' vertex stage
         else:
             app.renderer.shaders.build("probe", PROBE_WGSL)
         app.add_scene(probe_scene())
