@@ -24,8 +24,8 @@ _reference = load_impl(__package__)
 COMPONENTS = {
     ReparentOnKeyComponent: ("other_parent", "key"),  # other_parent: an entity
     GravityComponent: ("gravity", "velocity", "floor", "restitution", "position", "previous"),
-    SpringComponent: ("rest", "stiffness", "mass", "damping", "integrator", "velocity", "reset_distance", "resets",
-                      "position", "previous", "start"),
+    SpringComponent: ("rest", "stiffness", "mass", "damping", "integrator", "velocity", "runaway_distance",
+                      "ran_away_at", "position", "previous", "start"),
     HouseRotationComponent: ("speed", "angle", "paused", "pause_key"),
 }
 SYSTEMS = {

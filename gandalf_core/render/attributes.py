@@ -14,7 +14,10 @@ _FIELDS = {"position": "positions", "normal": "normals", "uv": "uvs", "tangent":
 
 
 def mesh_has(data: Any) -> tuple[str, ...]:
-    """The attributes a MeshData holds, in location order."""
+    """The attributes a MeshData holds, in location order; none for an indirectly drawn mesh (its vertices are
+    placeholders: the GPU draws a count a compute pass wrote, and the shader pulls its vertices itself)."""
+    if getattr(data, "indirect", None) is not None:
+        return ()
     return tuple(name for name in ATTRIBUTE_LOCATIONS if getattr(data, _FIELDS[name]) is not None)
 
 

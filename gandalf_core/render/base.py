@@ -151,17 +151,36 @@ class Renderer(ABC):
         """Every batch with its material and mesh, built on first use and checked before any pass is drawn:
         a patch mesh needs a program that tessellates patches of its size (and cannot cast shadows)."""
         draws = []
+        indirect_counts: dict[str, int] = {}
         for batch in data.batches:
             material = self.resolve_material(batch.material, assets)
             mesh = self.resolve_mesh(batch.mesh, assets)
             # A GL program with a tessellation control stage has patch_vertices; WebGPU's shaders never do.
             check_patch_draw(batch.material, material.shader.name, getattr(material.shader, "patch_vertices", None),
                              batch.mesh, mesh.data, self.backend)
+            if mesh.data.indirect is not None:
+                self.indirect_buffer(batch.mesh, mesh.data)  # built and large enough, before any pass
+                # WebGPU writes a buffer's instance count once per frame, before the passes run.
+                if indirect_counts.setdefault(mesh.data.indirect, batch.count) != batch.count:
+                    raise ValueError(f"mesh '{batch.mesh}' is drawn indirectly from buffer '{mesh.data.indirect}' by "
+                                     "batches of different instance counts in one frame; give each its own buffer")
             if data.shadows and mesh.data.patch_size is not None and not batch.transparent:
                 raise ValueError(f"mesh '{batch.mesh}' (material '{batch.material}') is a patch mesh, which the "
                                  "shadow pass cannot draw: turn off cast_shadows, or draw it with a blended material")
             draws.append((batch, material, mesh))
         return draws
+
+    def indirect_buffer(self, mesh_name: str, mesh: Any) -> Any:
+        """The buffer an indirectly drawn mesh reads its draw from (``MeshData.indirect``): it must be built in this
+        renderer's buffer library and hold the four ``uint32`` of a draw (16 bytes)."""
+        from ..resources import ResourceError
+
+        buffer = self.buffers.get(mesh.indirect, f"mesh '{mesh_name}' (indirect)")
+        if buffer.size < 16:
+            raise ResourceError(f"mesh '{mesh_name}'", "indirect", f"buffer '{mesh.indirect}' has {buffer.size} "
+                                "bytes; an indirect draw reads 16 (vertex count, instance count, first vertex, "
+                                "first instance)")
+        return buffer
 
     def pass_shader(self, kind: str) -> Any:
         """The shader of one of the engine's own passes (``"sky"``, ``"shadow"``: :data:`.frame.PASS_SHADERS`),

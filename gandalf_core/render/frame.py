@@ -15,8 +15,19 @@ the view matrix, point lights and the shadow projection are moved by ``-origin``
 float64 on the CPU, before they become float32. A world 1e6 units from the origin then draws like one at the
 origin; shaders that need absolute positions add ``origin_high + origin_low`` (the origin split into two float32s).
 
-**Time.** ``time.x`` is the time since start wrapped to :data:`TIME_WRAP` seconds, so float32 keeps 1/60 s steps
-exact to 1% for ever (at 3e7 s a plain float32 time steps by 2 s); ``time.z`` counts the wraps.
+**Time.** A plain float32 time steps by 2 s at 3e7 s (a year), so no shader gets one. The time since start is kept
+in float64 on the CPU and handed over in forms that stay smooth (each wrap taken in float64):
+
+* ``time.x``: seconds wrapped to :data:`TIME_WRAP` (1024 s), steps exact to 1.2e-4 s; ``time.z`` counts the wraps.
+  ``fract(time.x * f)`` is smooth across the wrap when ``1024 f`` is a whole number (periods of 1024 s / n:
+  1 s, 0.5 s, 2 s, 1/60 s ...), a plain ``sin(time.x)`` is not (it jumps every 17 minutes).
+* ``time.w``: seconds wrapped to :data:`ANGLE_WRAP` = 163 turns of 2π (1024.16 s): ``sin(k * time.w)`` and
+  ``cos(k * time.w)`` are smooth across the wrap for every whole ``k`` (an angle in radians at k rad/s).
+* any other period: a per-animation phase, ``phase(time, period)`` in float64 on the CPU, written as a material
+  value (the explode technique's ``explode_time`` is its clock wrapped to its own period).
+
+Each form is smooth and steps exactly to 1e-4 s for as long as the float64 clock resolves 1e-4 s itself
+(past 1e11 s, three thousand years); tested at 1e5 s, 1e7 s and across each wrap in both APIs.
 """
 
 from __future__ import annotations
@@ -42,6 +53,16 @@ INSTANCE_STRIDE = INSTANCE_FLOATS * 4
 FRAME_FLOATS = FRAME_LAYOUT.size // 4
 #: ``time.x`` wraps after this many seconds: float32's step at 1024 s is 1.2e-4 s, under 1% of 1/60 s.
 TIME_WRAP = 1024.0
+#: ``time.w`` wraps after this many seconds: 163 whole turns of 2π, so ``sin(k * time.w)`` never jumps.
+ANGLE_WRAP = 163 * 2.0 * math.pi
+
+
+def phase(time: float, period: float) -> float:
+    """``time`` wrapped to ``[0, period)`` in float64: a periodic animation's clock that float32 keeps exact for
+    ever (``sin(2π phase / period)`` is smooth across the wrap because the wrap is one whole period)."""
+    if not (math.isfinite(period) and period > 0.0):
+        raise ValueError(f"phase: the period must be a finite number of seconds > 0, got {period!r}")
+    return float(time) % period
 
 
 #: The sky pass's shader name (core shaders ``render/shaders/skybox.*``) and fixed state: it is drawn
@@ -111,7 +132,7 @@ def pack_frame(
     field["camera_position"][:3] = np.asarray(camera_position, dtype=np.float64)[:3]
     field["camera_position"][3] = 1.0
     wraps, wrapped = divmod(float(time), TIME_WRAP)
-    field["time"][:3] = (wrapped, dt, wraps)
+    field["time"][:] = (wrapped, dt, wraps, phase(time, ANGLE_WRAP))
     field["depth"][:2] = depth_ends
     field["clip_to_direction"][...] = _clip_to_direction(projection, view[:3, :3])
     if origin is None:

@@ -31,7 +31,7 @@ FRAME_LAYOUT = BlockLayout("Frame", [
     ("view", "mat4"),
     ("projection", "mat4"),
     ("camera_position", "vec4"),
-    ("time", "vec4"),  # x: seconds since start, wrapped; y: this frame's step; z: wraps
+    ("time", "vec4"),  # x: seconds wrapped to 1024; y: this frame's step; z: wraps; w: seconds wrapped to 163·2π
     ("clip_to_direction", "mat4"),  # clip-space point on the far plane -> world direction (skyboxes)
     ("depth", "vec4"),  # x: NDC depth of the near plane, y: of the far plane
     ("origin_high", "vec4"),  # the camera's world position, float32 part ...

@@ -145,6 +145,13 @@ class MeshData:
     With ``patch_size`` set (1 to :data:`MAX_PATCH_SIZE`) the mesh is a **patch mesh** for tessellation: the indices
     (or the vertices) form patches of that many control points instead of triangles. Only a program with a
     tessellation control stage whose ``layout(vertices = N) out`` has the same N can draw it (OpenGL).
+
+    With ``indirect`` set (the name of a buffer of the renderer's buffer library, 16 bytes or more) the mesh is
+    drawn **indirectly**: the GPU reads the vertex count from the buffer's first ``uint32``, which the app's own
+    compute pass writes, so a compute pass decides how much is drawn without a read-back (the renderer writes the
+    other three: the instance count, first vertex 0, first instance 0; batches that share the buffer in a frame
+    need the same instance count). Its vertices are then placeholders for shaders that pull their data
+    themselves; it has no indices and no patches.
     """
 
     positions: np.ndarray
@@ -155,9 +162,16 @@ class MeshData:
     indices: np.ndarray | None = None
     name: str = "mesh"
     patch_size: int | None = None
+    indirect: str | None = None
 
     def __post_init__(self) -> None:
         label = self._label
+        if self.indirect is not None:
+            if not isinstance(self.indirect, str) or not self.indirect:
+                raise ResourceError(label, "indirect", f"expected the name of a buffer, got {self.indirect!r}")
+            if self.indices is not None or self.patch_size is not None:
+                raise ResourceError(label, "indirect", "an indirectly drawn mesh has no indices and no patches: the "
+                                    "compute pass that writes its vertex count writes the vertices in order")
         positions = _float_attribute(label, "positions", self.positions, 3, None)
         n = positions.shape[0]
         if n == 0:
@@ -221,7 +235,7 @@ class MeshData:
 
     def _replace(self, **fields: Any) -> MeshData:
         current = {f: getattr(self, f) for f in ("positions", "normals", "uvs", "tangents", "colors", "indices")}
-        return MeshData(**{**current, **fields}, name=self.name, patch_size=self.patch_size)
+        return MeshData(**{**current, **fields}, name=self.name, patch_size=self.patch_size, indirect=self.indirect)
 
     def with_normals(self, recompute: bool = False) -> MeshData:
         """This mesh with smooth, area-weighted vertex normals (kept as they are unless absent or ``recompute``).

@@ -1,8 +1,9 @@
 """The custom systems of step 05: a system that simulates on a fixed time step, and gravity done right.
 
 The paper's gravity example moved the position by ``force * ts`` each frame, which is a constant speed, not
-a fall. Here the velocity is integrated (``v += g dt``, then ``x += v dt``: semi-implicit Euler) on a fixed
-time step, so the fall is the same at 30 or 300 frames per second. :class:`FixedStepSystem` is the pattern
+a fall. Here the fall is integrated exactly (``x += v dt - g dt² / 2`` with the old ``v``, then ``v -= g dt``:
+constant acceleration has a closed form) on a fixed time step, so the path is the same at any ``dt`` and any
+frame rate. :class:`FixedStepSystem` is the pattern
 (the integrators' SpringSystem is one too): it runs whole fixed steps and shows the state interpolated to the
 frame's time.
 """
@@ -52,14 +53,15 @@ class FixedStepSystem(System):
 
 # --8<-- [start:gravity]
 class GravitySystem(FixedStepSystem):
-    """Falling bodies: velocity integration (semi-implicit Euler) and an optional bouncy floor."""
+    """Falling bodies: the exact constant-gravity step and an optional bouncy floor."""
 
     def __init__(self, dt: float = 1.0 / 120.0) -> None:
         super().__init__([GravityComponent, TransformComponent], dt)
 
     def step(self, body: GravityComponent, dt: float) -> None:
+        fall = np.array([0.0, 0.5 * body.gravity * dt * dt, 0.0])
+        body.position = body.position + body.velocity * dt - fall
         body.velocity[1] -= body.gravity * dt
-        body.position = body.position + body.velocity * dt
         if body.floor is not None and body.position[1] < body.floor:
             # Reflect the penetration and the velocity; restitution < 1 loses energy at each bounce.
             body.position[1] = body.floor + (body.floor - body.position[1]) * body.restitution

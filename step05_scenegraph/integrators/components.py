@@ -11,15 +11,15 @@ from gandalf_core import Component
 from ..custom_systems.components import vector3
 
 #: The integrators a SpringComponent can name, in the order the page teaches them.
-INTEGRATORS = ("explicit_euler", "semi_implicit_euler", "rk4", "implicit_euler")
+INTEGRATORS = ("explicit_euler", "semi_implicit_euler", "rk4", "implicit_euler", "exact")
 
 
 class SpringComponent(Component):
     """A mass ``mass`` on a zero-length spring of stiffness ``stiffness`` towards ``rest``, with damping.
 
     ``integrator`` picks the method (one of :data:`INTEGRATORS`). A state that runs away (farther than
-    ``reset_distance`` from rest) is put back to its start and counted in ``resets``, so an unstable
-    integrator shows its blow-up again and again instead of producing infinities.
+    ``runaway_distance`` from rest, or not finite) stops where it was last bounded and records the simulated
+    time in ``ran_away_at`` (-1: never): the blow-up stays in sight and is reported, never reset away.
     """
 
     def __init__(
@@ -30,7 +30,7 @@ class SpringComponent(Component):
         damping: float = 0.2,
         integrator: str = "semi_implicit_euler",
         velocity: Sequence[float] = (0.0, 0.0, 0.0),
-        reset_distance: float = 4.0,
+        runaway_distance: float = 4.0,
     ) -> None:
         if integrator not in INTEGRATORS:
             raise ValueError(f"SpringComponent.integrator must be one of {INTEGRATORS}, got {integrator!r}")
@@ -44,8 +44,8 @@ class SpringComponent(Component):
         self.damping = float(damping)
         self.integrator = integrator
         self.velocity = vector3("SpringComponent", "velocity", velocity)
-        self.reset_distance = float(reset_distance)
-        self.resets = 0
+        self.runaway_distance = float(runaway_distance)
+        self.ran_away_at = -1.0
         self.position = np.zeros(3)
         self.previous = np.zeros(3)
         self.start = np.zeros(3)

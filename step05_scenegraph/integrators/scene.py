@@ -33,7 +33,7 @@ SPRING_COLUMNS = (
 def build_springs_scene(impl: ModuleType | None = None) -> Scene:
     """Four damped springs with the same k, m, c and start, one per integrator.
 
-    Explicit Euler gains energy every step until its mass runs away and is reset; implicit Euler loses
+    Explicit Euler gains energy every step until its mass runs away and stops there; implicit Euler loses
     energy too fast; semi-implicit Euler and RK4 follow the true motion.
     """
     scene = Scene("springs")

@@ -17,8 +17,3 @@ vec3 shade(vec3 p, vec3 n, vec3 v, vec3 albedo, float specular, float shininess)
 }
 // --8<-- [end:lights]
 
-// A unit vector from a possibly unnormalised (or zero) one: interpolated normals can cancel out.
-vec3 safe_normalize(vec3 v, vec3 fallback) {
-    float len = length(v);
-    return len > 1e-12 ? v / len : fallback;
-}

@@ -17,8 +17,3 @@ fn shade(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, albedo: vec3<f32>, specular: 
 }
 // --8<-- [end:lights]
 
-// A unit vector from a possibly unnormalised (or zero) one: interpolated normals can cancel out.
-fn safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
-    let len = length(v);
-    return select(fallback, v / max(len, 1e-12), len > 1e-12);
-}

@@ -19,6 +19,7 @@ import numpy as np
 from gandalf_core.components import MaterialComponent, MeshComponent, TransformComponent
 from gandalf_core.ecs import Component, InfoComponent, LinkComponent, Scene
 from gandalf_core.math import decompose_trs, invert_affine
+from gandalf_core.systems import world_matrix
 
 from .commands import Command
 from .entities import (
@@ -136,7 +137,7 @@ class EditorActions:
                                                     transform.scale.copy())
         new_local = old_local
         if transform is not None and keep_world:
-            local = invert_affine(_world(scene, parent)) @ np.array(transform.world)
+            local = invert_affine(_world(scene, parent)) @ _world(scene, entity)
             t, q, s = decompose_trs(local)
             new_local = (t, q, s)
 
@@ -300,7 +301,6 @@ class EditorActions:
 
 
 def _world(scene: Scene, entity: uuid.UUID | None) -> np.ndarray:
-    if entity is None:
-        return np.eye(4)
-    transform = scene.try_component(entity, TransformComponent)
-    return np.eye(4) if transform is None else np.array(transform.world)
+    """The entity's world matrix from its and its ancestors' local transforms now, not the one the transform
+    system cached last frame: an entity created or moved this frame has no up-to-date ``world`` yet."""
+    return np.eye(4) if entity is None else world_matrix(scene, entity)

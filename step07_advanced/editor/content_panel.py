@@ -2,8 +2,8 @@
 
 Drag a mesh onto the viewport or the hierarchy to place it in the scene ("+" places it at the origin); drag a
 texture onto a material (here, or on a texture slot in the inspector) to put it into the material's first slot.
-Shaders show where they come from; "reload" compiles one again from its files, and a compile error goes to the
-console with its file:line.
+Shaders show where they come from; "reload" (left of the name, so that a narrow panel never hides it) compiles
+one again from its files, and a compile error goes to the console with its file:line.
 """
 
 from __future__ import annotations
@@ -29,6 +29,7 @@ class ContentPanelSystem(PanelSystem):
         for name in self._section("Meshes", sorted(assets.meshes)):
             if imgui.small_button(f"+##{name}"):
                 self.act(editor.spawn_mesh, name)
+            self.remember(f"content/spawn/{name}")
             imgui.same_line()
             imgui.selectable(name, False)
             self.remember(f"content/mesh/{name}")
@@ -46,12 +47,13 @@ class ContentPanelSystem(PanelSystem):
             self.texture_drop_target(name, 0)
         shaders = editor.app.renderer.shaders
         for name in self._section("Shaders", shaders.names()):
-            imgui.text(name)
-            files = editor.shader_files(name)
-            if files:
-                imgui.same_line()
+            # The button before the name: a long name in a narrow panel (640x480) would push it out of sight.
+            if editor.shader_files(name):
                 if imgui.small_button(f"reload##{name}"):
                     self.act(editor.reload_shader, name)
+                self.remember(f"content/reload/{name}")
+                imgui.same_line()
+            imgui.text(name)
 
     @staticmethod
     def _section(title: str, names: Iterable[str]) -> Iterator[str]:

@@ -380,12 +380,23 @@ class Editor(EditorActions):
         panel.visible = bool(visible)
 
     def set_system_enabled(self, system: System, enabled: bool) -> None:
-        """Pause (False) or resume (True) ``system``; the render system cannot be paused (it draws the editor)."""
+        """Pause (False) or resume (True) ``system``, undoably; the render system cannot be paused (it draws the
+        editor)."""
         from gandalf_core.render import RenderSystem
 
         if isinstance(system, RenderSystem) and not enabled:
             raise ValueError("editor: the RenderSystem cannot be paused (it draws the frame and the editor)")
-        system.enabled = bool(enabled)
+        if system not in self.app.scene.systems:
+            raise ValueError(f"editor: {system.name} is not a system of scene '{self.app.scene.name}'")
+        before, after = system.enabled, bool(enabled)
+        if before == after:
+            return
+
+        def put(value: bool) -> None:
+            system.enabled = value
+
+        self.commands.push(Command(f"{'resume' if after else 'pause'} {system.name}", lambda: put(after),
+                                   lambda: put(before)))
 
     def step_system(self, system: System) -> None:
         """Run a (paused) system once with the app's time step."""
@@ -394,10 +405,16 @@ class Editor(EditorActions):
         self.app.scene.run_system(system, ts)
 
     def move_system(self, system: System, delta: int) -> None:
-        """Move ``system`` ``delta`` places in the update order (among all the scene's systems)."""
+        """Move ``system`` ``delta`` places in the update order (among all the scene's systems), undoably."""
         scene = self.app.scene
-        order = scene.systems
-        scene.move_system(system, order.index(system) + int(delta))
+        if system not in scene.systems:
+            raise ValueError(f"editor: {system.name} is not a system of scene '{scene.name}'")
+        before = scene.systems.index(system)
+        after = max(0, min(before + int(delta), len(scene.systems) - 1))
+        if before == after:
+            return
+        self.commands.push(Command(f"move {system.name}", lambda: scene.move_system(system, after),
+                                   lambda: scene.move_system(system, before)))
 
     # --- shaders ----------------------------------------------------------------------------------------
     def shader_files(self, name: str) -> tuple[Any, ...]:

@@ -8,7 +8,7 @@ file (``.glsl`` and ``.wgsl``)  what you write                                  
 ``brdf``                       the GGX distribution D, Smith geometry G, Schlick Fresnel F and the          showcase,
                                metallic-roughness workflow                                                  pbr_model
 ``normal_map``                 decoding a tangent-space normal with the TBN frame                           showcase
-``particle_step``              one semi-implicit Euler step of a particle with a floor bounce (compute)     showcase
+``particle_step``              one exact step of a particle under gravity, with a floor bounce (compute)  showcase
 ``terrain``                    ``tess_level`` (level of detail), ``terrain_height``, ``terrain_normal``     terrain
 ``explode``                    ``face_normal`` and ``explode_offset`` (how far each face moves)             explode
 ``blur_kernel``                ``gaussian_weight``: the normalised Gaussian weights                        filter

@@ -4,8 +4,9 @@
 // Particle: position.xyz, position.w = remaining life in seconds;
 // velocity.xyz (velocity.w: keep as is). SimParams s: s.gravity.xyz
 // (m/s²), s.dt (s), s.floor_y, s.restitution (0..1).
-//   1. velocity += gravity * dt, then position += velocity * dt
-//      (semi-implicit Euler, in this order)
+//   1. position += velocity * dt + 0.5 * gravity * dt * dt (the OLD velocity),
+//      then velocity += gravity * dt: the exact update under constant
+//      acceleration, so the path is the same at any dt
 //   2. if position.y < floor_y while moving down (velocity.y < 0): bounce,
 //        position.y = floor_y + (floor_y - position.y) * restitution;
 //        velocity.y = -velocity.y * restitution

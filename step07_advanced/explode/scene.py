@@ -12,7 +12,8 @@ The two APIs take different routes to the same triangles, and the variant files 
 (:class:`ExplodeRoute`): OpenGL runs a geometry shader over the bunny's indexed triangles; WebGPU has no
 geometry stage, so it draws ``3·F`` attribute-less vertices and its vertex shader *pulls* the triangle's three
 corners from storage buffers. The time the shaders see is a material parameter (``explode_time``) that
-:class:`ExplodeSystem` advances by the app's fixed time step, so a picture depends on the frame number only.
+:class:`ExplodeSystem` advances by the app's fixed time step and hands over wrapped to one period (float64), so a
+picture depends on the frame number only and stays exact after any run time.
 """
 
 from __future__ import annotations
@@ -37,6 +38,7 @@ from gandalf_core.components import (
 )
 from gandalf_core.ecs import Component, System
 from gandalf_core.math import look_at_rotation
+from gandalf_core.render.frame import phase
 from gandalf_core.resources import MaterialData, MeshData, ResourceError
 from gandalf_core.resources.mesh_loader import load_mesh
 
@@ -145,7 +147,7 @@ def explode_material(shader: str, amount: float = AMOUNT, period: float = PERIOD
                      buffers: tuple[str, ...] = (), color=COLOR, name: str = "explode") -> MaterialData:
     """The exploding material: Blinn-Phong values plus ``amount``, ``period`` and the current ``explode_time``."""
     amount, period = validate_explosion(f"material '{name}'", amount, period)
-    params = {"explode_time": float(time), "amount": amount, "period": period, "specular": SPECULAR,
+    params = {"explode_time": phase(time, period), "amount": amount, "period": period, "specular": SPECULAR,
               "shininess": SHININESS}
     extra = {"buffers": tuple(buffers)} if buffers else {}
     return MaterialData(shader, color=color, params=params, cull="none", name=name, **extra)
@@ -191,7 +193,9 @@ class ExplodeSystem(System):
         if app is None:
             return
         built = app.renderer.resolve_material(material.material, self.scene.assets)
-        built.set_values({**built.data.uniform_values(), "explode_time": explode.time})
+        # The clock wrapped to one period in float64: float32 keeps it exact, and the wrap is invisible.
+        wrapped = phase(explode.time, built.data.params["period"])
+        built.set_values({**built.data.uniform_values(), "explode_time": wrapped})
 
 
 # --8<-- [end:clock]

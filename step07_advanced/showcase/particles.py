@@ -64,11 +64,12 @@ def random01(x: np.ndarray) -> np.ndarray:
 
 
 def particle_step_np(state: np.ndarray, params: SimParams) -> np.ndarray:
-    """The student's ``particle_step`` in float32: semi-implicit Euler, a floor bounce, life -= dt."""
+    """The student's ``particle_step`` in float32: the exact constant-gravity step, a floor bounce, life -= dt."""
     f = np.float32
     dt = f(params.dt)
-    velocity = state[:, 1, :3] + np.asarray(params.gravity, dtype=np.float32) * dt
-    position = state[:, 0, :3] + velocity * dt
+    gravity = np.asarray(params.gravity, dtype=np.float32)
+    position = state[:, 0, :3] + state[:, 1, :3] * dt + f(0.5) * gravity * (dt * dt)
+    velocity = state[:, 1, :3] + gravity * dt
     floor_y, e = f(params.floor_y), f(params.restitution)
     bounce = (position[:, 1] < floor_y) & (velocity[:, 1] < 0.0)
     position[bounce, 1] = floor_y + (floor_y - position[bounce, 1]) * e

@@ -1,9 +1,9 @@
-// Reference solution: one explicit time step of a particle (compute exercise) in GLSL.
+// Reference solution: one exact time step of a particle under constant gravity (compute exercise) in GLSL.
 
 Particle particle_step(Particle p, SimParams s) {
-    // Semi-implicit Euler: the new velocity moves the particle.
+    // Constant acceleration integrates exactly: x += v dt + g dt^2 / 2, v += g dt (the same path at any dt).
+    vec3 position = p.position.xyz + p.velocity.xyz * s.dt + 0.5 * s.gravity.xyz * (s.dt * s.dt);
     vec3 velocity = p.velocity.xyz + s.gravity.xyz * s.dt;
-    vec3 position = p.position.xyz + velocity * s.dt;
     if (position.y < s.floor_y && velocity.y < 0.0) {
         // Mirror the overshoot above the floor and reverse the vertical
         // speed, both scaled by the restitution.

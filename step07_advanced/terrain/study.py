@@ -84,7 +84,12 @@ def geometric_error(heights: np.ndarray, params, eye: np.ndarray, view_projectio
         if inside.any():
             worst_pixels = max(worst_pixels, float(np.linalg.norm(pixels[0][0] - pixels[1][0], axis=1)[inside].max()))
     return {"max_error_world": worst_world, "max_error_pixels": worst_pixels, "triangles": triangles,
-            "mean_segments": float(np.ceil(inner).mean())}
+            "mean_segments": float(np.ceil(inner).mean()),
+            # WebGPU's indirect draw: the 6·n² vertices of each patch (its snapped, zero-area triangles included).
+            "vertices_drawn": int((6 * np.ceil(inner) ** 2).sum()),
+            # Uniform tessellation's error falls as 1/L and its triangles grow as L², so error · √triangles is
+            # about constant along it: a rule that spends its triangles better scores lower.
+            "pixels_sqrt_triangles": worst_pixels * float(np.sqrt(triangles))}
 
 
 def _to_pixels(points: np.ndarray, view_projection: np.ndarray, size: tuple[int, int]):
@@ -152,14 +157,32 @@ def run(out: Path, backends: list[str], levels: tuple[int, ...], repeats: int, b
 
 def markdown(result: dict) -> str:
     backends = result["backends"]
-    head = ["levels", "triangles", "mean segments", "max error (world)", "max error (px)",
-            *(f"{b} ms/frame" for b in backends)]
+    head = ["levels", "triangles", "WebGPU vertices drawn", "mean segments", "max error (world)", "max error (px)",
+            "px · √triangles", *(f"{b} ms/frame" for b in backends)]
     lines = ["| " + " | ".join(head) + " |", "|" + "---:|" * len(head)]
     for r in result["rows"]:
-        cells = [r["levels"], str(r["triangles"]), f"{r['mean_segments']:.2f}", f"{r['max_error_world']:.4f}",
-                 f"{r['max_error_pixels']:.2f}", *(f"{r[f'{b}_ms']:.2f}" for b in backends)]
+        cells = [r["levels"], str(r["triangles"]), str(r["vertices_drawn"]), f"{r['mean_segments']:.2f}",
+                 f"{r['max_error_world']:.4f}", f"{r['max_error_pixels']:.2f}", f"{r['pixels_sqrt_triangles']:.0f}",
+                 *(f"{r[f'{b}_ms']:.2f}" for b in backends)]
         lines.append("| " + " | ".join(cells) + " |")
+    lod = [r for r in result["rows"] if not r["levels"].startswith("uniform")]
+    uniform = sorted((r for r in result["rows"] if r["levels"].startswith("uniform")), key=lambda r: r["triangles"])
+    for r in lod:
+        same = uniform_error_at(uniform, r["triangles"])
+        if same is not None:
+            lines.append(f"\n{r['levels']}: {r['max_error_pixels']:.2f} px with {r['triangles']} triangles; uniform "
+                         f"tessellation with as many triangles: {same:.2f} px (log-log between its neighbours).")
     return "\n".join(lines) + "\n"
+
+
+def uniform_error_at(uniform: list[dict], triangles: int) -> float | None:
+    """The uniform levels' on-screen error at ``triangles``, interpolated log-log between the two levels around it
+    (None outside their range)."""
+    for a, b in zip(uniform, uniform[1:]):
+        if a["triangles"] <= triangles <= b["triangles"]:
+            t = np.log(triangles / a["triangles"]) / np.log(b["triangles"] / a["triangles"])
+            return float(a["max_error_pixels"] * (b["max_error_pixels"] / a["max_error_pixels"]) ** t)
+    return None
 
 
 def plot(result: dict, path: Path) -> None:

@@ -1,9 +1,9 @@
 """Step 07 terrain, WebGPU variant: ``python -m step07_advanced.terrain.webgpu [--student]``.
 
 WebGPU has no tessellation stage. A compute pass (``tessellate.wgsl``) computes every patch's levels with the
-same exercise function ``tess_level`` and writes the patch's triangles into a storage buffer; the render
-pipeline draws that many vertices with no vertex buffer, and its vertex shader pulls each one by
-``vertex_index`` (vertex pulling).
+same exercise function ``tess_level`` and writes the patches' triangles into a storage buffer, and their count
+into an indirect draw's buffer; the render pipeline draws that many vertices (no more) with no vertex buffer, and
+its vertex shader pulls each one by ``vertex_index`` (vertex pulling).
 """
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ from .heightfield import encode_heights
 from .patches import TerrainParams
 from .scene import PARAMS, PART, build_scene, terrain_heights
 from .shaders import MATERIAL, SHADER_NAME, WGSL_RENDER, impl_shader_dir
-from .tessellate_wgpu import VERTEX_BUFFER, WGPUTessellator
+from .tessellate_wgpu import DRAW_BUFFER, VERTEX_BUFFER, WGPUTessellator
 
 
 class WGPUTerrain:
@@ -37,9 +37,9 @@ class WGPUTerrain:
 
     def mesh(self) -> MeshData:
         # --8<-- [start:mesh]
-        # Positions that are never uploaded: the shader reads no attribute, so the renderer just draws
-        # this many vertices, and the vertex shader fetches each from the compute pass's buffer.
-        return MeshData(np.zeros((self.tessellator.vertex_count, 3)), name="terrain (pulled)")
+        # Placeholder positions, never uploaded: the shader reads no attribute. The draw is indirect: the GPU
+        # takes the vertex count the compute pass wrote, and the vertex shader fetches each vertex from its buffer.
+        return MeshData(np.zeros((3, 3)), name="terrain (pulled)", indirect=DRAW_BUFFER)
         # --8<-- [end:mesh]
 
     def material(self, base: MaterialData) -> MaterialData:

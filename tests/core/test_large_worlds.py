@@ -6,6 +6,8 @@
 * A small cube moving past the camera at 1e6 units follows its path within 0.5 px (its drawn centre against the
   float64 projection of its centre).
 * The time uniform keeps 1/60 s steps exact to 1% at t = 3e7 s (a year is 3.15e7 s).
+* Objects, camera and lights scaled together from 1e-20 to 1e20 shade as at scale 1 (normals from the scaled
+  cofactor matrix, every vector normalised after dividing by its largest component): no channel more than 2/255.
 """
 
 from __future__ import annotations
@@ -126,6 +128,32 @@ def test_tiny_and_huge_objects_keep_their_normals(backend, s):
     scaled = render(backend, scaled_scene(s))[0]
     worst = int(np.abs(reference.astype(int) - scaled.astype(int)).max())
     assert worst <= 2, f"{backend}: a sphere of radius {s} shades differently from one of radius 1 (up to {worst}/255)"
+
+
+def specular_scene(s: float) -> Scene:
+    """The built-in Blinn-Phong sphere of radius s with a highlight, lit by a sun and a point light (no range: no
+    falloff), seen from 3 s away: every vector the shader normalises (normal, view, light, half) is of size s."""
+    scene = Scene("scaled, specular")
+    scene.assets.mesh("sphere", uv_sphere(1.0, 32, 16))
+    scene.assets.material("M", MaterialData("gandalf.blinn_phong", color=(0.9, 0.6, 0.3),
+                                            params={"shininess": 32.0, "specular": 0.5}))
+    scene.create_entity(TransformComponent(scale=s), MeshComponent("sphere"), MaterialComponent("M"))
+    sun = np.array([-2.0, 4.0, 3.0])
+    scene.create_entity(TransformComponent(sun * s, quaternion=look_at_rotation(sun, (0, 0, 0))),
+                        LightComponent("directional", intensity=1.0))
+    scene.create_entity(TransformComponent(np.array([1.5, 1.0, 2.0]) * s), LightComponent("point", intensity=0.8))
+    scene.create_entity(TransformComponent((0.0, 0.0, 3.0 * s)), CameraComponent(50.0, 0.1 * s, 10.0 * s))
+    return scene
+
+
+@pytest.mark.parametrize("s", [1e-20, 1e-12, 1e15, 1e20])
+def test_the_same_specular_picture_at_every_scale(backend, s):
+    """Measured before the scale-safe normalisation: 12.1 dB at 1e-20, 16.7 dB at 1e-12, 18.7 dB at 1e20."""
+    reference = render(backend, specular_scene(1.0))[0]
+    scaled = render(backend, specular_scene(s))[0]
+    worst = int(np.abs(reference.astype(int) - scaled.astype(int)).max())
+    assert worst <= 2, f"{backend}: the scene at scale {s} shades differently from scale 1 (up to {worst}/255)"
+    assert reference[..., :3].max() > 200, "the test scene should have a highlight"
 
 
 @pytest.mark.parametrize("near", [1e-21, 1e-3, 0.1, 7.0, 1e14])

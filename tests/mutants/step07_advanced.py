@@ -95,11 +95,14 @@ NORMAL_MAP = [
 ]
 PG, PW = "particle_step.glsl", "particle_step.wgsl"
 PARTICLE_STEP = [
-    ("explicit-euler", "moves with the old velocity (explicit instead of semi-implicit Euler)",
-     [(PG, "vec3 position = p.position.xyz + velocity * s.dt;",
-       "vec3 position = p.position.xyz + p.velocity.xyz * s.dt;"),
-      (PW, "var position = p.position.xyz + velocity * s.dt;",
-       "var position = p.position.xyz + p.velocity.xyz * s.dt;")]),
+    ("semi-implicit-euler", "moves with the new velocity and no g dt^2 / 2 (semi-implicit Euler: depends on dt)",
+     [(PG, "p.velocity.xyz * s.dt + 0.5 * s.gravity.xyz * (s.dt * s.dt);",
+       "(p.velocity.xyz + s.gravity.xyz * s.dt) * s.dt;"),
+      (PW, "p.velocity.xyz * s.dt + 0.5 * s.gravity.xyz * (s.dt * s.dt);",
+       "(p.velocity.xyz + s.gravity.xyz * s.dt) * s.dt;")]),
+    ("explicit-euler", "forgets the g dt^2 / 2 term (explicit Euler: depends on dt)",
+     [(PG, " + 0.5 * s.gravity.xyz * (s.dt * s.dt);", ";"),
+      (PW, " + 0.5 * s.gravity.xyz * (s.dt * s.dt);", ";")]),
     ("no-restitution", "bounces without losing speed",
      [(PG, "velocity.y = -velocity.y * s.restitution;", "velocity.y = -velocity.y;"),
       (PW, "velocity.y = -velocity.y * s.restitution;", "velocity.y = -velocity.y;")]),
@@ -116,8 +119,8 @@ PARTICLE_STEP = [
      [(PG, "vec4(velocity, p.velocity.w)", "vec4(velocity, 0.0)"),
       (PW, "vec4<f32>(velocity, p.velocity.w)", "vec4<f32>(velocity, 0.0)")]),
     ("gravity-sign", "subtracts gravity (which already points down)",
-     [(PG, "p.velocity.xyz + s.gravity.xyz * s.dt;", "p.velocity.xyz - s.gravity.xyz * s.dt;"),
-      (PW, "p.velocity.xyz + s.gravity.xyz * s.dt;", "p.velocity.xyz - s.gravity.xyz * s.dt;")]),
+     [(PG, "velocity = p.velocity.xyz + s.gravity.xyz * s.dt;", "velocity = p.velocity.xyz - s.gravity.xyz * s.dt;"),
+      (PW, "velocity = p.velocity.xyz + s.gravity.xyz * s.dt;", "velocity = p.velocity.xyz - s.gravity.xyz * s.dt;")]),
 ]
 for name, description, edits in NORMAL_MAP:
     shader_mutant(MUTANTS, STEP, "normal_map", name, description, edits)

@@ -1,7 +1,7 @@
 """The particle time-step study (``step07_advanced.showcase.study_particles``): not graded.
 
 The error of the numpy twin and of the OpenGL and WebGPU kernels (reference solution) against the exact projectile
-must follow semi-implicit Euler's ``|g| dt t / 2`` within 5 %, and fall as the step shrinks.
+is float32 rounding only (under 1e-3 m, under 1 % of semi-implicit Euler's ``|g| dt t / 2``) at every step.
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from step07_advanced.showcase import study_particles as study
 
 
 @pytest.mark.parametrize("backend", study.BACKENDS)
-def test_error_follows_the_euler_bound_and_falls_with_the_step(backend):
+def test_the_error_is_rounding_only_at_every_step(backend):
     state = study.launch_state(64)
     runner = study.open_runner(backend, state)
     try:
@@ -21,8 +21,7 @@ def test_error_follows_the_euler_bound_and_falls_with_the_step(backend):
     finally:
         runner.release()
     for row in rows:
-        assert row["max_error_m"] == pytest.approx(row["predicted_error_m"], rel=0.05), row
-    assert rows[0]["max_error_m"] > 3.5 * rows[1]["max_error_m"], rows
+        assert row["max_error_m"] <= min(1e-3, 0.01 * row["semi_implicit_error_m"]), row
 
 
 def test_main_writes_json_table_and_plot(tmp_path):

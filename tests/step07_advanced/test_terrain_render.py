@@ -18,7 +18,7 @@ import pytest
 from gandalf_core import Scene, TransformComponent
 from gandalf_core.app.cli import load_impl
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
-from gandalf_core.resources import MeshData, ResourceError, cube
+from gandalf_core.resources import ResourceError, cube
 from gandalf_tools.testing import psnr
 from step07_advanced import solutions
 from step07_advanced.terrain import opengl, patches, scene, webgpu
@@ -217,9 +217,15 @@ def test_webgpu_refuses_the_patch_mesh():
             app.run(frames=1)
 
 
-def test_the_pulled_mesh_has_one_slot_per_budgeted_vertex():
-    params = patches.TerrainParams(patches=2, max_level=3)
-    mesh = MeshData(np.zeros((params.patches ** 2 * 6 * params.budget ** 2, 3)))
-    with webgpu.create_app(headless=True, width=32, height=24, params=params) as app:
+def test_the_pulled_mesh_draws_only_what_the_level_of_detail_produced():
+    """The vertex buffer holds the whole budget; the indirect draw takes only the 6·n² vertices of each patch."""
+    params = patches.TerrainParams(patches=4, max_level=8, lod_scale=6.0)
+    eye = np.array([1.0, 3.0, 6.0])
+    with webgpu.create_app(headless=True, width=32, height=24, params=params, eye=eye) as app:
+        app.run(frames=1)
         backend = app.scene.get_system(scene.TessellationSystem).backend
-        assert backend.mesh().vertex_count == mesh.vertex_count == 2 * 2 * 6 * 9
+        assert backend.tessellator.vertex_count == 4 * 4 * 6 * 64
+        assert backend.mesh().indirect == webgpu.DRAW_BUFFER
+        outer, inner = patches.patch_levels(quantize(scene.terrain_heights()), params, eye)
+        drawn = backend.tessellator.read_draw_count()
+    assert drawn == int((6 * np.ceil(inner) ** 2).sum()) < backend.tessellator.vertex_count

@@ -13,7 +13,7 @@ from typing import Any
 import moderngl
 import numpy as np
 
-from ...resources import MaterialData
+from ...resources import MaterialData, ResourceError
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
 from ..base import Renderer
@@ -218,6 +218,10 @@ class OpenGLRenderer(Renderer):
         if shader.patch_vertices is not None:  # a tessellation program draws patches, never triangles
             self.ctx.patch_vertices = shader.patch_vertices
             vao.render(moderngl.PATCHES, vertices=mesh.count, instances=batch.count)
+        elif mesh.data.indirect is not None:  # the count a compute pass wrote; the instances are the batch's
+            buffer = self.indirect_buffer(mesh.name, mesh.data)
+            buffer.write(np.array([batch.count, 0, 0], dtype=np.uint32).tobytes(), offset=4)
+            vao.render_indirect(buffer, moderngl.TRIANGLES, count=1)
         else:
             vao.render(moderngl.TRIANGLES, vertices=mesh.count, instances=batch.count)
         # --8<-- [end:patches]
@@ -329,6 +333,10 @@ class OpenGLRenderer(Renderer):
         vao = self._vaos.get(key)
         if vao is None:
             names = mesh_attributes(shader.name, shader.attributes)
+            if names and mesh.data.indirect is not None:
+                raise ResourceError(f"mesh '{mesh.name}'", "indirect", f"shader '{shader.name}' reads the attributes "
+                                    f"{list(names)}, but an indirectly drawn mesh's vertices are placeholders: the "
+                                    "shader must pull its vertices itself (gl_VertexID)")
             content = []
             if names:
                 vbo, layout = self.meshes.vertex_buffer(mesh, names)

@@ -5,11 +5,8 @@
 
 fn gandalf_builtin_lighting(p: vec3<f32>, normal: vec3<f32>, albedo: vec3<f32>, specular: f32,
                             shininess: f32) -> vec3<f32> {
-    let n_length = length(normal);
-    let n = select(vec3<f32>(0.0, 1.0, 0.0), normal / max(n_length, 1e-12), n_length > 1e-12);
-    let to_eye = frame.camera_position.xyz - p;
-    let eye_distance = length(to_eye);
-    let v = select(n, to_eye / max(eye_distance, 1e-12), eye_distance > 1e-12);
+    let n = safe_normalize(normal, vec3<f32>(0.0, 1.0, 0.0));
+    let v = safe_normalize(frame.camera_position.xyz - p, n);
     var total = lights.ambient.rgb * albedo;
     let count = min(lights.count.x, i32(MAX_LIGHTS));
     for (var i = 0; i < count; i++) {
@@ -17,9 +14,7 @@ fn gandalf_builtin_lighting(p: vec3<f32>, normal: vec3<f32>, albedo: vec3<f32>, 
         let l = s.l;
         let radiance = s.radiance;
         let diffuse = max(dot(n, l), 0.0);
-        let h_sum = l + v;
-        let h_length = length(h_sum);
-        let h = select(n, h_sum / max(h_length, 1e-6), h_length > 1e-6);
+        let h = safe_normalize(l + v, n);
         let highlight = select(1.0, pow(max(dot(n, h), 0.0), shininess), shininess > 0.0);
         total += (albedo + specular * highlight) * radiance * diffuse;
     }

@@ -4,6 +4,24 @@
 // light and does not fall off. Used by the built-in lit material and by the lit shaders of steps 06 and 07.
 #include "frame.glsl"
 
+// Length and direction that neither underflow nor overflow: the vector is first divided by its largest
+// component (no squares of 1e-20 or 1e20), so a scene at any scale shades alike. safe_normalize returns
+// `fallback` for a zero, infinite or NaN vector (interpolated normals can cancel out).
+float safe_length(vec3 v) {
+    vec3 a = abs(v);
+    float s = max(max(a.x, a.y), a.z);
+    return s > 0.0 && s <= 3.4028235e38 ? s * length(v / s) : s;
+}
+vec3 safe_normalize(vec3 v, vec3 fallback) {
+    vec3 a = abs(v);
+    float s = max(max(a.x, a.y), a.z);
+    if (!(s > 0.0 && s <= 3.4028235e38)) {
+        return fallback;
+    }
+    vec3 u = v / s;
+    return u / length(u);
+}
+
 // --8<-- [start:light_at]
 // Unit direction towards the light and its radiance
 // (colour × intensity × distance falloff) at point p. A point light exactly
@@ -17,8 +35,8 @@ void light_at(int i, vec3 p, vec3 n, out vec3 l, out vec3 radiance) {
         return;
     }
     vec3 d = position.xyz - p;
-    float distance = length(d);
-    l = distance > 1e-6 ? d / distance : n;
+    float distance = safe_length(d);
+    l = safe_normalize(d, n);
     if (color.a > 0.0) {
         // Windowed inverse square (glTF's punctual lights): fades to exactly zero at the range.
         float x = distance / color.a;

@@ -4,6 +4,25 @@
 // light and does not fall off. Used by the built-in lit material and by the lit shaders of steps 06 and 07.
 #include "frame.wgsl"
 
+// Length and direction that neither underflow nor overflow: the vector is first divided by its largest
+// component (no squares of 1e-20 or 1e20), so a scene at any scale shades alike. safe_normalize returns
+// `fallback` for a zero, infinite or NaN vector (interpolated normals can cancel out).
+fn safe_length(v: vec3<f32>) -> f32 {
+    let a = abs(v);
+    let s = max(max(a.x, a.y), a.z);
+    let finite = s > 0.0 && s <= 3.4028235e38;
+    return select(s, s * length(v / select(1.0, s, finite)), finite);
+}
+fn safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
+    let a = abs(v);
+    let s = max(max(a.x, a.y), a.z);
+    if (!(s > 0.0 && s <= 3.4028235e38)) {
+        return fallback;
+    }
+    let u = v / s;
+    return u / length(u);
+}
+
 // --8<-- [start:light_at]
 struct LightSample {
     l: vec3<f32>,         // unit direction towards the light
@@ -19,8 +38,8 @@ fn light_at(i: i32, p: vec3<f32>, n: vec3<f32>) -> LightSample {
                                                       // vector towards the light
     }
     let d = position.xyz - p;
-    let distance = length(d);
-    let l = select(n, d / max(distance, 1e-6), distance > 1e-6);
+    let distance = safe_length(d);
+    let l = safe_normalize(d, n);
     var radiance = color.rgb;
     if (color.a > 0.0) {
         // Windowed inverse square (glTF's punctual lights): fades to exactly zero at the range.

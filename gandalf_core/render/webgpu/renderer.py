@@ -224,7 +224,11 @@ class WebGPURenderer(Renderer):
             rpass.set_vertex_buffer(slot, vbo)
             slot += 1
         rpass.set_vertex_buffer(slot, self._instance_buffer, batch.first_instance * INSTANCE_STRIDE)
-        if mesh.index_buffer is not None:
+        if mesh.data.indirect is not None:  # the count a compute pass wrote; the instances are the batch's
+            buffer = self.indirect_buffer(mesh.name, mesh.data)
+            self.device.queue.write_buffer(buffer, 4, np.array([batch.count, 0, 0], dtype=np.uint32).tobytes())
+            rpass.draw_indirect(buffer, 0)
+        elif mesh.index_buffer is not None:
             rpass.set_index_buffer(mesh.index_buffer, "uint32")
             rpass.draw_indexed(mesh.count, batch.count)
         else:
@@ -263,11 +267,10 @@ class WebGPURenderer(Renderer):
     def _shadow_pipeline(self, shader: WGPUShader, mesh: WGPUMesh) -> tuple[Any, tuple[str, ...]]:
         """The depth-only pipeline for ``mesh``'s position layout (one for all meshes of the same layout)."""
         attributes = mesh_has(mesh.data)
-        _vbo, layout = self.meshes.vertex_buffer(mesh, attributes)
         key = (shader.name, attributes)
         pipeline = self._pipelines.get(key)
         if pipeline is None:
-            buffers = [self._vertex_layout(layout), _INSTANCE_LAYOUT]
+            buffers = self._buffer_layouts(mesh, attributes)
             pipeline = self._pipelines[key] = self._checked(shader, mesh, lambda: self.device.create_render_pipeline(
                 layout=self.device.create_pipeline_layout(bind_group_layouts=[self.frame_layout]),
                 vertex={"module": shader.module, "entry_point": shader.vertex_entry, "buffers": buffers},
@@ -316,11 +319,18 @@ class WebGPURenderer(Renderer):
         key = (*data.pipeline_key(), material.layout_key, attributes, reverse_z, mirrored, self._target_format)
         pipeline = self._pipelines.get(key)
         if pipeline is None:
-            _vbo, layout = self.meshes.vertex_buffer(mesh, attributes)
-            buffers = [self._vertex_layout(layout), _INSTANCE_LAYOUT]
+            buffers = self._buffer_layouts(mesh, attributes)
             pipeline = self._pipelines[key] = self._checked(shader, mesh, lambda: self._create_pipeline(
                 shader, buffers, data, reverse_z, material.group_layout, mirrored))
         return pipeline, attributes
+
+    def _buffer_layouts(self, mesh: WGPUMesh, attributes: tuple[str, ...]) -> list[Any]:
+        """The vertex buffer layouts of a draw: the mesh's interleaved ``attributes`` (none for an indirectly drawn
+        mesh, whose shader pulls its vertices), then the instance rows."""
+        if not attributes:
+            return [_INSTANCE_LAYOUT]
+        _vbo, layout = self.meshes.vertex_buffer(mesh, attributes)
+        return [self._vertex_layout(layout), _INSTANCE_LAYOUT]
 
     def _sky_layout(self) -> Any:
         return self.shaders.group_layout(("texture-cube", "sampler"))

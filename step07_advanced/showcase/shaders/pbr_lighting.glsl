@@ -10,12 +10,6 @@ const float PI = 3.14159265358979;
 // (and D overflow float16 GPUs).
 const float MIN_ROUGHNESS = 0.045;
 
-// A unit vector from a possibly unnormalised (or zero) one: interpolated normals can cancel out.
-vec3 safe_normalize(vec3 v, vec3 fallback) {
-    float len = length(v);
-    return len > 1e-12 ? v / len : fallback;
-}
-
 // Direct light: sum over the lights of (diffuse_albedo/π + specular BRDF) · radiance · n·l, plus
 // the lights block's ambient. diffuse_albedo = base (1 - metallic)(1 - F): what is reflected
 // specularly is not scattered. `shadow` is the part of the shadow-casting light that reaches p

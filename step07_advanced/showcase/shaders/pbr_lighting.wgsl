@@ -10,12 +10,6 @@ const PI: f32 = 3.14159265358979;
 // (and D overflow float16 GPUs).
 const MIN_ROUGHNESS: f32 = 0.045;
 
-// A unit vector from a possibly unnormalised (or zero) one: interpolated normals can cancel out.
-fn safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
-    let len = length(v);
-    return select(fallback, v / max(len, 1e-12), len > 1e-12);
-}
-
 // Direct light: sum over the lights of (diffuse_albedo/π + specular BRDF) · radiance · n·l, plus
 // the lights block's ambient. diffuse_albedo = base (1 - metallic)(1 - F): what is reflected
 // specularly is not scattered. `shadow` is the part of the shadow-casting light that reaches p
