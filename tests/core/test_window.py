@@ -12,7 +12,10 @@ import pytest
 from gandalf_core import Application, ClearColorComponent, Scene
 from gandalf_core.app.window import display_available
 
-pytestmark = pytest.mark.skipif(not display_available(), reason="needs a display (run under xvfb-run)")
+# One xdist worker runs every window test (./run.sh test: --dist loadgroup), so no two windows overlap: an
+# obscured window's pixels are undefined to a read of its framebuffer.
+pytestmark = [pytest.mark.skipif(not display_available(), reason="needs a display (run under xvfb-run)"),
+              pytest.mark.xdist_group("windows")]
 
 
 def test_window_presents_the_frame(backend):
