@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import sys
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -25,6 +26,7 @@ from typing import Any
 
 from ..ecs import Scene
 from ..render.base import check_backend
+from ..render.capabilities import FLOOR, CapabilityError, Needs
 from ..resources.layout import BlockLayout
 from .application import Application
 from .extensions import extension
@@ -33,6 +35,10 @@ from .extensions import extension
 def load_impl(step_package: str, student: bool = False) -> ModuleType:
     """A step's ``exercises`` (the student's code) or ``solutions`` (the reference) package."""
     return importlib.import_module(f"{step_package}.{'exercises' if student else 'solutions'}")
+
+
+#: A launcher's exit status when this machine lacks what the part needs (it printed what to run instead).
+CAPABILITY_EXIT = 3
 
 
 def run_variant(create_app: Callable[..., Application], argv: list[str] | None = None, *, description: str = "",
@@ -50,7 +56,11 @@ def run_variant(create_app: Callable[..., Application], argv: list[str] | None =
                         help="after the last frame, save the scene to this USD file (.usda or .usdc)")
     args = parser.parse_args(argv)
     width, height = (int(x) for x in args.size.lower().split("x"))
-    app = create_app(headless=True if args.headless else None, student=args.student, width=width, height=height)
+    try:
+        app = create_app(headless=True if args.headless else None, student=args.student, width=width, height=height)
+    except CapabilityError as exc:  # one sentence, no traceback: what is missing and what to run instead
+        print(exc, file=sys.stderr)
+        return CAPABILITY_EXIT
     if args.editor:
         extension("editor")(app)
     frames = args.frames if args.frames is not None else (60 if app.headless else None)
@@ -146,7 +156,9 @@ class Part:
     (``include_impl``: the shaders ``#include`` files of the implementation's folder). ``build_scene(impl,
     **options)`` returns the scene (or scenes) where the API changes nothing else. A step of several runnable
     parts (step 05's concepts, step 07's techniques) names them in ``parts``, picked with ``--<option>``
-    (``default``, else the first); without ``build_scene`` its ``create_app`` is the default part's.
+    (``default``, else the first); without ``build_scene`` its ``create_app`` is the default part's. ``needs``
+    (:class:`~gandalf_core.render.capabilities.Needs`) is what the part needs beyond OpenGL 3.3 core and WebGPU's
+    default limits; the app checks it before building anything and the launcher says what to run instead.
     """
 
     package: str
@@ -156,6 +168,7 @@ class Part:
     parts: Sequence[str] = ()
     option: str = "concept"
     default: str | None = None
+    needs: Needs = FLOOR
 
     @property
     def step(self) -> str:
@@ -206,7 +219,10 @@ def launcher(part: Part, backend: str | Backend, description: str = "", *,
             return importlib.import_module(f"{part.package}.{default[0]}.{api}").create_app(
                 headless, student, width, height, impl=impl, **options)
         impl = impl if impl is not None else load_impl(part.step, student)
-        app = Application(api, width, height, title=title, headless=headless, fixed_dt=1 / 60)
+        try:
+            app = Application(api, width, height, title=title, headless=headless, fixed_dt=1 / 60, needs=part.needs)
+        except CapabilityError as exc:
+            raise exc.naming(f"`python -m {part.package}.{api}`", f"python -m {part.package}.{_other(api)}") from None
         try:
             folder = Path(importlib.import_module(part.step).__file__).resolve().parent / "shaders"
             build_shaders(app, part.shaders, folder,
@@ -232,6 +248,10 @@ def launcher(part: Part, backend: str | Backend, description: str = "", *,
     return create_app, main
 
 
+def _other(api: str) -> str:
+    return "webgpu" if api == "opengl" else "opengl"
+
+
 def available_parts(step_package: str, names: Sequence[str]) -> list[str]:
     """The sub-packages of ``names`` present in ``step_package`` (all of them in a full checkout)."""
     found = []
@@ -254,8 +274,6 @@ def launch_part(step_package: str, backend: str, names: Sequence[str], option: s
     the first of ``names``) and hands the other options (``--student``, ``--headless``, ...) to its variant's
     ``main(argv)``; ``--help`` prints this and the part's options.
     """
-    import sys
-
     names = available_parts(step_package, names)
     default = default if default in names else names[0]
     parser = argparse.ArgumentParser(
