@@ -14,6 +14,7 @@ No GPU library is imported here.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -140,21 +141,22 @@ class CapabilityError(RuntimeError):
     """A part needs what this implementation lacks: ``what`` (the part) needs ``missing``; ``offer`` is what the
     machine has; ``instead``, a command that runs here (the other API's variant), when known."""
 
-    def __init__(self, missing: str, offer: Offer, what: str = "this program", instead: str = "") -> None:
-        self.missing, self.offer, self.what, self.instead = missing, offer, what, instead
+    def __init__(self, missing: str, offer: Offer, what: str = "this program", instead: str = "",
+                 needs: Needs = FLOOR) -> None:
+        self.missing, self.offer, self.what, self.instead, self.needs = missing, offer, what, instead, needs
         go = f": run `{instead}` instead" if instead else ""
         super().__init__(f"{what} needs {missing} (this machine has {offer}){go}")
 
     def naming(self, what: str, instead: str = "") -> CapabilityError:
         """The same gap, told about the part ``what`` with the command to run ``instead``."""
-        return CapabilityError(self.missing, self.offer, what, instead)
+        return CapabilityError(self.missing, self.offer, what, instead, self.needs)
 
 
 def check(needs: Needs, offer: Offer, what: str = "this program") -> None:
     """Raise :class:`CapabilityError` when ``offer`` lacks something ``needs`` states."""
     gap = needs.missing(offer)
     if gap:
-        raise CapabilityError(gap, offer, what)
+        raise CapabilityError(gap, offer, what, needs=needs)
 
 
 def opengl_offer(ctx: Any) -> Offer:
@@ -191,4 +193,25 @@ def standalone_opengl(version: int, purpose: str, what: str = "this program") ->
             offer = opengl_offer(probe)
         finally:
             probe.release()
-        raise CapabilityError(Needs(opengl=version, opengl_for=purpose).required("opengl"), offer, what) from None
+        needs = Needs(opengl=version, opengl_for=purpose)
+        raise CapabilityError(needs.required("opengl"), offer, what, needs=needs) from None
+
+
+@functools.cache
+def offer_here(api: str) -> Offer:
+    """What this machine offers in ``api`` (the newest headless OpenGL context; the adapter the renderer picks),
+    probed once per process."""
+    if api == "opengl":
+        from .opengl.renderer import _standalone_context
+
+        ctx = _standalone_context()
+        try:
+            return opengl_offer(ctx)
+        finally:
+            ctx.release()
+    import wgpu
+
+    from .webgpu.device import _quiet_runtime_dir
+
+    _quiet_runtime_dir()
+    return webgpu_offer(wgpu.gpu.request_adapter_sync(power_preference="high-performance"))
