@@ -220,9 +220,13 @@ def launcher(part: Part, backend: str | Backend, description: str = "", *,
                 headless, student, width, height, impl=impl, **options)
         impl = impl if impl is not None else load_impl(part.step, student)
         try:
-            app = Application(api, width, height, title=title, headless=headless, fixed_dt=1 / 60, needs=part.needs)
-        except CapabilityError as exc:
+            return _build(impl, headless, width, height, options)
+        except CapabilityError as exc:  # named after the part, with the other API's variant to run instead
             raise exc.naming(f"`python -m {part.package}.{api}`", f"python -m {part.package}.{_other(api)}") from None
+
+    def _build(impl: ModuleType, headless: bool | None, width: int, height: int, options: dict[str, Any]
+               ) -> Application:
+        app = Application(api, width, height, title=title, headless=headless, fixed_dt=1 / 60, needs=part.needs)
         try:
             folder = Path(importlib.import_module(part.step).__file__).resolve().parent / "shaders"
             build_shaders(app, part.shaders, folder,

@@ -148,8 +148,10 @@ class CapabilityError(RuntimeError):
         super().__init__(f"{what} needs {missing} (this machine has {offer}){go}")
 
     def naming(self, what: str, instead: str = "") -> CapabilityError:
-        """The same gap, told about the part ``what`` with the command to run ``instead``."""
-        return CapabilityError(self.missing, self.offer, what, instead, self.needs)
+        """The same gap told about ``what`` (unless the error already names a piece of it) with the command to
+        run ``instead``."""
+        return CapabilityError(self.missing, self.offer, what if self.what == "this program" else self.what,
+                               self.instead or instead, self.needs)
 
 
 def check(needs: Needs, offer: Offer, what: str = "this program") -> None:
