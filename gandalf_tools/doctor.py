@@ -71,7 +71,9 @@ def webgpu_report(all_limits: bool = False) -> tuple[list[str], Offer | None]:
         return [f"  no adapter: {exc}"], None
     if picked is None:
         return ["  no adapter: install a Vulkan driver (on Debian: mesa-vulkan-drivers libvulkan1)"], None
-    lines = []
+    from wgpu.backends import wgpu_native
+
+    lines = [f"  wgpu-native {'.'.join(str(x) for x in wgpu_native.lib_version_info)}"]
     for adapter in adapters:
         info = adapter.info
         mark = "*" if (info["device"], info["backend_type"]) == (picked.info["device"], picked.info["backend_type"]) \
