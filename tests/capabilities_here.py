@@ -18,7 +18,8 @@ NOT_HERE = "gandalf_not_here"
 
 def not_here(excinfo: pytest.ExceptionInfo[BaseException]) -> str:
     """The reason the test that raised ``excinfo`` cannot run on this machine, or "" for a real failure."""
-    from gandalf_core.render.capabilities import CapabilityError, offer_here
+    from gandalf_core.render.capabilities import CapabilityError
+    from gandalf_core.render.probe import offer_here
 
     exc = excinfo.value
     if not isinstance(exc, CapabilityError):
@@ -44,6 +45,7 @@ def mark_not_here(item: pytest.Item, call: pytest.CallInfo[None], report: pytest
 def skip_unless_here(part: str, api: str) -> None:
     """End the test, not graded here, when this machine cannot run ``part`` (``step07_advanced.filter``) in
     ``api``: for tests that use a part's pieces without its launcher."""
-    from gandalf_core.render.capabilities import check, offer_here
+    from gandalf_core.render.capabilities import check
+    from gandalf_core.render.probe import offer_here
 
     check(importlib.import_module(f"{part}.scene").PART.needs, offer_here(api), part)

@@ -14,7 +14,6 @@ No GPU library is imported here.
 
 from __future__ import annotations
 
-import functools
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -198,22 +197,3 @@ def standalone_opengl(version: int, purpose: str, what: str = "this program") ->
         needs = Needs(opengl=version, opengl_for=purpose)
         raise CapabilityError(needs.required("opengl"), offer, what, needs=needs) from None
 
-
-@functools.cache
-def offer_here(api: str) -> Offer:
-    """What this machine offers in ``api`` (the newest headless OpenGL context; the adapter the renderer picks),
-    probed once per process."""
-    if api == "opengl":
-        from .opengl.renderer import _standalone_context
-
-        ctx = _standalone_context()
-        try:
-            return opengl_offer(ctx)
-        finally:
-            ctx.release()
-    import wgpu
-
-    from .webgpu.device import _quiet_runtime_dir
-
-    _quiet_runtime_dir()
-    return webgpu_offer(wgpu.gpu.request_adapter_sync(power_preference="high-performance"))

@@ -13,13 +13,8 @@ from capabilities_here import not_here
 
 from gandalf_core import Application
 from gandalf_core.app.cli import CAPABILITY_EXIT, Part, launcher
-from gandalf_core.render.capabilities import (
-    WEBGPU_DEFAULT_LIMITS,
-    CapabilityError,
-    Needs,
-    Offer,
-    offer_here,
-)
+from gandalf_core.render.capabilities import WEBGPU_DEFAULT_LIMITS, CapabilityError, Needs, Offer
+from gandalf_core.render.probe import offer_here
 from gandalf_tools.tour import REPO_ROOT
 from step01_window.scene import build_scene
 
