@@ -3,7 +3,8 @@
 ``python -m gandalf_tools.tour`` opens each step in a window when a display exists; headless (or with
 ``--headless``) it renders every step offscreen and writes ``OUT/stepNN_<topic>-<backend>.png``; a step whose
 package lists ``TECHNIQUES`` (step 07) or ``CONCEPTS`` (step 05) gets one picture pair per sub-package,
-``OUT/stepNN_<topic>-<technique>-<backend>.png``.
+``OUT/stepNN_<topic>-<technique>-<backend>.png``. A part this machine cannot run in one API (see
+``python -m gandalf_tools.doctor``) is named with what it needs, and the tour goes on.
 Steps are found by folder name next to ``gandalf_core`` at run time (the framework never imports a
 step statically).
 """
@@ -19,6 +20,7 @@ from pathlib import Path
 
 from gandalf_core.app.cli import plain
 from gandalf_core.render.base import BACKENDS
+from gandalf_core.render.capabilities import CapabilityError
 
 from .testing import LocalDifferences, psnr
 
@@ -81,15 +83,18 @@ def main(argv: list[str] | None = None) -> int:
     for part in (p for step in steps for p in step_parts(step)):
         images = {}
         for backend in args.backends:
-            if headless:
-                start = time.perf_counter()
-                path = render_step(part, backend, out_dir, width, height, args.frames)
-                images[backend] = path
-                print(f"{part:<26} {backend:<7} -> {path}  ({time.perf_counter() - start:.2f} s)")
-            else:
-                print(f"{part} ({backend}): close the window to go on")
-                with importlib.import_module(f"{part}.{backend}").create_app(headless=False) as app:
-                    app.run()
+            try:
+                if headless:
+                    start = time.perf_counter()
+                    path = render_step(part, backend, out_dir, width, height, args.frames)
+                    images[backend] = path
+                    print(f"{part:<26} {backend:<7} -> {path}  ({time.perf_counter() - start:.2f} s)")
+                else:
+                    print(f"{part} ({backend}): close the window to go on")
+                    with importlib.import_module(f"{part}.{backend}").create_app(headless=False) as app:
+                        app.run()
+            except CapabilityError as exc:  # this machine lacks what the part needs: say so and go on
+                print(f"{part:<26} {backend:<7} -> not here: {exc}")
         if len(images) == 2:
             verdict, problems = _agreement(part, *images.values())
             print(f"{part:<26} OpenGL vs WebGPU: {verdict}")

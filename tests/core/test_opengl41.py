@@ -64,3 +64,14 @@ def test_every_opengl_launcher_runs_or_names_its_need_under_opengl41(override_ho
     problems = [p for module, run in runs.items() if (p := _problem(module, run, modules[module]))]
     assert not problems, "\n".join(problems)
     assert any(run.returncode == CAPABILITY_EXIT for run in runs.values()), "no part needs more than OpenGL 4.1?"
+
+
+def test_the_tour_names_what_a_part_needs_and_goes_on(override_honoured, tmp_path):
+    command = [sys.executable, "-m", "gandalf_tools.tour", "--headless", "--size", "32x24", "--frames", "1", "--out",
+               str(tmp_path), "--steps", "step07_advanced.filter", "step01_window", "--backends", "opengl"]
+    run = subprocess.run(command, cwd=REPO_ROOT, env={**os.environ, **OVERRIDE}, capture_output=True, text=True,
+                         timeout=300)
+    assert run.returncode == 0 and "Traceback" not in run.stderr, run.stdout + run.stderr
+    assert "step07_advanced.filter     opengl  -> not here: `python -m step07_advanced.filter.opengl` needs OpenGL 4.3" \
+        in run.stdout, run.stdout
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["step01_window-opengl.png"]
