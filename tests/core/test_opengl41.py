@@ -72,6 +72,6 @@ def test_the_tour_names_what_a_part_needs_and_goes_on(override_honoured, tmp_pat
     run = subprocess.run(command, cwd=REPO_ROOT, env={**os.environ, **OVERRIDE}, capture_output=True, text=True,
                          timeout=300)
     assert run.returncode == 0 and "Traceback" not in run.stderr, run.stdout + run.stderr
-    assert "step07_advanced.filter     opengl  -> not here: `python -m step07_advanced.filter.opengl` needs OpenGL 4.3" \
-        in run.stdout, run.stdout
+    said = "step07_advanced.filter     opengl  -> not here: `python -m step07_advanced.filter.opengl` needs OpenGL 4.3"
+    assert said in run.stdout, run.stdout
     assert sorted(p.name for p in tmp_path.iterdir()) == ["step01_window-opengl.png"]
