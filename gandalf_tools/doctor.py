@@ -117,8 +117,11 @@ def table(opengl: Offer | None, webgpu: Offer | None) -> list[str]:
             rows.append(f"  {part:<{width}}{'runs':<20}runs")
         else:
             rows.append(f"  {part:<{width}}{gl if gl == 'runs' else '':<20}{wg if wg == 'runs' else ''}")
-            rows += [f"  {'':<{width}}{api}: {text}" for api, text in (("OpenGL", gl), ("WebGPU", wg))
-                     if text != "runs"]
+            for api, text in (("OpenGL", gl), ("WebGPU", wg)):
+                if text != "runs":  # what is missing, then (on its own line) where to go instead
+                    need, _, instead = text.partition(" -> ")
+                    rows.append(f"      {api}: {need}")
+                    rows += [f"      {'':<{len(api)}}  {instead} instead"] if instead else []
     return rows
 
 
