@@ -4,6 +4,7 @@ this folder on the path)."""
 
 from __future__ import annotations
 
+import argparse
 import json
 import math
 import resource
@@ -37,6 +38,17 @@ def run_child(script: str, cfg: dict[str, Any], failure: dict[str, Any]) -> dict
         return None
     print(lines[-1], flush=True)
     return json.loads(lines[-1])
+
+
+def parse_or_answer(parser: argparse.ArgumentParser, argv: list[str] | None, run: Any) -> argparse.Namespace | None:
+    """Parse the command line, with the hidden ``--child CFG`` through which :func:`run_child` hands a child its
+    configuration. In such a child: print ``run(cfg)`` as one JSON line and return None (the child is done)."""
+    parser.add_argument("--child", default=None, help=argparse.SUPPRESS)
+    args = parser.parse_args(argv)
+    if args.child is None:
+        return args
+    print(json.dumps(run(json.loads(args.child))), flush=True)
+    return None
 
 
 def rss_mb() -> float:

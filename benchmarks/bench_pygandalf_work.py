@@ -37,6 +37,7 @@ import time
 from pathlib import Path
 from typing import Any
 
+import bench_common
 from bench_common import BACKENDS, PAPER_SCENES, ROOT, SHADERS, grid_positions, rss_mb, run_child, sky_files
 
 SCENES = PAPER_SCENES
@@ -200,10 +201,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--quick", action="store_true",
                         help="smoke run: scene1,scene5, 1 repeat, 5 frames, 256² sky, 320x180, offscreen")
     parser.add_argument("--png", default=None, metavar="DIR", help="save each run's last frame here")
-    parser.add_argument("--child", default=None, help=argparse.SUPPRESS)
-    args = parser.parse_args(argv)
-    if args.child is not None:
-        print(json.dumps(run_config(json.loads(args.child))), flush=True)
+    args = bench_common.parse_or_answer(parser, argv, run_config)
+    if args is None:  # a child: it printed its record
         return 0
 
     quick = args.quick

@@ -55,6 +55,7 @@ import time
 from pathlib import Path
 from typing import Any
 
+import bench_common
 import numpy as np
 from bench_common import BACKENDS, PAPER_SCENES, ROOT, SHADERS, grid_positions, rss_mb, run_child
 
@@ -354,11 +355,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--profile", type=int, default=0, metavar="N",
                         help="cProfile the measured frames and print the top N functions to stderr")
     parser.add_argument("--png", default=None, metavar="DIR", help="save each configuration's last frame here")
-    parser.add_argument("--child", default=None, help=argparse.SUPPRESS)
-    args = parser.parse_args(argv)
-
-    if args.child is not None:
-        print(json.dumps(run_config(json.loads(args.child))), flush=True)
+    args = bench_common.parse_or_answer(parser, argv, run_config)
+    if args is None:  # a child: it printed its record
         return 0
 
     default_scenes = "scene1,scene5,cubes1k" if args.quick else ",".join(SCENES)

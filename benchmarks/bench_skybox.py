@@ -14,12 +14,12 @@ the images are decoded).
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 import time
 from pathlib import Path
 from typing import Any
 
+import bench_common
 from bench_common import HERE, ROOT, rss_mb, run_child, sky_files
 
 
@@ -88,10 +88,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--window", default="1280x720", help="WIDTHxHEIGHT of the frame (default 1280x720)")
     parser.add_argument("--frames", type=int, default=10, help="frames timed after the first (default 10)")
     parser.add_argument("--cache", default="/tmp/gandalf_bench_sky", help="folder for the generated PNG faces")
-    parser.add_argument("--child", default=None, help=argparse.SUPPRESS)
-    args = parser.parse_args(argv)
-    if args.child is not None:
-        print(json.dumps(child(json.loads(args.child))), flush=True)
+    args = bench_common.parse_or_answer(parser, argv, child)
+    if args is None:  # a child: it printed its record
         return 0
     width, height = (int(v) for v in args.window.lower().split("x"))
     print(f"# writing/reading six {args.size}² faces in {args.cache}", file=sys.stderr, flush=True)

@@ -33,8 +33,7 @@ def render(width: int = 64, height: int = 48, color: tuple = COLOR) -> np.ndarra
     return lesson.image(pixels, width, height, bottom_up=True)  # OpenGL's rows start at the bottom
 
 
-def main(argv: list[str] | None = None) -> int:
-    return lesson.main(render, __doc__, "clear_gl.png", argv=argv)
+main = lesson.command(render, __doc__, "clear_gl.png")
 
 
 if __name__ == "__main__":

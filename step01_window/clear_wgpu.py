@@ -40,8 +40,7 @@ def render(width: int = 64, height: int = 48, color: tuple = COLOR) -> np.ndarra
     return lesson.image(pixels, width, height, bottom_up=False)  # rows top-down
 
 
-def main(argv: list[str] | None = None) -> int:
-    return lesson.main(render, __doc__, "clear_wgpu.png", argv=argv)
+main = lesson.command(render, __doc__, "clear_wgpu.png")
 
 
 if __name__ == "__main__":

@@ -7,9 +7,14 @@ of the persistence layer, and a file names classes, never code.
 
 from __future__ import annotations
 
-from . import exercises, solutions
+from gandalf_core.app.cli import load_impl
+
+from . import exercises
 from .components import HueCycleComponent
+
+# The reference (the exercises again where a student's release has no solutions/).
+_reference = load_impl(__package__)
 
 COMPONENTS = {HueCycleComponent: ("hue", "speed", "saturation", "value")}
 # The student's system and the reference alike: a scene saved from either comes back with it.
-SYSTEMS = {exercises.HueCycleSystem: (), solutions.HueCycleSystem: ()}
+SYSTEMS = {exercises.HueCycleSystem: (), _reference.HueCycleSystem: ()}

@@ -7,8 +7,13 @@ of the persistence layer, and a file names classes, never code.
 
 from __future__ import annotations
 
-from . import exercises, solutions
+from gandalf_core.app.cli import load_impl
+
+from . import exercises
 from .components import NGonComponent
 
+# The reference (the exercises again where a student's release has no solutions/).
+_reference = load_impl(__package__)
+
 COMPONENTS = {NGonComponent: ("sides", "radius")}
-SYSTEMS = {exercises.NGonSystem: (), solutions.NGonSystem: ()}
+SYSTEMS = {exercises.NGonSystem: (), _reference.NGonSystem: ()}

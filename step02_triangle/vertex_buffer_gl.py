@@ -57,8 +57,7 @@ def render(width: int = 64, height: int = 64) -> np.ndarray:
     return lesson.image(pixels, width, height, bottom_up=True)
 
 
-def main(argv: list[str] | None = None) -> int:
-    return lesson.main(render, __doc__, "vertex_buffer_gl.png", argv=argv)
+main = lesson.command(render, __doc__, "vertex_buffer_gl.png")
 
 
 if __name__ == "__main__":

@@ -62,8 +62,7 @@ def render(width: int = 64, height: int = 64) -> np.ndarray:
     return lesson.image(pixels, width, height, bottom_up=False)
 
 
-def main(argv: list[str] | None = None) -> int:
-    return lesson.main(render, __doc__, "vertex_buffer_wgpu.png", argv=argv)
+main = lesson.command(render, __doc__, "vertex_buffer_wgpu.png")
 
 
 if __name__ == "__main__":

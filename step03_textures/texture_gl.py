@@ -46,17 +46,13 @@ def render(width: int = 64, height: int = 64) -> np.ndarray:
         sampler.use(location=0)  # ... and the sampler on the same unit
         program["u_texture"] = 0  # the shader's sampler2D reads unit 0
         # --8<-- [end:texture]
-        fbo = ctx.framebuffer(color_attachments=[ctx.texture((width, height), 4)])
-        fbo.use()
-        ctx.vertex_array(program, []).render(moderngl.TRIANGLE_STRIP, vertices=4)
-        pixels = fbo.read(components=4)
+        quad = ctx.vertex_array(program, [])
+        return lesson.gl_frame(ctx, width, height, lambda: quad.render(moderngl.TRIANGLE_STRIP, vertices=4))
     finally:
         ctx.release()
-    return lesson.image(pixels, width, height, bottom_up=True)
 
 
-def main(argv: list[str] | None = None) -> int:
-    return lesson.main(render, __doc__, "texture_gl.png", argv=argv)
+main = lesson.command(render, __doc__, "texture_gl.png")
 
 
 if __name__ == "__main__":

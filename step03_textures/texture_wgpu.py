@@ -48,24 +48,18 @@ def render(width: int = 64, height: int = 64) -> np.ndarray:
         {"binding": 1, "resource": sampler},  # the shader's s_sampler
     ])
     # --8<-- [end:texture]
-    target = device.create_texture(size=(width, height, 1), format="rgba8unorm",
-                                   usage=wgpu.TextureUsage.RENDER_ATTACHMENT | wgpu.TextureUsage.COPY_SRC)
-    encoder = device.create_command_encoder()
-    rpass = encoder.begin_render_pass(color_attachments=[{
-        "view": target.create_view(), "clear_value": (0, 0, 0, 1), "load_op": "clear", "store_op": "store"}])
-    rpass.set_pipeline(pipeline)
-    rpass.set_bind_group(0, bind_group)
-    rpass.draw(4)
-    rpass.end()
-    device.queue.submit([encoder.finish()])
-    pixels = device.queue.read_texture({"texture": target}, {"bytes_per_row": 4 * width, "rows_per_image": height},
-                                       (width, height, 1))
+
+    def draw(rpass) -> None:
+        rpass.set_pipeline(pipeline)
+        rpass.set_bind_group(0, bind_group)  # the texture and sampler
+        rpass.draw(4)
+
+    picture = lesson.wgpu_frame(device, width, height, draw)
     device.destroy()
-    return lesson.image(pixels, width, height, bottom_up=False)
+    return picture
 
 
-def main(argv: list[str] | None = None) -> int:
-    return lesson.main(render, __doc__, "texture_wgpu.png", argv=argv)
+main = lesson.command(render, __doc__, "texture_wgpu.png")
 
 
 if __name__ == "__main__":

@@ -7,9 +7,14 @@ Nothing here imports USD: the lessons stay free of the persistence layer, and a 
 
 from __future__ import annotations
 
-from . import exercises, solutions
+from gandalf_core.app.cli import load_impl
+
+from . import exercises
 from .components import LookAtComponent, OrbitCameraComponent
 from .systems import CameraSwitchSystem, LookAtSystem
+
+# The reference (the exercises again where a student's release has no solutions/).
+_reference = load_impl(__package__)
 
 COMPONENTS = {
     OrbitCameraComponent: ("target", "distance", "yaw", "pitch", "sensitivity", "zoom_factor", "min_pitch",
@@ -19,8 +24,8 @@ COMPONENTS = {
 }
 SYSTEMS = {
     exercises.OrbitCameraSystem: (),
-    solutions.OrbitCameraSystem: (),
+    _reference.OrbitCameraSystem: (),
     LookAtSystem: ("look_at",),  # keeps its look_at function, one of FUNCTIONS
     CameraSwitchSystem: (),
 }
-FUNCTIONS = (exercises.look_at, solutions.look_at)
+FUNCTIONS = tuple(dict.fromkeys((exercises.look_at, _reference.look_at)))

@@ -48,28 +48,25 @@ def render(width: int = 64, height: int = 64) -> np.ndarray:
     try:
         program = ctx.program(vertex_shader=VERTEX_SHADER, fragment_shader=FRAGMENT_SHADER)
         vao = ctx.vertex_array(program, [(ctx.buffer(TRIANGLE.astype("f4").tobytes()), "3f", "a_position")])
-        fbo = ctx.framebuffer(color_attachments=[ctx.texture((width, height), 4)],
-                              depth_attachment=ctx.depth_renderbuffer((width, height)))
-        fbo.use()
         ctx.enable(moderngl.DEPTH_TEST)
-        ctx.clear(0.0, 0.0, 0.0, 1.0, depth=1.0)
-        # --8<-- [start:draws]
-        for translation, color in DRAWS:
-            model = np.eye(4)
-            model[:3, 3] = translation
-            mvp = perspective(width / height) @ model  # float64 on the CPU
-            program["u_mvp"].write(mvp.T.astype("f4").tobytes())  # column-major, like GLSL's mat4
-            program["u_color"].value = color
-            vao.render(moderngl.TRIANGLES)  # uses the values set just now
-        # --8<-- [end:draws]
-        pixels = fbo.read(components=4)
+
+        def draw() -> None:
+            # --8<-- [start:draws]
+            for translation, color in DRAWS:
+                model = np.eye(4)
+                model[:3, 3] = translation
+                mvp = perspective(width / height) @ model  # float64 on the CPU
+                program["u_mvp"].write(mvp.T.astype("f4").tobytes())  # column-major, like GLSL's mat4
+                program["u_color"].value = color
+                vao.render(moderngl.TRIANGLES)  # uses the values set just now
+            # --8<-- [end:draws]
+
+        return lesson.gl_frame(ctx, width, height, draw, depth=True)
     finally:
         ctx.release()
-    return lesson.image(pixels, width, height, bottom_up=True)
 
 
-def main(argv: list[str] | None = None) -> int:
-    return lesson.main(render, __doc__, "uniforms_gl.png", argv=argv)
+main = lesson.command(render, __doc__, "uniforms_gl.png")
 
 
 if __name__ == "__main__":

@@ -60,31 +60,20 @@ def render(width: int = 64, height: int = 64) -> np.ndarray:
         bind_groups.append(device.create_bind_group(layout=pipeline.get_bind_group_layout(0),
                                                     entries=[{"binding": 0, "resource": {"buffer": buffer}}]))
     # --8<-- [end:draws]
-    usage = wgpu.TextureUsage.RENDER_ATTACHMENT
-    target = device.create_texture(size=(width, height, 1), format="rgba8unorm",
-                                   usage=usage | wgpu.TextureUsage.COPY_SRC)
-    depth = device.create_texture(size=(width, height, 1), format="depth24plus", usage=usage)
-    encoder = device.create_command_encoder()
-    rpass = encoder.begin_render_pass(
-        color_attachments=[{"view": target.create_view(), "clear_value": (0, 0, 0, 1),
-                            "load_op": "clear", "store_op": "store"}],
-        depth_stencil_attachment={"view": depth.create_view(), "depth_clear_value": 1.0,
-                                  "depth_load_op": "clear", "depth_store_op": "store"})
-    rpass.set_pipeline(pipeline)
-    rpass.set_vertex_buffer(0, vertices)
-    for bind_group in bind_groups:
-        rpass.set_bind_group(0, bind_group)  # this draw's uniforms
-        rpass.draw(3)
-    rpass.end()
-    device.queue.submit([encoder.finish()])
-    pixels = device.queue.read_texture({"texture": target}, {"bytes_per_row": 4 * width, "rows_per_image": height},
-                                       (width, height, 1))
+
+    def draw(rpass) -> None:
+        rpass.set_pipeline(pipeline)
+        rpass.set_vertex_buffer(0, vertices)
+        for bind_group in bind_groups:
+            rpass.set_bind_group(0, bind_group)  # this draw's uniforms
+            rpass.draw(3)
+
+    picture = lesson.wgpu_frame(device, width, height, draw, depth=True)
     device.destroy()
-    return lesson.image(pixels, width, height, bottom_up=False)
+    return picture
 
 
-def main(argv: list[str] | None = None) -> int:
-    return lesson.main(render, __doc__, "uniforms_wgpu.png", argv=argv)
+main = lesson.command(render, __doc__, "uniforms_wgpu.png")
 
 
 if __name__ == "__main__":

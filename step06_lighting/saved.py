@@ -7,9 +7,14 @@ of the persistence layer, and a file names classes, never code.
 
 from __future__ import annotations
 
-from . import exercises, solutions
+from gandalf_core.app.cli import load_impl
+
+from . import exercises
 from .lights.components import OrbitComponent
 from .lights.systems import OrbitSystem
 
+# The reference (the exercises again where a student's release has no solutions/).
+_reference = load_impl(__package__)
+
 COMPONENTS = {OrbitComponent: ("center", "radius", "angle", "speed")}
-SYSTEMS = {OrbitSystem: (), exercises.LightCollectionSystem: (), solutions.LightCollectionSystem: ()}
+SYSTEMS = {OrbitSystem: (), exercises.LightCollectionSystem: (), _reference.LightCollectionSystem: ()}

@@ -17,7 +17,9 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import importlib.util
 import sys
+import traceback
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -32,9 +34,57 @@ from .application import Application
 from .extensions import extension
 
 
+def has_solutions(step_package: str) -> bool:
+    """Whether ``step_package`` holds its reference ``solutions`` (a student's release does not)."""
+    try:
+        return importlib.util.find_spec(f"{step_package}.solutions") is not None
+    except ModuleNotFoundError:  # not a step package
+        return False
+
+
 def load_impl(step_package: str, student: bool = False) -> ModuleType:
-    """A step's ``exercises`` (the student's code) or ``solutions`` (the reference) package."""
-    return importlib.import_module(f"{step_package}.{'exercises' if student else 'solutions'}")
+    """A step's ``exercises`` (the student's code) or ``solutions`` (the reference) package.
+
+    Where the step has no ``solutions`` (a student's release), the reference is the student's ``exercises``.
+    """
+    if not student and has_solutions(step_package):
+        return importlib.import_module(f"{step_package}.solutions")
+    return importlib.import_module(f"{step_package}.exercises")
+
+
+def stop_on_stub(prog: str, run: Callable[[], int]) -> int:
+    """``run()``; where it stops on an untouched exercise stub, print one sentence naming the exercise and its file
+    (no traceback) and return 1: a command line's way to say which exercise to write first."""
+    try:
+        return run()
+    except NotImplementedError as error:
+        sentence = unfinished_exercise(error)
+        if sentence is None:
+            raise
+        print(f"{prog}: {sentence}", file=sys.stderr)
+        return 1
+
+
+def unfinished_exercise(error: BaseException) -> str | None:
+    """One sentence naming the exercise and its file when ``error`` is an untouched stub's ``NotImplementedError``
+    (raised in a step's ``exercises/`` folder); None for any other error."""
+    if not isinstance(error, NotImplementedError):
+        return None
+    stub = None
+    for frame, _ in traceback.walk_tb(error.__traceback__):
+        path = Path(frame.f_code.co_filename)
+        if "exercises" in path.parts[:-1]:
+            stub = (path, frame.f_code.co_name)
+    if stub is None:
+        return None
+    path, function = stub
+    parts = path.parts
+    step = next((i for i in range(parts.index("exercises") - 1, -1, -1) if parts[i].startswith("step")), None)
+    shown = "/".join(parts[step:]) if step is not None else str(path)
+    name = str(error).removeprefix("exercise:").strip() or function
+    tests = f"tests/{parts[step]}" if step is not None else "tests"
+    return (f"the exercise {name} is still a stub: write it in {shown} (its docstring says what it must do), "
+            f"then run this again; 'python -m gandalf_tools.grading {tests}' grades it.")
 
 
 #: A launcher's exit status when this machine lacks what the part needs (it printed what to run instead).
@@ -49,7 +99,8 @@ def run_variant(create_app: Callable[..., Application], argv: list[str] | None =
     parser.add_argument("--headless", action="store_true", help="render offscreen even when a display exists")
     parser.add_argument("--frames", type=int, default=None, help="stop after this many frames")
     parser.add_argument("--out", default=None, help="save the last frame to this PNG file")
-    parser.add_argument("--student", action="store_true", help="run your exercises/ instead of solutions/")
+    parser.add_argument("--student", action="store_true",
+                        help="run your exercises/ instead of solutions/ (the default where there are no solutions/)")
     parser.add_argument("--size", default="640x480", help="WIDTHxHEIGHT (default 640x480)")
     parser.add_argument("--editor", action="store_true", help="turn on the editor (hierarchy, inspector, USD)")
     parser.add_argument("--save", default=None, metavar="FILE",
@@ -245,7 +296,8 @@ def launcher(part: Part, backend: str | Backend, description: str = "", *,
     def main(argv: list[str] | None = None) -> int:
         if part.parts:
             return launch_part(part.package, api, part.parts, part.option, argv, default=part.default)
-        return run_variant(create_app, argv, description=description, prog=f"python -m {part.package}.{api}")
+        prog = f"python -m {part.package}.{api}"
+        return stop_on_stub(prog, lambda: run_variant(create_app, argv, description=description, prog=prog))
 
     create_app.__doc__ = f"The {part.package} app in {title.rsplit(' · ', 1)[1]} (``headless``, ``student``, size)."
     main.__doc__ = f"Run the {part.package} app in {title.rsplit(' · ', 1)[1]} from the command line (``--help``)."

@@ -22,6 +22,9 @@ class _AssetName(Component):
             raise TypeError(f"{type(self).__name__}.{what} must be a {what} name (a non-empty string), got {name!r}")
         self._name = name
 
+    def _get_name(self) -> str:
+        return self._name
+
     def __repr__(self) -> str:
         return f"{type(self).__name__}({self._name!r})"
 
@@ -34,9 +37,7 @@ class MeshComponent(_AssetName):
     def __init__(self, mesh: str) -> None:
         self._set_name("mesh", mesh)
 
-    @property
-    def mesh(self) -> str:
-        return self._name
+    mesh = property(_AssetName._get_name, doc="The mesh's name in the scene's assets.")
 
 
 class MaterialComponent(_AssetName):
@@ -47,6 +48,4 @@ class MaterialComponent(_AssetName):
     def __init__(self, material: str) -> None:
         self._set_name("material", material)
 
-    @property
-    def material(self) -> str:
-        return self._name
+    material = property(_AssetName._get_name, doc="The material's name in the scene's assets.")

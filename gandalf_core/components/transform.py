@@ -104,8 +104,12 @@ class TransformComponent(ColumnarComponent):
 
     @property
     def rotation(self) -> np.ndarray:
-        """The rotation as Euler degrees (X, Y, Z); assigning sets the quaternion."""
-        return quat_to_euler(self.quaternion)
+        """The rotation as Euler degrees (X, Y, Z); assigning sets the quaternion. An all-zero quaternion reads as
+        no rotation (0, 0, 0), as everywhere else."""
+        q = self.quaternion
+        if not np.any(q):
+            return np.zeros(3)
+        return quat_to_euler(q)
 
     @rotation.setter
     def rotation(self, degrees: Sequence[float]) -> None:

@@ -36,6 +36,9 @@ class Scene:
         self.assets = Assets()  # meshes, textures and materials by name (backend-neutral data)
         self._entities: dict[uuid.UUID, dict[type, Component]] = {}
         self._stores: dict[type, ColumnStore] = {}
+        #: id() of each attached mutable, non-columnar component -> its entity: one object on two entities would
+        #: make an edit of one (a rename) an edit of both, so a second owner is refused.
+        self._owners: dict[int, uuid.UUID] = {}
         self._systems: list[System] = []
         self._systems_by_type: dict[type, list[System]] = {}
         self._queries: dict[tuple[type, ...], System] = {}
@@ -70,11 +73,14 @@ class Scene:
         for component in components:
             component_type = type(component)
             if (component_type in comps or component_type is LinkComponent or not isinstance(component, Component)
-                    or (isinstance(component, ColumnarComponent) and component._store is not None)):
+                    or (isinstance(component, ColumnarComponent) and component._store is not None)
+                    or id(component) in self._owners):
                 self.add_component(entity, component)  # the general path (and its errors)
                 continue
             if isinstance(component, ColumnarComponent):
                 self.store(component_type).attach(component)
+            elif not component_type.immutable:
+                self._owners[id(component)] = entity
             comps[component_type] = component
             self._joined(entity, comps, component_type)
         return entity
@@ -151,6 +157,9 @@ class Scene:
             if len(items) == 1 and isinstance(items[0], ColumnBatch):
                 items = self.store(ctype).attach_batch(items[0])
             resolved.append((ctype, items))
+        owned = [(t, items) for t, items in resolved if not issubclass(t, ColumnarComponent) and not t.immutable]
+        for ctype, items in owned:
+            self._check_unowned(ctype, items)
         entities = self._entities
         keys = [t for t, _ in resolved]
         if not resolved:
@@ -159,6 +168,8 @@ class Scene:
         else:
             for entity, values in zip(ids, zip(*(items for _, items in resolved))):
                 entities[entity] = dict(zip(keys, values))
+        for _, items in owned:
+            self._owners.update(zip(map(id, items), ids))
         self.membership_version += 1
         # Systems that need any of the new types, each once, in the order they joined.
         seen: set[int] = set()
@@ -241,6 +252,13 @@ class Scene:
             raise ValueError(
                 f"cannot add this {component_type.__name__} to {self.describe(entity)}: it already belongs to an entity"
             )
+        owner = self._owners.get(id(component))
+        if owner is not None and owner != entity and owner in self._entities:
+            raise ValueError(
+                f"cannot add this {component_type.__name__} to {self.describe(entity)}: the same object already "
+                f"belongs to {self.describe(owner)} (a change to one would change both); give each entity its own "
+                f"(copy.copy(component) or a new {component_type.__name__}(...))"
+            )
         kept_children: list[uuid.UUID] = []
         if component_type is LinkComponent:
             self._check_parent(entity, component.parent)
@@ -250,6 +268,8 @@ class Scene:
             self.remove_component(entity, component_type)
         if isinstance(component, ColumnarComponent):
             self.store(component_type).attach(component)
+        elif not component_type.immutable:
+            self._owners[id(component)] = entity
         comps[component_type] = component
         if component_type is LinkComponent:
             self._attach_link(entity, component)
@@ -258,6 +278,19 @@ class Scene:
                 component.children.append(child)
         self._joined(entity, comps, component_type)
         return component
+
+    def _check_unowned(self, ctype: type, items: list[Any]) -> None:
+        """A bulk creation's mutable components must be distinct objects that no entity holds yet."""
+        seen: dict[int, int] = {}
+        for k, item in enumerate(items):
+            owner = self._owners.get(id(item))
+            if owner is not None and owner in self._entities:
+                raise ValueError(f"create_entities: {ctype.__name__} number {k} is the object that "
+                                 f"{self.describe(owner)} holds (a change to one would change both); give each "
+                                 "entity its own")
+            if seen.setdefault(id(item), k) != k:
+                raise ValueError(f"create_entities: {ctype.__name__} number {k} is the same object as number "
+                                 f"{seen[id(item)]} (a change to one would change both); give each entity its own")
 
     def _joined(self, entity: uuid.UUID, comps: dict[type[Component], Component], component_type: type) -> None:
         """``entity`` (its components ``comps``) has gained a ``component_type``: every system of that type whose
@@ -281,6 +314,8 @@ class Scene:
         component = comps.pop(component_type)
         if isinstance(component, ColumnarComponent):
             self._stores[component_type].detach(component)
+        elif self._owners.get(id(component)) == entity:
+            del self._owners[id(component)]
         if component_type is LinkComponent:
             self._detach_link(entity, component)
             for child in component.children:  # orphans become roots rather than point at a missing Link
@@ -430,7 +465,8 @@ class Scene:
         """Take ``system`` out of the scene (calling its ``on_destroy_system``)."""
         if system not in self._systems:
             names = ", ".join(type(s).__name__ for s in self._systems) or "none"
-            raise ValueError(f"scene '{self.name}' has no system {system!r} to remove (its systems: {names})")
+            what = type(system).__name__ if isinstance(system, System) else repr(system)
+            raise ValueError(f"scene '{self.name}' has no system {what} to remove (its systems: {names})")
         self._systems.remove(system)
         for t in system.component_types:
             self._systems_by_type[t].remove(system)

@@ -15,6 +15,7 @@ from ..lazy import lazy_attributes
 _LAZY = {
     "ResourceError": "errors",
     "GLTFModel": "gltf",
+    "GLTFWarning": "gltf",
     "load_gltf": "gltf",
     "BLEND_MODES": "material_data",
     "CULL_MODES": "material_data",
@@ -75,6 +76,7 @@ __getattr__, __dir__ = lazy_attributes(__name__, _LAZY, _SUBMODULES)
 
 __all__ = [
     "GLTFModel",
+    "GLTFWarning",
     "MESH_EXTENSIONS",
     "load_gltf",
     "load_mesh",

@@ -24,6 +24,7 @@ import base64
 import io
 import json
 import struct
+import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -60,6 +61,10 @@ _DEFAULT_FOR = {"baseColorTexture": "gltf_white_srgb", "emissiveTexture": "gltf_
                 "normalTexture": "gltf_flat_normal"}
 
 
+class GLTFWarning(UserWarning):
+    """Something in a glTF file that the engine leaves out (an optional extension): named, never dropped silently."""
+
+
 @dataclass(frozen=True)
 class GLTFModel:
     """What :func:`load_gltf` found: meshes, materials and textures by name (ready for a scene's assets), and
@@ -74,8 +79,9 @@ class GLTFModel:
 class _File:
     """The JSON document and binary buffers of one .gltf or .glb file, with error labels naming it."""
 
-    def __init__(self, path: Path) -> None:
+    def __init__(self, path: Path, allow_outside: bool = False) -> None:
         self.path = path
+        self.allow_outside = allow_outside
         self.label = f"glTF file '{path}'"
         if path.suffix.lower() not in (".gltf", ".glb"):
             raise ResourceError(self.label, "path", f"expected a .gltf or .glb file, got {path.suffix or '(none)'!r}")
@@ -109,7 +115,11 @@ class _File:
                 return base64.b64decode(uri.split(",", 1)[1])
             except (IndexError, ValueError) as exc:
                 raise ResourceError(self.label, where, f"bad data URI: {exc}") from None
-        file = self.path.parent / uri
+        folder = self.path.parent.resolve()
+        file = (folder / uri).resolve()  # symlinks followed: a link to a file elsewhere lies elsewhere
+        if not self.allow_outside and not file.is_relative_to(folder):
+            raise ResourceError(self.label, where, f"the URI '{uri}' ({file}) lies outside the file's folder "
+                                                   f"{folder}: refused (allow_outside=True allows it)")
         if not file.is_file():
             raise ResourceError(self.label, where, f"file not found: '{uri}' (looked for {file})")
         return file.read_bytes()
@@ -136,6 +146,10 @@ def _texture(file: _File, material: str, field: str, info: Mapping[str, Any], sr
              name: str) -> TextureData:
     """The TextureData of one material field (its image decoded, its sampler mapped)."""
     where = f"material '{material}' {field}"
+    for extension in info.get("extensions", {}):
+        what = "its UV offset, scale and rotation are" if extension == "KHR_texture_transform" else "it is"
+        warnings.warn(f"{file.label}: {where}: extension {extension} is not supported: {what} ignored",
+                      GLTFWarning, stacklevel=4)
     if info.get("texCoord", 0) != 0:
         raise ResourceError(file.label, where, f"uses UV set {info['texCoord']}; only TEXCOORD_0 is supported")
     textures = file.items("textures")
@@ -189,6 +203,9 @@ def _material(file: _File, index: int, shader: str, extra_textures: Sequence[str
               params: Mapping[str, Any], textures: dict[str, TextureData]) -> tuple[str, MaterialData]:
     m = file.items("materials")[index]
     name = str(m.get("name") or f"material_{index}")
+    for extension in m.get("extensions", {}):
+        warnings.warn(f"{file.label}: material '{name}': extension {extension} is not supported: it is ignored",
+                      GLTFWarning, stacklevel=3)
     pbr = m.get("pbrMetallicRoughness", {})
     color = _factor(file, name, "baseColorFactor", pbr.get("baseColorFactor"), [1.0, 1.0, 1.0, 1.0], 4)
     metallic = _factor(file, name, "metallicFactor", pbr.get("metallicFactor"), 1.0, 1)
@@ -220,12 +237,17 @@ def _material(file: _File, index: int, shader: str, extra_textures: Sequence[str
 
 
 def load_gltf(path: str | Path, shader: str = "pbr_model", extra_textures: Sequence[str] = (),
-              params: Mapping[str, Any] | None = None) -> GLTFModel:
+              params: Mapping[str, Any] | None = None, *, allow_outside: bool = False) -> GLTFModel:
     """Read a .gltf/.glb file: meshes (with tangents), metallic-roughness materials for ``shader`` and their
-    textures. ``extra_textures`` are appended to every material's textures, ``params`` to its params."""
-    from gandalf_core.resources.mesh_loader import _parts, _to_mesh_data
+    textures. ``extra_textures`` are appended to every material's textures, ``params`` to its params.
 
-    file = _File(Path(path))
+    Buffer and image URIs must lie in the file's folder (after following symlinks) unless ``allow_outside``."""
+    from gandalf_core.resources.mesh_loader import _parts, _to_mesh_data, _trimesh_load
+
+    file = _File(Path(path), allow_outside)
+    for i, buffer in enumerate(file.items("buffers")):  # refused here before trimesh reads them
+        if "uri" in buffer:
+            file.buffer(i, f"buffer {i}")
     required = file.doc.get("extensionsRequired", [])
     if required:
         raise ResourceError(file.label, "extensionsRequired", f"{', '.join(map(str, required))} not supported")
@@ -237,6 +259,7 @@ def load_gltf(path: str | Path, shader: str = "pbr_model", extra_textures: Seque
         if name in materials:
             name = f"{name}.{i}"
         materials[name], by_index[i] = data, name
+    _check_accessors(file)
     # Primitives that use a textured material must have UVs.
     for mesh_index, mesh in enumerate(file.items("meshes")):
         for k, primitive in enumerate(mesh.get("primitives", [])):
@@ -252,10 +275,8 @@ def load_gltf(path: str | Path, shader: str = "pbr_model", extra_textures: Seque
                 raise ResourceError(file.label, f"mesh '{mesh.get('name', mesh_index)}' primitive {k}",
                                     f"material '{by_index[material_index]}' has {textured[0]} but the mesh has no "
                                     "UVs (TEXCOORD_0)")
-    import trimesh
-
     try:
-        loaded = trimesh.load(str(file.path), process=False, split_objects=True, group_material=False)
+        loaded = _trimesh_load(file.path, allow_outside)
     except Exception as exc:  # trimesh raises many types for bad files
         raise ResourceError(file.label, "contents", f"trimesh cannot read it: {exc}") from None
     meshes: dict[str, MeshData] = {}
@@ -275,6 +296,46 @@ def load_gltf(path: str | Path, shader: str = "pbr_model", extra_textures: Seque
     if not parts:
         raise ResourceError(file.label, "contents", "the file holds no triangles")
     return GLTFModel(meshes, materials, textures, tuple(parts))
+
+
+_INDEX_TYPES = {5121: "<u1", 5123: "<u2", 5125: "<u4"}
+
+
+def _check_accessors(file: _File) -> None:
+    """Every primitive's attribute and index accessors exist, and its indices stay below its vertex count: an error
+    naming the mesh, the primitive, the accessor and the index (before trimesh reads them)."""
+    accessors = file.items("accessors")
+    for mesh_index, mesh in enumerate(file.items("meshes")):
+        for k, primitive in enumerate(mesh.get("primitives", [])):
+            where = f"mesh '{mesh.get('name', mesh_index)}' primitive {k}"
+            used = {f"attribute {n}": a for n, a in primitive.get("attributes", {}).items()}
+            if "indices" in primitive:
+                used["indices"] = primitive["indices"]
+            for what, accessor in used.items():
+                if not isinstance(accessor, int) or not 0 <= accessor < len(accessors):
+                    raise ResourceError(file.label, f"{where} {what}",
+                                        f"accessor {accessor!r} does not exist ({len(accessors)} accessors)")
+            position = primitive.get("attributes", {}).get("POSITION")
+            if "indices" not in primitive or position is None:
+                continue
+            acc = accessors[primitive["indices"]]
+            dtype = _INDEX_TYPES.get(acc.get("componentType"))
+            views = file.items("bufferViews")
+            if dtype is None or not 0 <= acc.get("bufferView", -1) < len(views):
+                continue  # trimesh names what else is wrong
+            view = views[acc["bufferView"]]
+            data = file.buffer(view.get("buffer", 0), f"{where} indices")
+            start = view.get("byteOffset", 0) + acc.get("byteOffset", 0)
+            count = int(acc.get("count", 0))
+            if start + count * np.dtype(dtype).itemsize > len(data):
+                continue  # the accessor overruns its buffer: trimesh's error says so
+            values = np.frombuffer(data, dtype, count, start) if count else np.zeros(0, int)
+            vertices = int(accessors[position].get("count", 0))
+            if values.size and int(values.max()) >= vertices:
+                bad = int(np.argmax(values >= vertices))
+                raise ResourceError(file.label, f"{where} indices (accessor {primitive['indices']})",
+                                    f"index {bad} is {int(values[bad])}, out of range for the {vertices} vertices of "
+                                    f"POSITION (accessor {position})")
 
 
 def _material_default(shader: str, extra_textures: Sequence[str], params: Mapping[str, Any],

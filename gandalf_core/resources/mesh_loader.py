@@ -26,8 +26,8 @@ from gandalf_core.resources.mesh_data import MeshData
 #: File extensions the loader reads (lower case, with the dot).
 MESH_EXTENSIONS = (".obj", ".gltf", ".glb", ".ply", ".stl")
 
-_cache: dict[tuple[str, str], dict[str, MeshData]] = {}
-_merged_cache: dict[tuple[str, str], MeshData] = {}
+_cache: dict[tuple[str, str, bool], dict[str, MeshData]] = {}
+_merged_cache: dict[tuple[str, str, bool], MeshData] = {}
 
 
 def clear_cache() -> None:
@@ -36,31 +36,33 @@ def clear_cache() -> None:
     _merged_cache.clear()
 
 
-def load_meshes(path: str | Path) -> dict[str, MeshData]:
+def load_meshes(path: str | Path, *, allow_outside: bool = False) -> dict[str, MeshData]:
     """One :class:`MeshData` per part of the file at ``path``, by part name, in file order.
 
     Raises :class:`ResourceError` naming the file when it is missing, has an unsupported extension, cannot be
-    parsed, or holds no triangles. Repeated calls for an unchanged file return the cached result.
+    parsed, or holds no triangles. Repeated calls for an unchanged file return the cached result. Files the
+    file names (an OBJ's material library and its images, a glTF's buffers and images) are read only from the
+    file's folder (after following symlinks) unless ``allow_outside``.
     """
-    key, label = _key(path)
+    key, label = _key(path, allow_outside)
     if key not in _cache:
-        _cache[key] = _read(Path(key[0]), label)
+        _cache[key] = _read(Path(key[0]), label, allow_outside)
     return dict(_cache[key])
 
 
-def load_mesh(path: str | Path) -> MeshData:
+def load_mesh(path: str | Path, *, allow_outside: bool = False) -> MeshData:
     """All parts of the file at ``path`` merged into one :class:`MeshData` (named after the file's stem).
 
     An attribute (UVs, colours) survives the merge only when every part has it; normals are always present.
     """
-    key, label = _key(path)
+    key, label = _key(path, allow_outside)
     if key not in _merged_cache:
-        parts = load_meshes(path)
+        parts = load_meshes(path, allow_outside=allow_outside)
         _merged_cache[key] = _merge(list(parts.values()), Path(key[0]).stem, label)
     return _merged_cache[key]
 
 
-def _key(path: str | Path) -> tuple[tuple[str, str], str]:
+def _key(path: str | Path, allow_outside: bool = False) -> tuple[tuple[str, str, bool], str]:
     """The cache key of ``path`` and the label errors use; checks existence and extension first."""
     p = Path(path)
     label = f"mesh file '{p}'"
@@ -77,17 +79,25 @@ def _key(path: str | Path) -> tuple[tuple[str, str], str]:
         digest = hashlib.blake2b(resolved.read_bytes(), digest_size=16).hexdigest()
     except OSError as exc:
         raise ResourceError(label, "path", f"cannot read the file: {exc}") from None
-    return (str(resolved), digest), label
+    return (str(resolved), digest, allow_outside), label
 
 
-def _read(path: Path, label: str) -> dict[str, MeshData]:
+def _trimesh_load(path: Path, allow_outside: bool) -> Any:
+    """trimesh's scene of ``path``; the files it names are read through a resolver confined to its folder (trimesh's
+    own rule: paths resolved, symlinks followed) unless ``allow_outside``."""
     import trimesh
+    from trimesh.resolvers import FilePathResolver
 
+    # process=False keeps the file's vertex order and UV seams; OBJ objects stay separate parts.
+    return trimesh.load(str(path), process=False, split_objects=True, group_material=False,
+                        resolver=FilePathResolver(str(path), allow_anywhere=allow_outside))
+
+
+def _read(path: Path, label: str, allow_outside: bool = False) -> dict[str, MeshData]:
     if path.stat().st_size == 0:
         raise ResourceError(label, "contents", "the file is empty")
     try:
-        # process=False keeps the file's vertex order and UV seams; OBJ objects stay separate parts.
-        loaded = trimesh.load(str(path), process=False, split_objects=True, group_material=False)
+        loaded = _trimesh_load(path, allow_outside)
     except Exception as exc:  # trimesh raises many types (ValueError, KeyError, struct.error, ...) for bad files
         raise ResourceError(label, "contents", f"cannot be read as {path.suffix[1:].upper()}: {exc}") from None
     parts: dict[str, MeshData] = {}

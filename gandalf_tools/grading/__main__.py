@@ -16,6 +16,7 @@ import argparse
 import importlib.util
 import os
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -69,6 +70,39 @@ def pytest_options(
     return options
 
 
+def argument_problem(tests: list[str], impls: list[str]) -> str | None:
+    """A sentence saying what is wrong with the test paths and ``--impl`` entries, or None. Checked before pytest
+    runs: a typo must not grade as 0 % with exit status 0."""
+    for test in tests:
+        # Only what reads as a path: a bare word may be the value of a pytest option (-k hue, -m exercise).
+        if not ("/" in test or os.sep in test or "::" in test or test.endswith(".py") or test == "tests"):
+            continue
+        path = Path(test.split("::", 1)[0])
+        if not path.exists():
+            return f"the test path {test!r} does not exist (from {Path.cwd()})"
+    for entry in impls:
+        step, sep, folder = entry.partition("=")
+        if not sep or not step.strip() or not folder.strip():
+            return f"--impl {entry!r}: expected STEP=PATH, e.g. step01_window=my_work/step01"
+        step, folder_path = step.strip(), Path(folder.strip()).expanduser()
+        try:
+            spec = importlib.util.find_spec(step)
+        except (ImportError, ValueError):
+            spec = None
+        if spec is None or not spec.submodule_search_locations:
+            return f"--impl {entry!r}: there is no step package named {step!r}"
+        if not folder_path.is_dir():
+            return f"--impl {entry!r}: the folder {str(folder_path)!r} does not exist"
+        if not (folder_path / "__init__.py").is_file():
+            return f"--impl {entry!r}: the folder {str(folder_path)!r} has no __init__.py (it is not a package)"
+        own = Path(next(iter(spec.submodule_search_locations))) / "exercises"
+        for module in sorted(own.glob("*.py")):
+            if (folder_path / module.name).is_dir():
+                return (f"--impl {entry!r}: the exercise {module.name} in {str(folder_path)!r} is a directory, "
+                        "not a Python file")
+    return None
+
+
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser(prog="python -m gandalf_tools.grading", description=__doc__.splitlines()[0])
     parser.add_argument("tests", nargs="*", default=["tests"], help="test folders or files (default: tests)")
@@ -105,6 +139,10 @@ def main(argv: list[str]) -> int:
         help="exit with 1 when the score is below PERCENT (GitHub Classroom counts a test by its exit status)",
     )
     args, extra = parser.parse_known_args(argv)
+    problem = argument_problem(args.tests, args.impl)
+    if problem is not None:
+        print(f"python -m gandalf_tools.grading: {problem}; nothing was graded.", file=sys.stderr)
+        return 2
     if args.impl:
         os.environ["GANDALF_IMPL"] = os.pathsep.join(
             [*args.impl, *([os.environ["GANDALF_IMPL"]] if os.environ.get("GANDALF_IMPL") else [])]

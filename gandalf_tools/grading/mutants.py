@@ -63,6 +63,11 @@ class Mutant:
     def ident(self) -> str:
         return f"{self.step}:{self.exercise}:{self.name}"
 
+    @property
+    def is_control(self) -> bool:
+        """The stand-in of an unchanged copy of the solutions (see :meth:`_Job.placeholder`)."""
+        return self.exercise == "*" and self.name == "control"
+
 
 @dataclass
 class Outcome:
@@ -117,7 +122,7 @@ def patch(package: ModuleType, dotted: str, new: Any) -> Any:
 
 
 def _load_definitions(path: Path) -> ModuleType:
-    name = f"_gandalf_mutants_{path.stem}"
+    name = f"_gandalf_{path.parent.name}_{path.stem}"  # tests/mutants/ and tests/fairness/ share file names
     if name in sys.modules:
         return sys.modules[name]
     spec = importlib.util.spec_from_file_location(name, path)
@@ -129,11 +134,16 @@ def _load_definitions(path: Path) -> ModuleType:
     return module
 
 
-def load_mutants(folder: Path = DEFAULT_DIR) -> list[Mutant]:
-    """Every mutant defined in ``folder/step*.py``."""
+#: The lists a definitions file may hold: wrong implementations (``tests/mutants/``) and correct alternatives
+#: (``tests/fairness/``, see :mod:`gandalf_tools.grading.fairness`); both are built and graded the same way.
+DEFINITION_LISTS = ("MUTANTS", "ALTERNATIVES")
+
+
+def load_mutants(folder: Path = DEFAULT_DIR, attr: str = "MUTANTS") -> list[Mutant]:
+    """Every mutant (or, with ``attr="ALTERNATIVES"``, every alternative) defined in ``folder/step*.py``."""
     mutants: list[Mutant] = []
     for path in sorted(folder.glob("step*.py")):
-        for m in getattr(_load_definitions(path), "MUTANTS", []):
+        for m in getattr(_load_definitions(path), attr, []):
             m.source = str(path)
             mutants.append(m)
     return mutants
@@ -154,7 +164,7 @@ def load_known_gaps(path: Path) -> dict[str, str]:
 def apply_mutant(package_name: str, definitions: str, ident: str) -> None:
     """Called from the copied package's ``__init__.py`` in the graded process: apply mutant ``ident``."""
     module = _load_definitions(Path(definitions))
-    for m in module.MUTANTS:
+    for m in (m for attr in DEFINITION_LISTS for m in getattr(module, attr, [])):
         if m.ident == ident:
             if m.apply is not None:
                 m.apply(sys.modules[package_name])
@@ -388,18 +398,52 @@ def _select(mutants: list[Mutant], steps: list[str], exercises: list[str], keywo
     return chosen
 
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(
-        prog="python -m gandalf_tools.grading.mutants",
-        description="Grade every mutant (a plausible wrong implementation) of the exercises; fail if one passes.",
-    )
-    parser.add_argument("--dir", type=Path, default=DEFAULT_DIR, help="mutant definitions (default: tests/mutants)")
+def command_parser(module: str, description: str, noun: str, folder: Path) -> argparse.ArgumentParser:
+    """The options the mutation check and the fairness check share: where the definitions of ``noun`` (mutants,
+    alternatives) are, which of them to grade, how many at once, and where the outcomes go."""
+    parser = argparse.ArgumentParser(prog=f"python -m gandalf_tools.grading.{module}", description=description)
+    parser.add_argument("--dir", type=Path, default=folder, help=f"{noun} (default: {folder.relative_to(ROOT)})")
     parser.add_argument("--step", action="append", default=[], help="only this step (prefix, e.g. step01)")
     parser.add_argument("--exercise", action="append", default=[], help="only this exercise")
-    parser.add_argument("-k", dest="keyword", help="only mutants whose step:exercise:name contains this")
-    parser.add_argument("--jobs", "-j", type=int, default=os.cpu_count() or 2, help="mutants graded at once")
+    parser.add_argument("-k", dest="keyword", help=f"only {noun} whose step:exercise:name contains this")
+    parser.add_argument("--jobs", "-j", type=int, default=os.cpu_count() or 2, help=f"{noun} graded at once")
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per test (default 60)")
     parser.add_argument("--no-control", action="store_true", help="skip the unchanged-solutions control runs")
+    parser.add_argument("--list", action="store_true", help=f"list the {noun} and exit")
+    parser.add_argument("--json", type=Path, help="write the outcomes as JSON to this file")
+    return parser
+
+
+def print_list(chosen: list[Mutant], noun: str) -> int:
+    """``--list``: one line per mutant or alternative (ident, kind, description) and the count."""
+    for m in chosen:
+        print(f"{m.ident:<60} {'shader' if m.edits else 'python':<7} {m.description}")
+    print(f"{len(chosen)} {noun}")
+    return 0
+
+
+def selected(args: argparse.Namespace, attr: str, noun: str) -> list[Mutant] | int:
+    """The mutants (``attr="MUTANTS"``) or alternatives the command's ``args`` select, or its exit code when there
+    is nothing to grade: 0 after ``--list`` printed them, 2 when none is selected."""
+    chosen = _select(load_mutants(args.dir, attr), args.step, args.exercise, args.keyword)
+    if args.list:
+        return print_list(chosen, noun)
+    if not chosen:
+        print(f"no {noun} selected", file=sys.stderr)
+        return 2
+    return chosen
+
+
+def exercises_by_step(chosen: list[Mutant]) -> dict[str, list[str]]:
+    """The exercises ``chosen`` touch, per step (steps and exercises sorted): what each control run grades."""
+    return {s: sorted({m.exercise for m in chosen if m.step == s}) for s in sorted({m.step for m in chosen})}
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = command_parser(
+        "mutants", "Grade every mutant (a plausible wrong implementation) of the exercises; fail if one passes.",
+        "mutants", DEFAULT_DIR,
+    )
     parser.add_argument(
         "--known-gaps",
         type=Path,
@@ -407,23 +451,13 @@ def main(argv: list[str] | None = None) -> int:
         help="survivors already reported (default: <dir>/known_gaps.txt); they are listed but do not fail the run",
     )
     parser.add_argument("--strict", action="store_true", help="fail on every survivor, known gaps too")
-    parser.add_argument("--list", action="store_true", help="list the mutants and exit")
-    parser.add_argument("--json", type=Path, help="write the outcomes as JSON to this file")
     args = parser.parse_args(argv)
 
-    mutants = _select(load_mutants(args.dir), args.step, args.exercise, args.keyword)
-    if args.list:
-        for m in mutants:
-            kind = "shader" if m.edits else "python"
-            print(f"{m.ident:<60} {kind:<7} {m.description}")
-        print(f"{len(mutants)} mutants")
-        return 0
-    if not mutants:
-        print("no mutants selected", file=sys.stderr)
-        return 2
-
-    steps = sorted({m.step for m in mutants})
-    by_step = {s: sorted({m.exercise for m in mutants if m.step == s}) for s in steps}
+    mutants = selected(args, "MUTANTS", "mutants")
+    if isinstance(mutants, int):
+        return mutants
+    by_step = exercises_by_step(mutants)
+    steps = list(by_step)
     jobs: list[tuple[Mutant | None, str, list[str]]] = []
     if not args.no_control:
         jobs += [(None, s, by_step[s]) for s in steps]
@@ -450,7 +484,7 @@ def main(argv: list[str] | None = None) -> int:
 
     outcomes = run_jobs(jobs, args.jobs, args.timeout, progress)
 
-    controls = [o for o in outcomes if o.mutant.name == "control" and o.mutant.exercise == "*"]
+    controls = [o for o in outcomes if o.mutant.is_control]
     results = [o for o in outcomes if o not in controls]
     for o in results:
         if o.status == "survived" and o.mutant.ident in known:

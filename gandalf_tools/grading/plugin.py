@@ -1,6 +1,7 @@
 """The course autograder, as a pytest plugin.
 
-* ``pytest tests/step01_window`` grades the reference ``solutions`` (CI stays green).
+* ``pytest tests/step01_window`` grades the reference ``solutions`` (CI stays green); in a student's release,
+  which has no ``solutions/``, it grades the ``exercises``.
 * ``pytest --student tests/step01_window`` grades the student's ``exercises`` instead, prints a score
   per exercise, and ``--grade-json result.json`` writes it for course platforms (``--gradescope
   results.json`` writes Gradescope's format).
@@ -132,6 +133,15 @@ def _overlay(step_package: str) -> ModuleType | None:
     return _overlays[step_package]
 
 
+def _has_solutions(step_package: str) -> bool:
+    """Whether the step holds its reference ``solutions`` (a student's release does not: it grades ``exercises``);
+    ``gandalf_core.app.cli.has_solutions`` without importing the engine's app layer into every pytest start."""
+    try:
+        return importlib.util.find_spec(f"{step_package}.solutions") is not None
+    except ModuleNotFoundError:  # not a step package
+        return False
+
+
 # --8<-- [start:impl_fixture]
 def impl_fixture(step_package: str) -> Any:
     """Create the ``impl`` fixture of a step: its ``exercises`` or ``solutions`` package."""
@@ -142,7 +152,7 @@ def impl_fixture(step_package: str) -> Any:
         budget = float(request.config.getoption("--grade-call-budget"))
         if overlay is not None:
             return watchdog.guard(overlay, budget)
-        if request.config.getoption("--student"):
+        if request.config.getoption("--student") or not _has_solutions(step_package):  # a student's release
             return watchdog.guard(importlib.import_module(f"{step_package}.exercises"), budget)
         return importlib.import_module(f"{step_package}.solutions")
 
@@ -426,7 +436,9 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
     result = summary()
     which = (
         "exercises (student)"
-        if config.getoption("--student") or os.environ.get(IMPL_ENV)
+        if config.getoption("--student")
+        or os.environ.get(IMPL_ENV)
+        or not all(_has_solutions(info["step"]) for info in _graded.values())
         else ("solutions (reference)")
     )
     tr = terminalreporter

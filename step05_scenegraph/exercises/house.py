@@ -40,9 +40,12 @@ def house_meshes() -> tuple[MeshData, MeshData]:
 def brick_texture_data(size: int = 64) -> TextureData:
     """Milestone 2 (textures): a ``size`` x ``size`` brick texture named "house.brick".
 
-    Red-brown bricks (about sRGB (0.62, 0.24, 0.17)) separated by light grey mortar joints (about
-    (0.82, 0.80, 0.75), 2 pixels wide): four courses of bricks, every other course shifted by half a brick.
-    Build an ``(size, size, 3)`` float array in [0, 1] and return ``TextureData.from_array(rgb, name=...)``.
+    Red-brown bricks (sRGB (0.62, 0.24, 0.17), each channel within 0.1 of it: a per-brick variation is
+    welcome) separated by light grey mortar joints ((0.82, 0.80, 0.75), within 0.05), 2 pixels wide: four
+    courses of bricks of equal length, every other course shifted by half a brick. Where a joint sits (top or
+    bottom of a course, left or right of a brick) and how many bricks a course holds are yours to choose; the
+    texture repeats, so a joint may also cross its edge. Build an ``(size, size, 3)`` float array in [0, 1] and
+    return ``TextureData.from_array(rgb, name=...)``.
     """
     raise NotImplementedError("exercise: brick_texture_data")
 
@@ -60,10 +63,11 @@ def house_material_data() -> dict[str, MaterialData]:
 def house_camera(aspect: float | None = None) -> tuple[CameraComponent, TransformComponent]:
     """Milestone 4 (camera): a perspective CameraComponent and the Transform that places it.
 
-    Frame the whole house (about 1.3 wide, 1.7 tall, standing at the origin) with margins: e.g. a 45°
-    vertical field of view from ``eye = (0, 1.8, 4.2)`` looking at ``(0, 0.8, 0)``; use
-    ``gandalf_core.math.look_at_rotation(eye, target)`` for the quaternion. Pass ``aspect`` on to the camera
-    (None follows the render target).
+    Frame the whole house (about 1.3 wide, 1.7 tall, standing at the origin) from any side you like: the
+    house (roof above the walls) inside the frame with a margin of a few pixels, covering 10-60 % of it and
+    roughly centred. E.g. a 45° vertical field of view from ``eye = (0, 1.8, 4.2)`` looking at
+    ``(0, 0.8, 0)``; use ``gandalf_core.math.look_at_rotation(eye, target)`` for the quaternion. Pass
+    ``aspect`` on to the camera (None follows the render target).
     """
     raise NotImplementedError("exercise: house_camera")
 

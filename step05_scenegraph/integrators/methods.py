@@ -11,7 +11,8 @@ returns the acceleration. One step advances the state by ``dt`` seconds:
 
 ``damped_spring_exact`` is the exact solution the study measures every integrator against. The
 semi-implicit Euler and RK4 steps are the exercise (``exercises/integrators.py``); the step's systems and
-study use the reference answers in ``solutions/integrators.py``.
+study use :func:`reference_step`: the reference answers in ``solutions/integrators.py``, or in a student's release
+(no ``solutions/``) the student's own.
 """
 
 from __future__ import annotations
@@ -32,6 +33,14 @@ STABLE_OMEGA_DT = {
     "rk4": 2.0 * math.sqrt(2.0),
     "implicit_euler": math.inf,
 }
+
+
+def reference_step(name: str) -> Callable[..., State]:
+    """The step's ``semi_implicit_euler_step`` or ``rk4_step``: the reference solution's, or where a student's
+    release has no ``solutions/``, the student's own from ``exercises/integrators.py``."""
+    from gandalf_core.app.cli import load_impl
+
+    return getattr(load_impl(__package__.split(".")[0]), name)
 
 
 def omega_dt(k: float, m: float, dt: float) -> float:

@@ -1,6 +1,7 @@
 """The integrators' scene, the same for OpenGL and WebGPU: four damped springs, one per integrator.
 
-``build_scene(impl)`` returns it (the springs use the reference integrators; the exercise is graded numerically).
+``build_scene(impl)`` returns it (the springs use the reference integrators, or your own where there are no
+``solutions/``; the exercise is graded numerically).
 """
 
 from __future__ import annotations

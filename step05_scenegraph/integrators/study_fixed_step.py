@@ -32,7 +32,7 @@ from gandalf_tools.plots import figure, label_axes, save_figure
 from gandalf_tools.studies import StudyParser, groups, markdown_table, run_info, write_study
 
 from ..custom_systems.fixed_step import FixedStep
-from ..solutions.integrators import semi_implicit_euler_step
+from .methods import reference_step
 
 STEM = "step05_study_fixed_step"
 DTS = (1 / 30, 1 / 60, 1 / 120, 1 / 240, 1 / 480, 1 / 960)
@@ -71,6 +71,7 @@ def run_case(dt: float, max_steps: int, frames: np.ndarray, measure: bool = True
     def accel(_x: np.ndarray, _v: np.ndarray) -> np.ndarray:
         return GRAVITY
 
+    semi_implicit_euler_step = reference_step("semi_implicit_euler_step")
     x, v = np.zeros(3), V0.copy()
     previous = x
     wall = 0.0

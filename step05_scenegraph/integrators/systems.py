@@ -14,9 +14,15 @@ import numpy as np
 from gandalf_core import TransformComponent
 
 from ..custom_systems.systems import FixedStepSystem
-from ..solutions.integrators import rk4_step, semi_implicit_euler_step
 from .components import SpringComponent
-from .methods import STABLE_OMEGA_DT, explicit_euler_step, implicit_euler_spring_step, omega_dt, spring_acceleration
+from .methods import (
+    STABLE_OMEGA_DT,
+    explicit_euler_step,
+    implicit_euler_spring_step,
+    omega_dt,
+    reference_step,
+    spring_acceleration,
+)
 
 __all__ = ["SpringSystem"]
 
@@ -26,6 +32,11 @@ class SpringSystem(FixedStepSystem):
 
     def __init__(self, dt: float = 1.0 / 120.0) -> None:
         super().__init__([SpringComponent, TransformComponent], dt)
+        self.steps = {
+            "explicit_euler": explicit_euler_step,
+            "semi_implicit_euler": reference_step("semi_implicit_euler_step"),
+            "rk4": reference_step("rk4_step"),
+        }
 
     def on_create_entity(self, entity, components) -> None:
         super().on_create_entity(entity, components)
@@ -43,12 +54,7 @@ class SpringSystem(FixedStepSystem):
         if body.integrator == "implicit_euler":
             x, v = implicit_euler_spring_step(x, v, k, m, c, dt, body.rest)
         else:
-            step = {
-                "explicit_euler": explicit_euler_step,
-                "semi_implicit_euler": semi_implicit_euler_step,
-                "rk4": rk4_step,
-            }[body.integrator]
-            x, v = step(x, v, spring_acceleration(k, m, c, body.rest), dt)
+            x, v = self.steps[body.integrator](x, v, spring_acceleration(k, m, c, body.rest), dt)
         if not np.all(np.isfinite(x)) or np.linalg.norm(x - body.rest) > body.reset_distance:
             if body.resets == 0:  # the reset shows the blow-up again; it must not hide that there was one
                 limit = STABLE_OMEGA_DT[body.integrator]

@@ -1,4 +1,4 @@
-"""The environment's scene, the same for OpenGL and WebGPU: a silver and an ice bunny under a procedural sky.
+"""The environment's scene, the same for OpenGL and WebGPU: a silver and an ice bunny under a sky read from six files.
 
 No light is needed: both materials take their colour from the sky's cube map, the one the skybox draws behind
 everything. :func:`add_sky` and :func:`add_environment_materials` are the helpers the step's whole scene reuses.
@@ -12,11 +12,12 @@ from gandalf_core import Scene, TransformComponent
 from gandalf_core.app.cli import Part
 from gandalf_core.components import CameraComponent, InfoComponent, SkyboxComponent
 from gandalf_core.math import look_at_rotation
-from gandalf_core.resources import MaterialData, sky_cube
+from gandalf_core.resources import CubeTextureData, MaterialData
 
 from ..meshes.scene import add_bunny, add_bunny_mesh
 from ..shaders import shader_table
 from . import SHADERS
+from .make_sky import SKY_FILES
 
 #: Frames the course tour renders before it takes the picture (at 60 frames per simulated second).
 TOUR_FRAMES = 30
@@ -24,8 +25,11 @@ TOUR_FRAMES = 30
 
 # --8<-- [start:sky]
 def add_sky(scene: Scene) -> None:
-    """The sky cube map (texture ``sky``) and the skybox that draws it behind everything."""
-    scene.assets.texture("sky", sky_cube(128))
+    """The sky cube map (texture ``sky``), read from its six face files in +X, -X, +Y, -Y, +Z, -Z
+    order (``models/sky/``, written by ``make_sky.py``), and the skybox that draws it behind
+    everything."""
+    sky = CubeTextureData.from_files(SKY_FILES, name="sky")
+    scene.assets.texture("sky", sky)
     scene.create_entity(InfoComponent("sky"), SkyboxComponent("sky"))
 
 

@@ -55,17 +55,13 @@ def render(width: int = 64, height: int = 64) -> np.ndarray:
         lights.bind_to_uniform_block(0)  # the buffer on binding point 0 ...
         program["Lights"].binding = 0  # ... and the program's block reads point 0
         # --8<-- [end:lights]
-        fbo = ctx.framebuffer(color_attachments=[ctx.texture((width, height), 4)])
-        fbo.use()
-        ctx.vertex_array(program, []).render(moderngl.TRIANGLES, vertices=3)
-        pixels = fbo.read(components=4)
+        triangle = ctx.vertex_array(program, [])
+        return lesson.gl_frame(ctx, width, height, lambda: triangle.render(moderngl.TRIANGLES, vertices=3))
     finally:
         ctx.release()
-    return lesson.image(pixels, width, height, bottom_up=True)
 
 
-def main(argv: list[str] | None = None) -> int:
-    return lesson.main(render, __doc__, "lights_gl.png", "480x480", argv=argv)
+main = lesson.command(render, __doc__, "lights_gl.png", "480x480")
 
 
 if __name__ == "__main__":

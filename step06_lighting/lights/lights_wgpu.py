@@ -54,24 +54,18 @@ def render(width: int = 64, height: int = 64) -> np.ndarray:
     bind_group = device.create_bind_group(layout=pipeline.get_bind_group_layout(0),
                                           entries=[{"binding": 0, "resource": {"buffer": lights}}])
     # --8<-- [end:lights]
-    target = device.create_texture(size=(width, height, 1), format="rgba8unorm",
-                                   usage=wgpu.TextureUsage.RENDER_ATTACHMENT | wgpu.TextureUsage.COPY_SRC)
-    encoder = device.create_command_encoder()
-    rpass = encoder.begin_render_pass(color_attachments=[{
-        "view": target.create_view(), "clear_value": (0, 0, 0, 1), "load_op": "clear", "store_op": "store"}])
-    rpass.set_pipeline(pipeline)
-    rpass.set_bind_group(0, bind_group)
-    rpass.draw(3)
-    rpass.end()
-    device.queue.submit([encoder.finish()])
-    pixels = device.queue.read_texture({"texture": target}, {"bytes_per_row": 4 * width, "rows_per_image": height},
-                                       (width, height, 1))
+
+    def draw(rpass) -> None:
+        rpass.set_pipeline(pipeline)
+        rpass.set_bind_group(0, bind_group)  # the lights' storage buffer
+        rpass.draw(3)
+
+    picture = lesson.wgpu_frame(device, width, height, draw)
     device.destroy()
-    return lesson.image(pixels, width, height, bottom_up=False)
+    return picture
 
 
-def main(argv: list[str] | None = None) -> int:
-    return lesson.main(render, __doc__, "lights_wgpu.png", "480x480", argv=argv)
+main = lesson.command(render, __doc__, "lights_wgpu.png", "480x480")
 
 
 if __name__ == "__main__":

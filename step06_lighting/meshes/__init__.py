@@ -10,4 +10,4 @@ part drawn in its own colour under one parent entity; beside it a coarse and a f
 STEP = "step06_lighting"
 
 #: The step's shaders this concept's scene uses (``step06_lighting.shaders.SHADERS``).
-SHADERS = ("phong",)
+SHADERS = ("phong", "phong_textured")

@@ -1,4 +1,5 @@
-"""The meshes' scene, the same for OpenGL and WebGPU: the bunny read from a glTF file, part by part, and two spheres.
+"""The meshes' scene, the same for OpenGL and WebGPU: the bunny read from a glTF file, part by part, a textured
+crate read from an OBJ file and its PNG, and two spheres.
 
 ``load_meshes`` returns one ``MeshData`` per part with its node transform already applied, so the five parts hang
 from one parent entity at identity and the bunny comes out whole; the file has no normals, the loader computes
@@ -23,11 +24,12 @@ from gandalf_core.components import (
     MeshComponent,
 )
 from gandalf_core.math import look_at_rotation
-from gandalf_core.resources import MaterialData, plane, uv_sphere
+from gandalf_core.resources import MaterialData, TextureData, plane, uv_sphere
 from gandalf_core.resources.mesh_loader import load_mesh, load_meshes
 
 from ..shaders import shader_table
 from . import SHADERS
+from .make_crate import CRATE_OBJ, CRATE_PNG
 
 #: Frames the course tour renders before it takes the picture (at 60 frames per simulated second).
 TOUR_FRAMES = 30
@@ -55,6 +57,22 @@ def _phong(color: tuple[float, float, float]) -> MaterialData:
     return MaterialData("phong", color=color, params={"specular": 0.3, "shininess": 32.0})
 
 
+# --8<-- [start:crate]
+def add_crate(scene: Scene, position: tuple[float, float, float], turn: float) -> uuid.UUID:
+    """The textured model: the crate's mesh from its OBJ file, its wood from the PNG beside
+    it, lit by the textured Blinn-Phong shader (``phong_textured``: the material colour
+    times the texture is the albedo)."""
+    scene.assets.mesh("crate", load_mesh(CRATE_OBJ))
+    scene.assets.texture("crate", TextureData(CRATE_PNG))
+    wood = MaterialData("phong_textured", ["crate"], color=(1.0, 1.0, 1.0),
+                        params={"specular": 0.15, "shininess": 16.0})
+    scene.assets.material("crate", wood)
+    place = TransformComponent(position, rotation=(0.0, turn, 0.0))
+    return scene.create_entity(InfoComponent("crate"), place, MeshComponent("crate"),
+                               MaterialComponent("crate"))
+# --8<-- [end:crate]
+
+
 def build_scene(impl: ModuleType | None = None) -> Scene:
     """The bunny's parts, two spheres and a floor under a key and an ambient light (``impl`` is unused: the
     variants pass the step's, and the lit shaders include its ``shading``)."""
@@ -75,6 +93,7 @@ def build_scene(impl: ModuleType | None = None) -> Scene:
         scene.create_entity(InfoComponent(f"sphere {segments}x{rings}"),
                             TransformComponent((0.9 + 1.5 * k, 0.6, 0.4)),
                             MeshComponent(f"sphere {segments}x{rings}"), MaterialComponent("sphere"))
+    add_crate(scene, (0.05, 0.0, -1.25), 30.0)
     scene.create_entity(InfoComponent("background"), ClearColorComponent((0.1, 0.11, 0.14)))
     assets.mesh("floor", plane(14.0, 8))
     assets.material("floor", _phong((0.55, 0.56, 0.6)))

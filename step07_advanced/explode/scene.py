@@ -40,6 +40,8 @@ from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, MeshData, ResourceError
 from gandalf_core.resources.mesh_loader import load_mesh
 
+from ..checks import checked_number
+
 #: Frames the course tour renders before it takes the picture (at 60 frames per simulated second): 1.5 s,
 #: 85 % of the way out.
 TOUR_FRAMES = 90
@@ -135,16 +137,8 @@ class PullingRoute:
 
 def validate_explosion(label: str, amount: float, period: float) -> tuple[float, float]:
     """``amount`` (≥ 0) and ``period`` (> 0) as finite floats, or a ResourceError naming the parameter."""
-    for key, value, ok, rule in (("amount", amount, lambda v: v >= 0.0, ">= 0"),
-                                 ("period", period, lambda v: v > 0.0, "> 0")):
-        try:
-            number = float(value)
-        except (TypeError, ValueError):
-            raise ResourceError(label, key, f"expected a number of {'world units' if key == 'amount' else 'seconds'}"
-                                            f", got {value!r}") from None
-        if not (math.isfinite(number) and ok(number)):
-            raise ResourceError(label, key, f"must be finite and {rule}, got {value!r}")
-    return float(amount), float(period)
+    return (checked_number(label, "amount", amount, ">= 0", lambda v: v >= 0.0, "a number of world units"),
+            checked_number(label, "period", period, "> 0", lambda v: v > 0.0, "a number of seconds"))
 
 
 def explode_material(shader: str, amount: float = AMOUNT, period: float = PERIOD, *, time: float = 0.0,

@@ -30,10 +30,7 @@ FORMATS = {
 #: does not stop the kernels that do not include it (the weight table alone, or the blur with given weights).
 PROGRAMS = {
     "weights": ("weights", None),
-    "pass_float": ("pass", "float"),
-    "pass_unorm8": ("pass", "unorm8"),
-    "tiled_float": ("tiled", "float"),
-    "tiled_unorm8": ("tiled", "unorm8"),
+    **{f"{kernel}_{kind}": (kernel, kind) for kernel in ("pass", "tiled") for kind in ("float", "unorm8")},
     "naive": ("naive", "unorm8"),
     "sobel": ("sobel", "unorm8"),
 }

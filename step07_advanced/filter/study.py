@@ -45,15 +45,17 @@ def taps(method: str, size: int, radius: int) -> int:
 
 def _open(backend: str):
     """The filter of ``backend`` on its own headless context/device, with the reference solution's shaders."""
-    from step07_advanced import solutions
+    from gandalf_core.app.cli import load_impl
+
+    reference_impl = load_impl("step07_advanced")  # the solutions, or your exercises where there are none
 
     if backend == "opengl":
         from .compute_gl import GLImageFilter
 
-        return GLImageFilter.standalone(solutions)
+        return GLImageFilter.standalone(reference_impl)
     from .compute_wgpu import WGPUImageFilter
 
-    return WGPUImageFilter.standalone(solutions)
+    return WGPUImageFilter.standalone(reference_impl)
 
 
 def measure(flt, image: np.ndarray, expected255: np.ndarray, method: str, radius: int, repeats: int,

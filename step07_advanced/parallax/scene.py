@@ -22,6 +22,8 @@ import functools
 import math
 from types import ModuleType
 
+import numpy as np
+
 from gandalf_core import Scene, TransformComponent
 from gandalf_core.app.cli import Part
 from gandalf_core.components import (
@@ -35,6 +37,7 @@ from gandalf_core.components import (
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, MeshData, ResourceError, TextureData, plane
 
+from ..checks import checked_number
 from ..showcase.textures import brick_textures
 from .reference import MAX_LAYERS
 from .shaders import SHADER
@@ -70,16 +73,6 @@ SPACING = STRIP[1] * math.sin(math.radians(ELEVATION)) + 0.16
 SUN = (-0.55, 0.55, -0.35)
 
 
-def _number(label: str, key: str, value, rule: str, ok) -> float:
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        raise ResourceError(label, key, f"expected a number, got {value!r}") from None
-    if not (math.isfinite(number) and ok(number)):
-        raise ResourceError(label, key, f"must be finite and {rule}, got {value!r}")
-    return number
-
-
 def validate_parallax(label: str, method: str, height_scale: float, layers: int) -> tuple[int, float, int]:
     """(method index, height_scale, layers) checked, or a ResourceError naming ``label`` and the parameter.
 
@@ -88,7 +81,7 @@ def validate_parallax(label: str, method: str, height_scale: float, layers: int)
     """
     if method not in METHODS:
         raise ResourceError(label, "method", f"{method!r} is not one of {', '.join(METHODS)}")
-    scale = _number(label, "height_scale", height_scale, ">= 0 (a depth in uv units)", lambda v: v >= 0.0)
+    scale = checked_number(label, "height_scale", height_scale, ">= 0 (a depth in uv units)", lambda v: v >= 0.0)
     if isinstance(layers, bool) or not isinstance(layers, int) or not 1 <= layers <= MAX_LAYERS:
         raise ResourceError(label, "layers", f"must be an int from 1 to {MAX_LAYERS} (the shader's "
                                              f"PARALLAX_MAX_LAYERS), got {layers!r}")
@@ -134,6 +127,47 @@ def add_light(scene: Scene) -> None:
     scene.create_entity(InfoComponent("ambient"), TransformComponent(), LightComponent("ambient", (0.16, 0.17, 0.2)))
 
 
+#: Each strip's label: a quad facing the camera over the strip's top left corner, LABEL_SIZE world units wide and
+#: high, its text drawn by Pillow into LABEL_TEXELS texels (white on the background colour).
+LABEL_SIZE = (1.5, 0.2)
+LABEL_TEXELS = (390, 52)
+
+
+@functools.cache
+def label_texture(text: str) -> TextureData:
+    """``text`` in white on a dark box (Pillow's default font), an sRGB texture that the label quads show."""
+    from PIL import Image, ImageDraw, ImageFont
+
+    width, height = LABEL_TEXELS
+    box = tuple(round(255 * c) for c in BACKGROUND)
+    image = Image.new("RGBA", LABEL_TEXELS, (*box, 255))
+    ImageDraw.Draw(image).text((12, height / 2), text, fill=(240, 240, 240, 255),
+                               font=ImageFont.load_default(size=34), anchor="lm")
+    return TextureData(np.asarray(image), wrap="clamp", name=f"label {text}")
+
+
+def add_labels(scene: Scene, methods: tuple[str, ...]) -> None:
+    """Name each strip's method on a label over its top left corner (an unlit quad facing the camera, a little
+    in front of the strip so that it is never hidden)."""
+    e = math.radians(ELEVATION)
+    up, towards_camera = (0.0, math.cos(e), -math.sin(e)), (0.0, math.sin(e), math.cos(e))
+    half_height = STRIP[1] / 2 * math.sin(e)  # the strip's half height in the picture
+    x = -STRIP[0] / 2 + LABEL_SIZE[0] / 2 + 0.08
+    lift = half_height - LABEL_SIZE[1] / 2 - 0.04
+    scene.assets.mesh("label", _strip_mesh())
+    for method, centre in zip(methods, strip_positions(), strict=True):
+        name = f"label {method}"
+        if name not in scene.assets.textures:
+            scene.assets.texture(name, label_texture(LABELS[method]))
+            scene.assets.material(name, MaterialData("gandalf.unlit", [name]))
+        position = tuple(centre[j] + lift * up[j] + 1.0 * towards_camera[j] + (x if j == 0 else 0.0)
+                         for j in range(3))
+        scene.create_entity(InfoComponent(f"{LABELS[method]} label"),
+                            TransformComponent(position, rotation=(90.0 - ELEVATION, 0.0, 0.0),
+                                               scale=(LABEL_SIZE[0], 1.0, LABEL_SIZE[1])),
+                            MeshComponent("label"), MaterialComponent(name))
+
+
 def camera_eye() -> tuple[float, float, float]:
     """Where the camera stands: DISTANCE from TARGET, ELEVATION degrees above the strips' planes."""
     e = math.radians(ELEVATION)
@@ -150,10 +184,11 @@ def strip_positions() -> list[tuple[float, float, float]]:
 
 def build_scene(impl: ModuleType | None = None, *, methods: tuple[str, ...] = METHODS,
                 height_scale: float = HEIGHT_SCALE, layers: int = LAYERS, name: str = "step07_parallax",
-                prefix: str = "bricks_") -> Scene:
-    """The demo: four strips, top to bottom read by ``methods`` (normal, offset, steep, occlusion). ``impl``
-    (exercises or solutions) is the package the variant file built the shader with. The materials are called
-    ``prefix + method`` (one app can hold several such scenes when their prefixes differ)."""
+                prefix: str = "bricks_", labels: bool = True) -> Scene:
+    """The demo: four strips, top to bottom read by ``methods`` (normal, offset, steep, occlusion), each named on
+    a label unless ``labels`` is False. ``impl`` (exercises or solutions) is the package the variant file built the
+    shader with. The materials are called ``prefix + method`` (one app can hold several such scenes when their
+    prefixes differ)."""
     del impl  # the shader was built with it; the scene itself is the same for both
     if len(methods) != len(METHODS):
         raise ValueError(f"methods: expected {len(METHODS)} method names (one per strip), got {methods!r}")
@@ -166,6 +201,8 @@ def build_scene(impl: ModuleType | None = None, *, methods: tuple[str, ...] = ME
         scene.create_entity(InfoComponent(f"{LABELS[method]} strip"),
                             TransformComponent(position, scale=(STRIP[0], 1.0, STRIP[1])),
                             MeshComponent("strip"), MaterialComponent(material.name))
+    if labels:
+        add_labels(scene, methods)
     add_light(scene)
     eye = camera_eye()
     scene.create_entity(InfoComponent("camera"), TransformComponent(eye, quaternion=look_at_rotation(eye, TARGET)),
@@ -179,7 +216,7 @@ def study_scene(method: str, layers: int = LAYERS, height_scale: float = HEIGHT_
     and material names hold the method, layers and height_scale, so one app can switch between many of them."""
     label = f"{method}_l{layers}_s{height_scale:g}"
     return build_scene(methods=(method,) * len(METHODS), height_scale=height_scale, layers=layers,
-                       name=f"parallax study {label}", prefix=f"study_{label}_")
+                       name=f"parallax study {label}", prefix=f"study_{label}_", labels=False)
 
 
 #: The technique the variants (``opengl.py``, ``webgpu.py``) hand the launcher with their programs.

@@ -38,6 +38,7 @@ from gandalf_core.resources.mesh_loader import load_mesh
 from gandalf_core.systems import TransformSystem
 from gandalf_core.systems.camera_controllers import OrbitControllerComponent, OrbitControllerSystem
 
+from ..checks import checked_number
 from .bvh import build_bvh, usable_triangles
 from .shaders import DISPLAY_SHADER, PARAMS_LAYOUT
 
@@ -82,14 +83,7 @@ class TraceMaterial:
         object.__setattr__(self, "color", tuple(float(x) for x in c))
         for key, ok, rule in (("fuzz", lambda v: 0.0 <= v <= 1.0, "in [0, 1] (0: a mirror, 1: very rough)"),
                               ("ior", lambda v: v > 0.0, "> 0 (glass is about 1.5, 1 lets rays straight through)")):
-            value = getattr(self, key)
-            try:
-                number = float(value)
-            except (TypeError, ValueError):
-                raise ResourceError(label, key, f"expected a number {rule}, got {value!r}") from None
-            if not (math.isfinite(number) and ok(number)):
-                raise ResourceError(label, key, f"must be finite and {rule}, got {value!r}")
-            object.__setattr__(self, key, number)
+            object.__setattr__(self, key, checked_number(label, key, getattr(self, key), rule, ok, f"a number {rule}"))
 
     def packed(self) -> np.ndarray:
         """Two vec4: (linear albedo, kind), (fuzz, ior, 0, 0)."""
@@ -109,6 +103,13 @@ def glass(ior: float = 1.5, color=(1.0, 1.0, 1.0), name: str = "glass") -> Trace
     return TraceMaterial("glass", color, ior=ior, name=name)
 
 
+def _trace_material(component: str, material: object) -> TraceMaterial:
+    """``material`` checked to be a :class:`TraceMaterial` (the error names ``component``'s field)."""
+    if not isinstance(material, TraceMaterial):
+        raise TypeError(f"{component}.material must be a TraceMaterial, got {type(material).__name__}")
+    return material
+
+
 class TracedSphereComponent(Component):
     """A sphere of ``radius`` (world units, times the entity's uniform world scale) at the entity's position."""
 
@@ -116,10 +117,8 @@ class TracedSphereComponent(Component):
         r = float(radius)
         if not (math.isfinite(r) and r > 0.0):
             raise ValueError(f"TracedSphereComponent.radius must be finite and > 0, got {radius!r}")
-        if not isinstance(material, TraceMaterial):
-            raise TypeError(f"TracedSphereComponent.material must be a TraceMaterial, got {type(material).__name__}")
         self.radius = r
-        self.material = material
+        self.material = _trace_material("TracedSphereComponent", material)
 
 
 class TracedMeshComponent(Component):
@@ -128,10 +127,8 @@ class TracedMeshComponent(Component):
     def __init__(self, mesh: str, material: TraceMaterial) -> None:
         if not isinstance(mesh, str) or not mesh:
             raise TypeError(f"TracedMeshComponent.mesh must be a mesh asset name, got {mesh!r}")
-        if not isinstance(material, TraceMaterial):
-            raise TypeError(f"TracedMeshComponent.material must be a TraceMaterial, got {type(material).__name__}")
         self.mesh = mesh
-        self.material = material
+        self.material = _trace_material("TracedMeshComponent", material)
 
 
 class PathTracerComponent(Component):
@@ -227,7 +224,12 @@ def gather(scene: Scene) -> TraceScene:
         raise ResourceError(scene.describe(cam_entity), "CameraComponent.projection",
                             f"the path tracer shoots perspective rays; got {camera.projection!r}")
     m = _world_of(scene, cam_entity)
-    axes = m[:3, :3] / np.linalg.norm(m[:3, :3], axis=0)
+    lengths = np.linalg.norm(m[:3, :3], axis=0)
+    if not np.all(np.isfinite(lengths) & (lengths > 0.0)):  # its axes, and so its rays, would be NaN
+        raise ResourceError(scene.describe(cam_entity), "TransformComponent.scale",
+                            f"the path tracer's camera needs a non-zero world scale on every axis (its axes give the "
+                            f"rays' directions); got axis lengths {lengths.tolist()}")
+    axes = m[:3, :3] / lengths
     materials: list[TraceMaterial] = []
     index: dict[int, int] = {}
 

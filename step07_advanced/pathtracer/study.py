@@ -39,18 +39,20 @@ SEED = 1
 def _tracer(backend: str, size: tuple[int, int]):
     """The kernel of ``backend`` on its own headless context/device (the reference solution's shaders), with the
     showcase scene gathered and uploaded and one sample run (everything compiled)."""
-    from step07_advanced import solutions
+    from gandalf_core.app.cli import load_impl
+
+    reference_impl = load_impl("step07_advanced")  # the solutions, or your exercises where there are none
 
     from .scene import build_scene
 
     if backend == "opengl":
         from .compute_gl import GLPathTracer
 
-        kernel = GLPathTracer.standalone(solutions, *size)
+        kernel = GLPathTracer.standalone(reference_impl, *size)
     else:
         from .compute_wgpu import WGPUPathTracer
 
-        kernel = WGPUPathTracer.standalone(solutions, *size)
+        kernel = WGPUPathTracer.standalone(reference_impl, *size)
     scene = build_scene(kernel, samples=1, seed=SEED)
     scene.update(1 / 60)  # TransformSystem, then PathTraceSystem: gather, BVH, upload, one sample
     kernel.finish()

@@ -115,13 +115,15 @@ def render(backend: str, maps, frames: int, repeats: int) -> tuple[np.ndarray, f
     import importlib
 
     from gandalf_core import Application
-    from step07_advanced import solutions
+    from gandalf_core.app.cli import load_impl
+
+    reference_impl = load_impl("step07_advanced")  # the solutions, or your exercises where there are none
 
     from .scene import build_scene
 
     with Application(backend, *SIZE, headless=True, fixed_dt=1 / 60) as app:
-        importlib.import_module(f"{__package__}.{backend}").register_shaders(app, solutions)
-        app.add_scene(build_scene(solutions, ibl=maps))
+        importlib.import_module(f"{__package__}.{backend}").register_shaders(app, reference_impl)
+        app.add_scene(build_scene(reference_impl, ibl=maps))
         app.run(frames=2)
         picture = app.capture()
         times = []

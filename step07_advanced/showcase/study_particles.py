@@ -90,7 +90,9 @@ class _GPURunner:
 
     def __init__(self, backend: str, state: np.ndarray) -> None:
         from gandalf_core import Application
-        from step07_advanced import solutions
+        from gandalf_core.app.cli import load_impl
+
+        reference_impl = load_impl("step07_advanced")  # the solutions, or your exercises where there are none
 
         self.backend, self.start = backend, np.array(state, dtype=np.float32)
         self.app = Application(backend, 8, 8, headless=True)
@@ -98,12 +100,12 @@ class _GPURunner:
         if backend == "opengl":
             from .compute_gl import GLParticleKernel
 
-            self.kernel = GLParticleKernel(renderer.ctx, solutions, self.start)
+            self.kernel = GLParticleKernel(renderer.ctx, reference_impl, self.start)
             self.device_name = renderer.ctx.info.get("GL_RENDERER", "OpenGL")
         else:
             from .compute_wgpu import WGPUParticleKernel
 
-            self.kernel = WGPUParticleKernel(renderer.device, solutions, self.start)
+            self.kernel = WGPUParticleKernel(renderer.device, reference_impl, self.start)
             self.device_name = str(renderer.adapter.info.get("device", "WebGPU"))
 
     def reset(self) -> None:

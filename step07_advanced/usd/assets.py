@@ -14,7 +14,7 @@ from pxr import Gf, Sdf, Usd, UsdGeom, UsdShade, Vt
 
 from gandalf_core.resources import CubeTextureData, MaterialData, MeshData, ResourceError, TextureData, srgb_to_linear
 
-from .attributes import FileContext, authored, numeric_array, read, read_floats, write
+from .attributes import FileContext, authored, mesh_attribute, numeric_array, read, read_floats, write
 from .mapping import CUBE_FACE_SUFFIXES, PREVIEW_ST_READER, PREVIEW_SURFACE, PREVIEW_TEXTURE
 
 T = Sdf.ValueTypeNames
@@ -102,7 +102,7 @@ def read_mesh(ctx: FileContext, prim: Usd.Prim) -> tuple[str, MeshData]:
     try:
         return name, MeshData(**fields, name=read(ctx, prim, "gandalf:meshName", "string", name))
     except ResourceError as exc:
-        raise ctx.fail(prim, exc.field, exc.detail) from None
+        raise ctx.fail(prim, mesh_attribute(exc.field), exc.detail) from None
 
 
 # --- materials ----------------------------------------------------------------------------------------
@@ -262,17 +262,33 @@ def write_texture(stage: Usd.Stage, path: str, name: str, texture: TextureData |
         write(prim, "gandalf:wrap", T.String, texture.wrap)
 
 
-def read_texture(ctx: FileContext, prim: Usd.Prim, folder: Path) -> tuple[str, TextureData | CubeTextureData]:
+def _texture_paths(ctx: FileContext, prim: Usd.Prim, attribute: str, folder: Path, allow_outside: bool) -> list[Path]:
+    """The PNG files of ``attribute`` (an asset[]), relative ones resolved against ``folder``; each must exist and,
+    after symlinks are followed, lie inside ``folder`` unless ``allow_outside``."""
+    root = folder.resolve()
+    out = []
+    for asset in read(ctx, prim, attribute, "asset[]"):
+        given = Path(asset.path)
+        file = (given if given.is_absolute() else folder / given).resolve()
+        if not allow_outside and not file.is_relative_to(root):
+            raise ctx.fail(prim, attribute, f"the texture file @{asset.path}@ ({file}) lies outside the scene's "
+                                            f"folder {root}: refused (load_scene(..., allow_outside=True) allows it)")
+        if file.suffix.lower() != ".png" or not file.is_file():
+            raise ctx.fail(prim, attribute, f"texture file {str(file)!r} is missing or not a .png")
+        out.append(file)
+    return out
+
+
+def read_texture(ctx: FileContext, prim: Usd.Prim, folder: Path,
+                 allow_outside: bool = False) -> tuple[str, TextureData | CubeTextureData]:
+    """A texture prim's data; its files must lie in ``folder`` (the scene file's) unless ``allow_outside``."""
     name = read(ctx, prim, "gandalf:name", "string", prim.GetName())
     kind = read(ctx, prim, "gandalf:kind", "string")
-    files = [Path(a.path) for a in read(ctx, prim, "gandalf:files", "asset[]")]
+    files = read(ctx, prim, "gandalf:files", "asset[]")
     expected = 6 if kind == "cube" else 1
     if kind not in ("cube", "2d") or len(files) != expected:
         raise ctx.fail(prim, "gandalf:files", f"a '{kind}' texture needs {expected} file(s), got {len(files)}")
-    paths = [f if f.is_absolute() else folder / f for f in files]
-    for f in paths:
-        if f.suffix.lower() != ".png" or not f.is_file():
-            raise ctx.fail(prim, "gandalf:files", f"texture file {str(f)!r} is missing or not a .png")
+    paths = _texture_paths(ctx, prim, "gandalf:files", folder, allow_outside)
     settings = {
         "srgb": read(ctx, prim, "gandalf:srgb", "bool", True),
         "filter": read(ctx, prim, "gandalf:filter", "string", "linear"),
@@ -282,14 +298,11 @@ def read_texture(ctx: FileContext, prim: Usd.Prim, folder: Path) -> tuple[str, T
         "name": read(ctx, prim, "gandalf:textureName", "string", name),
     }
     if kind == "cube" and authored(prim, "gandalf:levelFiles"):
-        level_files = [Path(a.path) for a in read(ctx, prim, "gandalf:levelFiles", "asset[]")]
+        level_files = _texture_paths(ctx, prim, "gandalf:levelFiles", folder, allow_outside)
         if len(level_files) % 6:
             raise ctx.fail(prim, "gandalf:levelFiles", f"needs 6 files per mip level, got {len(level_files)}")
         images = []
         for f in level_files:
-            f = f if f.is_absolute() else folder / f
-            if f.suffix.lower() != ".png" or not f.is_file():
-                raise ctx.fail(prim, "gandalf:levelFiles", f"texture file {str(f)!r} is missing or not a .png")
             try:
                 images.append(TextureData.from_file(f, mipmaps=False).pixels)
             except ResourceError as exc:
@@ -304,5 +317,7 @@ def read_texture(ctx: FileContext, prim: Usd.Prim, folder: Path) -> tuple[str, T
         return name, TextureData.from_file(paths[0], wrap=read(ctx, prim, "gandalf:wrap", "string", "repeat"),
                                            **settings)
     except ResourceError as exc:
-        raise ctx.fail(prim, "gandalf:" + exc.field, exc.detail) from None
+        # The image's own problems (its path, pixels, mode) are the problems of the file named in gandalf:files.
+        attribute = "gandalf:files" if exc.field in ("path", "pixels", "mode") else "gandalf:" + exc.field
+        raise ctx.fail(prim, attribute, exc.detail) from None
 

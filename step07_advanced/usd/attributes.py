@@ -121,3 +121,14 @@ def simple_value(value: Any) -> tuple[Sdf.ValueTypeName, Any]:
             raise ValueError(f"{value!r} has values that are not finite")
         return T.DoubleArray, Vt.DoubleArray.FromNumpy(a)
     raise TypeError(f"{type(value).__name__} values cannot be saved (use bool, int, float, str or floats)")
+
+
+#: MeshData's fields and the UsdGeom.Mesh attributes they are read from: an error names the attribute in the file.
+MESH_ATTRIBUTES = {"positions": "points", "indices": "faceVertexIndices", "normals": "normals", "uvs": "primvars:st",
+                   "tangents": "primvars:tangents", "colors": "primvars:displayColor",
+                   "patch_size": "gandalf:patchSize"}
+
+
+def mesh_attribute(field: str) -> str:
+    """The USD attribute a MeshData ``field`` came from (itself when it has no counterpart)."""
+    return MESH_ATTRIBUTES.get(field, field)

@@ -21,17 +21,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from gandalf_core.components import (
-    CameraComponent,
-    ClearColorComponent,
-    InfoComponent,
-    LightComponent,
-    LinkComponent,
-    MaterialComponent,
-    MeshComponent,
-    SkyboxComponent,
-    TransformComponent,
-)
+from gandalf_core import components as core
 
 FORMAT_VERSION = 1
 EXTENSIONS = {".usda": "usda", ".usdc": "usdc"}
@@ -45,15 +35,15 @@ SYSTEMS = "/Systems"
 
 # --8<-- [start:builtin]
 BUILTIN_TYPES = (
-    InfoComponent,
-    LinkComponent,
-    TransformComponent,
-    CameraComponent,
-    LightComponent,
-    MeshComponent,
-    MaterialComponent,
-    ClearColorComponent,
-    SkyboxComponent,
+    core.InfoComponent,
+    core.LinkComponent,
+    core.TransformComponent,
+    core.CameraComponent,
+    core.LightComponent,
+    core.MeshComponent,
+    core.MaterialComponent,
+    core.ClearColorComponent,
+    core.SkyboxComponent,
 )
 
 # LightComponent.kind <-> UsdLux prim type.

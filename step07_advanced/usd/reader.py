@@ -33,8 +33,8 @@ from gandalf_core.ecs import Component, Scene
 from gandalf_core.resources import MaterialData, ResourceError, TextureData, linear_to_srgb
 
 from . import assets as asset_prims
-from . import foreign
-from .attributes import FileContext, authored, read, read_float, read_floats
+from . import foreign, units
+from .attributes import FileContext, authored, mesh_attribute, read, read_float, read_floats
 from .errors import USDSceneError, USDSceneWarning
 from .foreign import PreviewSurface, default_preview_material, inside
 from .mapping import ASSETS, ENTITY_MESH_MARK, FORMAT_VERSION, LIGHT_KINDS, MATERIALS, MESHES, SYSTEMS, TEXTURES
@@ -154,6 +154,9 @@ class _Reader:
         self._cameras_seen = 0
         self._layer_assets: dict[str, object] = {}  # referenced gandalf files' assets, by layer
         self.system_prims: dict[int, Usd.Prim] = {}
+        #: (rotation quaternion, metres per unit) taking the stage's up axis and unit to the engine's Y-up metres,
+        #: applied to every root entity; None for a Y-up stage in metres (gandalf's own files).
+        self.stage_to_engine = units.stage_frame(stage)
 
     def scene_named(self, name: str | None) -> Scene:
         ctx, stage = self.ctx, self.stage
@@ -226,7 +229,8 @@ class _Reader:
         for kind, folder, read_one, register in (
             ("mesh", MESHES, asset_prims.read_mesh, scene.assets.mesh),
             ("material", MATERIALS, asset_prims.read_material, scene.assets.material),
-            ("texture", TEXTURES, lambda ctx, p: asset_prims.read_texture(ctx, p, self.path.parent),
+            ("texture", TEXTURES,
+             lambda ctx, p: asset_prims.read_texture(ctx, p, self.path.parent, self.allow_outside),
              scene.assets.texture),
         ):
             parent = self.stage.GetPrimAtPath(folder)
@@ -251,12 +255,14 @@ class _Reader:
         transform, resets = self.transform(prim)
         parent = prim.GetParent()
         parent_entity = None if resets else self.entity_of.get(str(parent.GetPath()))
+        if parent_entity is None and transform is not None and self.stage_to_engine is not None:
+            transform = units.to_engine_frame(transform, *self.stage_to_engine)  # a root: into Y-up metres
         if parent_entity is not None or read(ctx, prim, "gandalf:link", "bool", False):
             out.append(LinkComponent(parent_entity))
         if transform is not None:
             out.append(transform)
         if prim.GetTypeName() == "Camera":
-            out.append(self.guard(prim, "gandalf:fov", lambda: self.camera(prim)))
+            out.append(self.camera(prim))
         light = self.light(prim)
         if light is not None:
             out.append(light)
@@ -307,7 +313,7 @@ class _Reader:
                 if data is None:
                     self.notes.append((path, f"prim type '{prim.GetTypeName()}' is not drawn (no engine mapping)"))
         except ResourceError as exc:
-            raise self.ctx.fail(prim, exc.field, exc.detail) from None
+            raise self.ctx.fail(prim, mesh_attribute(exc.field), exc.detail) from None
         if data is None:
             return []
         scene.assets.mesh(path, data)
@@ -444,12 +450,13 @@ class _Reader:
             return None, False
         if list(order) != _XFORM_OPS:
             return self.any_transform(prim), UsdGeom.Xformable(prim).GetResetXformStack()
-        t = read_floats(ctx, prim, "xformOp:translate", ("double3",), 3)
-        q = read(ctx, prim, "xformOp:orient", "quatd")
+        # Doubles as gandalf writes them, or the floats (and halves) many exporters write: widened exactly.
+        t = read_floats(ctx, prim, "xformOp:translate", ("double3", "float3", "half3"), 3)
+        q = read(ctx, prim, "xformOp:orient", ("quatd", "quatf", "quath"))
         quat = np.array([q.GetReal(), *q.GetImaginary()], dtype=np.float64)  # USD real-first = gandalf (w, x, y, z)
         if not np.isfinite(quat).all() or float(quat @ quat) < 1e-24:
             raise ctx.fail(prim, "xformOp:orient", f"must be a finite, non-zero quaternion, got {quat.tolist()}")
-        s = read_floats(ctx, prim, "xformOp:scale", ("double3",), 3)
+        s = read_floats(ctx, prim, "xformOp:scale", ("double3", "float3", "half3"), 3)
         component = TransformComponent(t, scale=s)
         component.quaternion = quat  # exactly as saved (the constructor would renormalise)
         return component, False
@@ -484,6 +491,13 @@ class _Reader:
         aperture = usd.GetVerticalApertureAttr().Get()
         # Files from other tools lack the exact gandalf: values; fall back to the standard camera attributes
         # (read only then: a gandalf file's own values must not depend on them).
+        # Each field's source in this file, so an error names the attribute the file holds.
+        source = {"fov": "gandalf:fov" if authored(prim, "gandalf:fov") else "focalLength",
+                  "near": "gandalf:near" if authored(prim, "gandalf:near") else "clippingRange",
+                  "far": "gandalf:far" if authored(prim, "gandalf:far") else "clippingRange",
+                  "height": "gandalf:height" if authored(prim, "gandalf:height") else "verticalAperture",
+                  "aspect": "gandalf:aspect", "projection": "projection", "primary": "gandalf:primary",
+                  "reverse_z": "gandalf:reverseZ"}
         if authored(prim, "gandalf:fov"):
             fov = read_float(ctx, prim, "gandalf:fov")
         else:
@@ -492,10 +506,10 @@ class _Reader:
                 raise ctx.fail(prim, "focalLength", f"needs a positive focal length and aperture, got {focal}, "
                                                     f"{aperture}")
             fov = math.degrees(2.0 * math.atan(aperture / 2.0 / focal))
-        return CameraComponent(
-            fov,
-            read_float(ctx, prim, "gandalf:near", float(clip[0])),
-            read_float(ctx, prim, "gandalf:far", float(clip[1]), allow_inf=True),
+        values = dict(
+            fov=fov,
+            near=read_float(ctx, prim, "gandalf:near", float(clip[0])),
+            far=read_float(ctx, prim, "gandalf:far", float(clip[1]), allow_inf=True),
             projection=str(projection),
             height=read_float(ctx, prim, "gandalf:height", aperture / 10.0),
             aspect=read_float(ctx, prim, "gandalf:aspect", None),
@@ -503,6 +517,15 @@ class _Reader:
             primary=read(ctx, prim, "gandalf:primary", "bool", self._first_camera()),
             reverse_z=read(ctx, prim, "gandalf:reverseZ", "bool", False),
         )
+        try:
+            return CameraComponent(**values)
+        except (ValueError, TypeError) as exc:
+            # The first field the message names (a far below near names both: CameraComponent.far first).
+            message = str(exc)
+            named = sorted((message.find(f"CameraComponent.{f}"), f) for f in source
+                           if f"CameraComponent.{f}" in message)
+            attribute = source[named[0][1]] if named else "projection"
+            raise ctx.fail(prim, attribute, message) from None
 
     def _first_camera(self) -> bool:
         first = not self._cameras_seen
@@ -520,13 +543,17 @@ class _Reader:
                 color = read_floats(ctx, prim, "gandalf:lightColor", ("double3",), 3)
             else:  # another tool's light: the standard (linear) colour
                 color = linear_to_srgb(read_floats(ctx, prim, "inputs:color", ("color3f",), 3, np.ones(3)))
+            light_range = read_float(ctx, prim, "gandalf:range", 0.0)
             if authored(prim, "gandalf:intensity"):
                 intensity = read_float(ctx, prim, "gandalf:intensity")
-            else:
-                intensity = read_float(ctx, prim, "inputs:intensity", 1.0) * 2.0 ** read_float(
-                    ctx, prim, "inputs:exposure", 0.0)  # UsdLux: intensity x 2^exposure
+            else:  # another tool's light: its power, and a range where it has faded below what 8 bits show
+                intensity, light_range = units.lux_intensity(
+                    prim, read_float(ctx, prim, "inputs:intensity", 1.0), read_float(ctx, prim, "inputs:exposure", 0.0),
+                    self.stage_to_engine[1] if self.stage_to_engine else 1.0, self.notes)
+                if authored(prim, "gandalf:range"):
+                    light_range = read_float(ctx, prim, "gandalf:range")
             return LightComponent(
-                kind, color, intensity, read_float(ctx, prim, "gandalf:range", 0.0),
+                kind, color, intensity, light_range,
                 cast_shadows=read(ctx, prim, "gandalf:castShadows", "bool", False),
                 shadow_extent=read_float(ctx, prim, "gandalf:shadowExtent", 10.0),
                 shadow_depth=read_float(ctx, prim, "gandalf:shadowDepth", 50.0),

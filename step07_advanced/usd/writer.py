@@ -11,17 +11,7 @@ from pathlib import Path
 import numpy as np
 from pxr import Gf, Sdf, Usd, UsdGeom, UsdLux, UsdShade
 
-from gandalf_core.components import (
-    CameraComponent,
-    ClearColorComponent,
-    InfoComponent,
-    LightComponent,
-    LinkComponent,
-    MaterialComponent,
-    MeshComponent,
-    SkyboxComponent,
-    TransformComponent,
-)
+from gandalf_core import components as core
 from gandalf_core.ecs import Scene, System
 from gandalf_core.resources import CubeTextureData, srgb_to_linear
 
@@ -134,7 +124,7 @@ class _Writer:
             parent = self.scene.parent_of(entity)
             parent_path = self.prim_of[parent] if parent is not None else ROOT
             scope = names.setdefault(parent_path, UniqueNames(reserved=(ENTITY_MESH,)))
-            info = self.scene.try_component(entity, InfoComponent)
+            info = self.scene.try_component(entity, core.InfoComponent)
             prim_path = f"{parent_path}/{scope.take(info.name if info else 'entity')}"
             self.prim_of[entity] = prim_path
             self.write_entity(entity, prim_path, root)
@@ -156,7 +146,7 @@ class _Writer:
         scene = self.scene
         order = [e for e in scene.entities if scene.parent_of(e) is None]
         for entity in order:  # grows while iterating: a breadth-first walk without recursion
-            link = scene.try_component(entity, LinkComponent)
+            link = scene.try_component(entity, core.LinkComponent)
             if link is not None:
                 order.extend(link.children)
         return order
@@ -205,17 +195,17 @@ class _Writer:
     # --- one entity ---------------------------------------------------------------------------------
     def write_entity(self, entity: uuid.UUID, path: str, root: Usd.Prim) -> None:
         comps = {type(c): c for c in self.scene.components_of(entity)}
-        camera, light = comps.get(CameraComponent), comps.get(LightComponent)
+        camera, light = comps.get(core.CameraComponent), comps.get(core.LightComponent)
         type_name = "Camera" if camera else LIGHT_TYPES[light.kind] if light else "Xform"
         prim = self.stage.DefinePrim(path, type_name)
-        info = comps.get(InfoComponent)
+        info = comps.get(core.InfoComponent)
         if info is not None:
             write(prim, "gandalf:name", T.String, info.name)
             write(prim, "gandalf:tag", T.String, info.tag)
-        if LinkComponent in comps:
+        if core.LinkComponent in comps:
             write(prim, "gandalf:link", T.Bool, True)
-        if TransformComponent in comps:
-            transform = comps[TransformComponent]
+        if core.TransformComponent in comps:
+            transform = comps[core.TransformComponent]
             for field in ("translation", "quaternion", "scale"):
                 # A field's live view can hold NaN, or a zero quaternion: refuse what the reader would refuse.
                 value = getattr(transform, field)
@@ -228,8 +218,8 @@ class _Writer:
         if light is not None:
             self.write_light(prim, light, schema=type_name != "Camera")
         mesh_prim = None
-        if MeshComponent in comps:
-            name = comps[MeshComponent].mesh
+        if core.MeshComponent in comps:
+            name = comps[core.MeshComponent].mesh
             write(prim, "gandalf:mesh", T.String, name)
             if name in self.mesh_paths:
                 prim.CreateRelationship("gandalf:meshAsset", custom=True).SetTargets([self.mesh_paths[name]])
@@ -237,15 +227,15 @@ class _Writer:
                 mesh_prim = self.stage.DefinePrim(f"{path}/{ENTITY_MESH}", "Mesh")
                 mesh_prim.GetReferences().AddInternalReference(self.mesh_paths[name])
                 write(mesh_prim, ENTITY_MESH_MARK, T.Bool, True)
-        if MaterialComponent in comps:
-            name = comps[MaterialComponent].material
+        if core.MaterialComponent in comps:
+            name = comps[core.MaterialComponent].material
             write(prim, "gandalf:material", T.String, name)
             if name in self.material_paths and mesh_prim is not None:  # the standard binding, on the geometry
                 material = UsdShade.Material(self.stage.GetPrimAtPath(self.material_paths[name]))
                 UsdShade.MaterialBindingAPI.Apply(mesh_prim).Bind(material)
         for component_type, attr, type_name_, value in (
-            (ClearColorComponent, "gandalf:clearColor", T.Double4, lambda c: Gf.Vec4d(*map(float, c.color))),
-            (SkyboxComponent, "gandalf:skybox", T.String, lambda c: c.texture),
+            (core.ClearColorComponent, "gandalf:clearColor", T.Double4, lambda c: Gf.Vec4d(*map(float, c.color))),
+            (core.SkyboxComponent, "gandalf:skybox", T.String, lambda c: c.texture),
         ):
             if component_type in comps:
                 rel = root.GetRelationship(attr + "Entity")
@@ -257,7 +247,7 @@ class _Writer:
                 root.CreateRelationship(attr + "Entity", custom=True).SetTargets([path])
 
     # --8<-- [start:transform]
-    def write_transform(self, prim: Usd.Prim, t: TransformComponent) -> None:
+    def write_transform(self, prim: Usd.Prim, t: core.TransformComponent) -> None:
         xform = UsdGeom.Xformable(prim)
         w, x, y, z = (float(v) for v in t.quaternion)  # gandalf stores (w, x, y, z); Gf.Quatd takes real first
         xform.AddTranslateOp(UsdGeom.XformOp.PrecisionDouble).Set(Gf.Vec3d(*map(float, t.translation)))
@@ -265,7 +255,7 @@ class _Writer:
         xform.AddScaleOp(UsdGeom.XformOp.PrecisionDouble).Set(Gf.Vec3d(*map(float, t.scale)))
     # --8<-- [end:transform]
 
-    def write_camera(self, prim: Usd.Prim, c: CameraComponent) -> None:
+    def write_camera(self, prim: Usd.Prim, c: core.CameraComponent) -> None:
         usd = UsdGeom.Camera(prim)
         aspect = DEFAULT_ASPECT if c.aspect is None else c.aspect
         usd.CreateProjectionAttr(c.projection)
@@ -287,7 +277,7 @@ class _Writer:
         write(prim, "gandalf:reverseZ", T.Bool, bool(c.reverse_z))
 
     # --8<-- [start:light]
-    def write_light(self, prim: Usd.Prim, light: LightComponent, schema: bool) -> None:
+    def write_light(self, prim: Usd.Prim, light: core.LightComponent, schema: bool) -> None:
         if schema:  # the standard UsdLux inputs (linear colour), for other USD tools
             api = UsdLux.LightAPI(prim)
             api.CreateColorAttr(Gf.Vec3f(*map(float, srgb_to_linear(light.color))))

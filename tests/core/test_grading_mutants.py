@@ -6,14 +6,9 @@ Each case runs ``python -m gandalf_tools.grading.mutants`` in a subprocess on st
 
 from __future__ import annotations
 
-import json
-import os
-import subprocess
-import sys
-import textwrap
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
+from grading_checks import run_check
 
 DEFINITIONS = """
 import math
@@ -36,20 +31,7 @@ def _(pkg):
 
 
 def _run(tmp_path: Path, *args: str) -> tuple[int, str, list[dict]]:
-    folder = tmp_path / "mutants"
-    folder.mkdir(exist_ok=True)
-    (folder / "step01_window.py").write_text(textwrap.dedent(DEFINITIONS))
-    out = tmp_path / "outcomes.json"
-    env = {k: v for k, v in os.environ.items() if k != "GANDALF_IMPL"}
-    proc = subprocess.run(
-        [sys.executable, "-m", "gandalf_tools.grading.mutants", "--dir", str(folder), "--json", str(out), *args],
-        cwd=ROOT,
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
-    return proc.returncode, proc.stdout + proc.stderr, json.loads(out.read_text()) if out.exists() else []
+    return run_check("mutants", tmp_path, "mutants", DEFINITIONS, *args)
 
 
 def test_a_wrong_mutant_is_killed_and_an_unchanged_one_survives(tmp_path):

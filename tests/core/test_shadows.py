@@ -58,7 +58,7 @@ SHADOWED_WGSL = """
 #include "lit_vertex.wgsl"
 #include "shadow.wgsl"
 #include "material.wgsl"
-@fragment fn fs_main(in: VOut) -> @location(0) vec4<f32> {
+@fragment fn fs_main(in: LitOut) -> @location(0) vec4<f32> {
     let n = normalize(in.normal);
     var c = lights.ambient.rgb * material.color.rgb;
     for (var i = 0; i < lights.count.x; i++) {

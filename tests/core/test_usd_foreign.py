@@ -572,7 +572,9 @@ def test_cameras_and_lights_of_another_tool(tmp_path):
     assert main.primary and not side.primary, "the first camera of another tool's file is the primary one"
     assert main.fov == pytest.approx(2 * math.degrees(math.atan(0.5)), abs=1e-9)
     bulb = scene.get_component(found["bulb"], LightComponent)
-    assert bulb.kind == "point" and bulb.intensity == pytest.approx(12.0), "intensity x 2^exposure"
+    # intensity x 2^exposure, from a sphere of UsdLux's default radius 0.5: power / 4π = π · 12 · 0.5²
+    assert bulb.kind == "point" and bulb.intensity == pytest.approx(math.pi * 12.0 * 0.25), "intensity x 2^exposure"
+    assert bulb.range > 10.0, "another tool's point light falls off with the inverse square"
     np.testing.assert_allclose(bulb.color, linear_to_srgb(np.array([1.0, 0.5, 0.0])), atol=1e-6)
 
 

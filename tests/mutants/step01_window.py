@@ -65,6 +65,21 @@ def _(pkg):
     patch(pkg, "hue.hsv_to_rgb", hsv_to_rgb)
 
 
+@mutant(MUTANTS, STEP, "hsv_to_rgb", "tiny-negative-hue", "hue % 360 with six sectors: -1e-15 % 360 is 360.0, "
+        "sector 6 is off the table")
+def _(pkg):
+    def hsv_to_rgb(h, s, v):
+        sector = (h % 360.0) / 60.0
+        chroma = v * s
+        x = chroma * (1.0 - abs(sector % 2.0 - 1.0))
+        table = [(chroma, x, 0.0), (x, chroma, 0.0), (0.0, chroma, x), (0.0, x, chroma), (x, 0.0, chroma),
+                 (chroma, 0.0, x)]
+        r, g, b = table[int(sector)]
+        return (r + v - chroma, g + v - chroma, b + v - chroma)
+
+    patch(pkg, "hue.hsv_to_rgb", hsv_to_rgb)
+
+
 def _system(pkg, update):
     """A HueCycleSystem whose per-entity update is ``update(system, ts, hue_cycle, clear_color)``."""
     base = pkg.hue.HueCycleSystem

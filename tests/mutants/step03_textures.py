@@ -70,6 +70,7 @@ for _name, _text, _slips in [
     ("no-wrap", "bricks not numbered modulo the bricks per course (seam)", {"no_wrap": True}),
     ("only-brighter", "factors from [1, 1 + variation] instead of 1 ± variation", {"only_brighter": True}),
     ("drops-settings", "ignores the extra settings (name, wrap, filter)", {"drop_settings": True}),
+    ("no-clip", "brick_color x factor not clipped to [0, 1] (a bright brick goes past 1)", {"no_clip": True}),
 ]:
     mutant(MUTANTS, STEP, "brick_texture", _name, _text)(lambda pkg, _s=_slips: _bricks(pkg, **_s))
 
@@ -86,6 +87,18 @@ def _(pkg):
                 raise
             kwargs["mortar"] = 0
             return original(*args, **kwargs)
+
+    patch(pkg, "bricks.brick_texture", brick_texture)
+
+
+@mutant(MUTANTS, STEP, "brick_texture", "variation-upper-only", "checks variation <= 1 only: a negative one passes")
+def _(pkg):
+    original = pkg.bricks.brick_texture
+
+    def brick_texture(*args, variation=0.1, **kwargs):
+        if not variation <= 1.0:
+            raise ValueError(f"variation must be at most 1, got {variation}")
+        return original(*args, variation=abs(variation), **kwargs)
 
     patch(pkg, "bricks.brick_texture", brick_texture)
 
@@ -140,5 +153,30 @@ def _(pkg):
             n = n.copy()
             n[np.abs(n).max(axis=1) <= 0.0] = (0.0, 0.0, 1.0)
         return original(positions, n)
+
+    patch(pkg, "uvs.cube_cross_uvs", cube_cross_uvs)
+
+
+@mutant(MUTANTS, STEP, "cube_cross_uvs", "nan-only-check", "rejects NaN but lets an infinite position or normal pass")
+def _(pkg):
+    original = pkg.uvs.cube_cross_uvs
+
+    def cube_cross_uvs(positions, normals):
+        def finite(a):
+            return np.nan_to_num(np.asarray(a, dtype=np.float64), nan=np.nan, posinf=1e300, neginf=-1e300)
+
+        return original(finite(positions), finite(normals))
+
+    patch(pkg, "uvs.cube_cross_uvs", cube_cross_uvs)
+
+
+@mutant(MUTANTS, STEP, "cube_cross_uvs", "empty-accepted", "no vertices give an empty (0, 2) array instead of an error")
+def _(pkg):
+    original = pkg.uvs.cube_cross_uvs
+
+    def cube_cross_uvs(positions, normals):
+        if np.shape(positions) == (0, 3) and np.shape(normals) == (0, 3):
+            return np.zeros((0, 2))
+        return original(positions, normals)
 
     patch(pkg, "uvs.cube_cross_uvs", cube_cross_uvs)

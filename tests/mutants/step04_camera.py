@@ -50,6 +50,31 @@ for _name, _text, _slips in [
     mutant(MUTANTS, STEP, "perspective", _name, _text)(lambda pkg, _s=_slips: _perspective(pkg, **_s))
 
 
+@mutant(MUTANTS, STEP, "perspective", "inf-passes", "checks ranges with comparisons only: inf passes far > near "
+        "and aspect > 0 (NaN entries, no ValueError)")
+def _(pkg):
+    original = pkg.projection.perspective
+
+    def perspective(fovy_deg, aspect, near, far, depth_range="opengl"):
+        finite = [v if math.isfinite(v) else 1e300 for v in (fovy_deg, aspect, near, far)]
+        original(*finite, depth_range)  # the range checks as the reference makes them
+        return _unchecked(fovy_deg, aspect, near, far, depth_range)
+
+    patch(pkg, "projection.perspective", perspective)
+
+
+def _unchecked(fovy_deg, aspect, near, far, depth_range):
+    from gandalf_core.math import depth_range as resolve
+
+    lo, hi = resolve(depth_range)
+    f = 1.0 / math.tan(math.radians(fovy_deg) / 2.0)
+    with np.errstate(all="ignore"):
+        a = np.float64(-(hi * far - lo * near)) / np.float64(far - near)
+        b = np.float64(-(hi - lo) * far * near) / np.float64(far - near)
+    return np.array([[f / aspect, 0, 0, 0], [0, f, 0, 0], [0, 0, a, b], [0, 0, -1.0, 0]], dtype=np.float64)
+
+
+
 # --- look_at ---------------------------------------------------------------------------------------
 
 

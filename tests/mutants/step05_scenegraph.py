@@ -151,6 +151,9 @@ def _camera(
 for _name, _text, _slips in [
     ("ignores-aspect", "drops the aspect argument", {"keep_aspect": False}),
     ("looks-away", "look_at_rotation(target, eye): turned the wrong way", {"swap": True}),
+    ("eye-target-swapped", "eye and target swapped: placed at the house's middle, looking out at the eye",
+     {"eye": (0.0, 0.8, 0.0), "target": (0.0, 1.8, 4.2)}),
+    ("off-centre", "looks past the house: the target a metre to its side", {"target": (1.0, 0.8, 0.0)}),
     ("radians-fov", "field of view given in radians (0.785 degrees)", {"fov": math.radians(45.0)}),
     ("too-far", "the camera ten times as far away", {"eye": (0.0, 8.8, 42.0)}),
     ("not-aimed", "placed but never turned towards the house", {"eye": (0.0, 4.0, 1.2), "aim": False}),

@@ -49,6 +49,9 @@ def _lights(pkg, **slips):
                     length = np.linalg.norm(towards)
                     if slips.get("unnormalised"):
                         positions[count, :3] = towards
+                    elif slips.get("unguarded"):
+                        with np.errstate(all="ignore"):
+                            positions[count, :3] = towards / length
                     else:
                         positions[count, :3] = towards / length if length > 0 else (0.0, 1.0, 0.0)
                 colors[count] = (*radiance, 0.0 if slips.get("no_range") else light.range)
@@ -71,6 +74,7 @@ for _name, _slip, _text in [
     ("silent-cap", "silent_cap", "drops the lights past MAX_LIGHTS without a warning"),
     ("no-range", "no_range", "leaves the range (w of the colour) at 0"),
     ("unnormalised", "unnormalised", "a directional light's direction not normalised (scaled transforms)"),
+    ("zero-axis-nan", "unguarded", "a zero Z axis divided by its zero length (NaN) instead of (0, 1, 0)"),
 ]:
     mutant(MUTANTS, STEP, "LightCollectionSystem", _name, _text)(lambda pkg, _s=_slip: _lights(pkg, **{_s: True}))
 

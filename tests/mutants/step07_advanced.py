@@ -87,6 +87,11 @@ NORMAL_MAP = [
     ("xy-swapped", "m.y along the tangent and m.x along the bitangent",
      [(NG, "vec3 r = t * m.x + b * m.y + n * m.z;", "vec3 r = t * m.y + b * m.x + n * m.z;"),
       (NW, "let r = t * m.x + b * m.y + n * m.z;", "let r = t * m.y + b * m.x + n * m.z;")]),
+    ("no-tangent-fallback", "divides by the tangent's length even when it is zero (a zero or parallel tangent: NaN)",
+     [(NG, "if (t_length > 1e-6) {", "if (true) {"), (NW, "if (t_length > 1e-6) {", "if (true) {")]),
+    ("no-result-fallback", "normalises the result even when it has no length (texel (0.5, 0.5, 0.5): NaN)",
+     [(NG, "return r_length > 1e-6 ? r / r_length : n;", "return r / r_length;"),
+      (NW, "return select(n, r / max(r_length, 1e-6), r_length > 1e-6);", "return r / r_length;")]),
 ]
 PG, PW = "particle_step.glsl", "particle_step.wgsl"
 PARTICLE_STEP = [
@@ -107,6 +112,9 @@ PARTICLE_STEP = [
     ("life-not-decreased", "forgets life -= dt",
      [(PG, "vec4(position, p.position.w - s.dt)", "vec4(position, p.position.w)"),
       (PW, "vec4<f32>(position, p.position.w - s.dt)", "vec4<f32>(position, p.position.w)")]),
+    ("velocity-w-zeroed", "writes velocity.w = 0 instead of keeping it",
+     [(PG, "vec4(velocity, p.velocity.w)", "vec4(velocity, 0.0)"),
+      (PW, "vec4<f32>(velocity, p.velocity.w)", "vec4<f32>(velocity, 0.0)")]),
     ("gravity-sign", "subtracts gravity (which already points down)",
      [(PG, "p.velocity.xyz + s.gravity.xyz * s.dt;", "p.velocity.xyz - s.gravity.xyz * s.dt;"),
       (PW, "p.velocity.xyz + s.gravity.xyz * s.dt;", "p.velocity.xyz - s.gravity.xyz * s.dt;")]),

@@ -17,7 +17,8 @@ PIXEL_TOLERANCE = 1
 
 # --8<-- [start:graded-test]
 @pytest.mark.exercise("hsv_to_rgb")
-@pytest.mark.parametrize("hue", [0.0, 30.0, 59.9, 60.0, 123.4, 180.0, 250.0, 300.0, 359.9, 360.0, 725.0, -30.0])
+@pytest.mark.parametrize("hue", [0.0, 30.0, 59.9, 60.0, 123.4, 180.0, 250.0, 300.0, 359.9, 360.0, 725.0, -30.0,
+                                 -1e-15])  # -1e-15 % 360 rounds to 360.0: it must still give the colour of hue 0
 @pytest.mark.parametrize("sat_val", [(0.0, 0.5), (0.7, 0.9), (1.0, 1.0)], ids=["s0-v0.5", "s0.7-v0.9", "s1-v1"])
 def test_hsv_to_rgb_matches_colorsys(impl, hue, sat_val):
     s, v = sat_val

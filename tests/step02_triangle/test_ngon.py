@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 from gandalf_core import Scene
+from gandalf_core.app.cli import load_impl
 from gandalf_core.components import MeshComponent
 from gandalf_core.resources import MeshData
 from step02_triangle.components import NGonComponent
@@ -92,9 +93,7 @@ def test_system_registers_meshes_under_the_mesh_components_name(impl):
 @pytest.mark.parametrize("create_app", [create_opengl, create_webgpu], ids=["opengl", "webgpu"])
 def test_the_step_scene_shows_the_hexagon(impl, create_app, monkeypatch):
     # Graded on the system alone: its mesh comes from the reference ngon_mesh, whatever the student's does.
-    from step02_triangle.solutions.ngon import ngon_mesh
-
-    monkeypatch.setattr(f"{impl.__name__}.ngon.ngon_mesh", ngon_mesh)
+    monkeypatch.setattr(f"{impl.__name__}.ngon.ngon_mesh", load_impl("step02_triangle").ngon.ngon_mesh)
     with create_app(headless=True, student=impl.__name__.endswith("exercises"), width=160, height=120) as app:
         app.run(frames=1)
         image = app.capture().astype(int)

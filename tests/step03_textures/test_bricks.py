@@ -124,6 +124,7 @@ def test_settings_reach_the_texture(impl):
 @pytest.mark.parametrize("kwargs,word", [
     ({"width": 0}, "width"), ({"height": 2.5}, "height"), ({"brick_size": (0, 8)}, "brick_size"),
     ({"mortar": -1}, "mortar"), ({"mortar": 8}, "mortar"), ({"variation": 1.5}, "variation"),
+    ({"variation": -0.1}, "variation"), ({"variation": float("nan")}, "variation"),
     ({"brick_color": (1.0, 0.2)}, "brick_color"), ({"mortar_color": (2.0, 0.0, 0.0)}, "mortar_color"),
 ])
 def test_bad_arguments_raise_value_errors_naming_them(impl, kwargs, word):
@@ -178,3 +179,19 @@ def test_bricks_come_out_both_darker_and_lighter(impl):
     assert darker >= 0.3 * total and lighter >= 0.3 * total, (
         f"of {total} bricks {darker} are darker and {lighter} lighter than brick_color {tuple(base[:3])}: "
         "draw the factor from [1 - variation, 1 + variation], both sides of 1")
+
+
+@pytest.mark.exercise("brick_texture")
+def test_bright_bricks_are_clipped_to_one(impl):
+    """The stub's rule "clip to [0, 1]": a bright brick colour times a factor up to 1.5 goes past 1 in some bricks;
+    those channels are 1 (255), every other texel stays within brick_color · [1 - variation, 1 + variation]."""
+    bright, var = (0.95, 0.9, 0.85), 0.5
+    tex = impl.brick_texture(64, 32, brick_size=(16, 8), mortar=1, brick_color=bright, mortar_color=MORTAR,
+                             variation=var, seed=3)
+    texels = _texels(tex)
+    bricks = texels[~_mortar_mask(64, 32, 16, 8, 1)]
+    lo = _bytes(np.asarray(bright) * (1 - var)) - BYTE
+    hi = np.minimum(_bytes(np.asarray(bright) * (1 + var)) + BYTE, 255)
+    assert ((bricks >= lo) & (bricks <= hi)).all(), f"brick texels outside {lo.tolist()}..{hi.tolist()}"
+    assert (bricks == 255).any(), (
+        f"brick_color {bright} with variation {var}: no brick reaches 255, but factors above 1.06 must clip to 1")

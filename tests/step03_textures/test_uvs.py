@@ -57,6 +57,9 @@ def test_the_dominant_normal_axis_picks_the_face(impl):
     (np.array([[0, 0, 0], [1, 1, np.nan], [1, 0, 1]]), np.eye(3)),
     (np.array([[0, 0, 0], [1, 1, 0], [1, 0, 0]]), np.eye(3)),  # flat: no volume
     (np.array([[0, 0, 0], [1, 1, 1], [1, 0, 1]]), np.array([[0, 0, 0], [0, 1, 0], [1, 0, 0]])),  # zero normal
+    (np.zeros((0, 3)), np.zeros((0, 3))),  # N > 0
+    (np.array([[0, 0, 0], [1, 1, np.inf], [1, 0, 1]]), np.eye(3)),  # "NaN/Inf": infinities too
+    (np.array([[0, 0, 0], [1, 1, 1], [1, 0, 1]]), np.array([[1, 0, 0], [0, -np.inf, 0], [0, 0, 1]])),
 ])
 def test_bad_input_raises_value_error(impl, positions, normals):
     with pytest.raises(ValueError):

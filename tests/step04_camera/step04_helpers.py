@@ -8,6 +8,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from gandalf_core import Application
+from gandalf_core.app.cli import load_impl
 from gandalf_core.render import RenderSystem
 from step04_camera.scene import build_scene, register_shaders
 
@@ -25,10 +26,10 @@ def make_app(backend: str, impl: object, size: tuple[int, int] = SIZE) -> Applic
 
 def only(**parts: object) -> SimpleNamespace:
     """An implementation taking ``parts`` from the code under test and the rest from the reference
-    solutions, so that each exercise is graded on its own."""
-    from step04_camera import solutions
-
-    return SimpleNamespace(**{"look_at": solutions.look_at, "OrbitCameraSystem": solutions.OrbitCameraSystem, **parts})
+    solutions, so that each exercise is graded on its own (in a student's release, which has no solutions, the rest
+    is the student's too)."""
+    reference = load_impl("step04_camera")
+    return SimpleNamespace(**{"look_at": reference.look_at, "OrbitCameraSystem": reference.OrbitCameraSystem, **parts})
 
 
 def rendered_camera(app: Application) -> tuple[np.ndarray, np.ndarray]:

@@ -45,6 +45,8 @@ def test_near_and_far_land_on_the_depth_range_ends(impl, depth_range):
     ((0, 1, 0.1, 10), "fovy_deg"), ((180, 1, 0.1, 10), "fovy_deg"), ((-30, 1, 0.1, 10), "fovy_deg"),
     ((math.nan, 1, 0.1, 10), "fovy_deg"), ((60, 0, 0.1, 10), "aspect"), ((60, -1, 0.1, 10), "aspect"),
     ((60, 1, 0, 10), "near"), ((60, 1, -1, 10), "near"), ((60, 1, 5, 5), "far"), ((60, 1, 5, 1), "far"),
+    # "or any value is not finite": infinities pass every range comparison, so they need their own check
+    ((60, 1, 0.1, math.inf), "far"), ((60, math.inf, 0.1, 10), "aspect"), ((60, 1, math.nan, 10), "near"),
 ])
 def test_degenerate_perspective_raises_naming_the_parameter(impl, args, name):
     with pytest.raises(ValueError, match=name):

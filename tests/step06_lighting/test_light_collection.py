@@ -108,3 +108,16 @@ def test_a_parented_light_is_placed_by_its_world_position(impl):
     assert np.allclose(positions, want, atol=1e-5), (
         f"light positions/directions {positions.tolist()} expected {want.tolist()}: use the world matrix "
         "(transform.world), not the local translation and rotation")
+
+
+@pytest.mark.exercise("LightCollectionSystem")
+def test_a_directional_light_without_an_axis_points_up(impl):
+    """"a zero axis gives (0, 1, 0)": a directional light whose transform squashes its Z axis to nothing (scale 0
+    along z) has no direction to normalise; the block holds (0, 1, 0, 0) there, not NaN."""
+    lights = [(LightComponent("directional", (1, 1, 1), 1.0), TransformComponent(scale=(1.0, 1.0, 0.0))),
+              (LightComponent("point", (1, 0.5, 0.2), 2.0), TransformComponent((0.0, 2.0, 0.0)))]
+    actual, expected = _packed(impl.LightCollectionSystem(), lights)
+    positions = np.frombuffer(actual, np.float32)[8:8 + 4 * MAX_LIGHTS].reshape(MAX_LIGHTS, 4)
+    assert np.all(np.isfinite(positions)), f"the directional light's slot holds {positions[0].tolist()}"
+    assert positions[0].tolist() == [0.0, 1.0, 0.0, 0.0], f"expected (0, 1, 0, 0), got {positions[0].tolist()}"
+    _assert_same_block(actual, expected)

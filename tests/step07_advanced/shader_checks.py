@@ -8,6 +8,8 @@ from pathlib import Path
 from types import ModuleType
 from typing import Any
 
+from gandalf_core.app.cli import load_impl
+
 #: backend -> the language of its shader files.
 LANGUAGE = {"opengl": "glsl", "webgpu": "wgsl"}
 #: A check: (language, folder of the shader files) -> None, or what is wrong.
@@ -31,9 +33,7 @@ def mutant_fails(tmp_path: Path, stem: str, language: str, edits: Iterable[tuple
     """Write the reference ``stem``.``language`` with the mutant's ``(file, old, new)`` edits of that file into
     ``tmp_path`` (each ``old`` must occur exactly once, so a changed solution breaks a stale mutant loudly); True
     when one of ``checks`` fails on it."""
-    from step07_advanced import solutions
-
-    source = impl_dir(solutions) / f"{stem}.{language}"
+    source = impl_dir(load_impl("step07_advanced")) / f"{stem}.{language}"
     text = source.read_text()
     for file, old, new in edits:
         if file == source.name:

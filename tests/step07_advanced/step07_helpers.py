@@ -17,6 +17,7 @@ import numpy as np
 from light_reference import incoming, radiance, to_srgb8
 
 from gandalf_core import Application, Scene, TransformComponent
+from gandalf_core.app.cli import load_impl
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.math import look_at_rotation
 from gandalf_core.resources import MaterialData, MeshData, TextureData, sky_cube, srgb_to_linear, uv_sphere
@@ -28,7 +29,6 @@ EYE = np.array([0.0, 0.0, 3.2])
 FOV = 45.0
 
 
-SOLUTIONS = Path(__file__).resolve().parents[2] / "step07_advanced" / "solutions"
 _with_reference: dict[tuple[str, tuple[str, ...]], SimpleNamespace] = {}
 
 
@@ -36,7 +36,8 @@ def with_reference_files(impl: ModuleType, stems: tuple[str, ...]) -> SimpleName
     """``impl`` with the reference solution's ``<stem>.glsl`` / ``<stem>.wgsl`` for ``stems``: a shader that
     includes two exercises' files grades one of them alone (else an unfinished other exercise would cost this
     one its points). A copy of ``impl``'s shader files in a temporary folder, made once per run; it stands
-    for ``impl`` wherever only its folder is read (``impl.__file__``)."""
+    for ``impl`` wherever only its folder is read (``impl.__file__``). In a student's release, which has no
+    solutions, the student's own files stand for the reference."""
     folder = Path(impl.__file__).resolve().parent
     key = (str(folder), tuple(stems))
     if key not in _with_reference:
@@ -45,9 +46,10 @@ def with_reference_files(impl: ModuleType, stems: tuple[str, ...]) -> SimpleName
         for path in folder.iterdir():
             if path.suffix in (".glsl", ".wgsl"):
                 shutil.copy2(path, target / path.name)
+        reference = Path(load_impl("step07_advanced").__file__).resolve().parent
         for stem in stems:
             for language in ("glsl", "wgsl"):
-                shutil.copy2(SOLUTIONS / f"{stem}.{language}", target / f"{stem}.{language}")
+                shutil.copy2(reference / f"{stem}.{language}", target / f"{stem}.{language}")
         (target / "__init__.py").write_text("")
         _with_reference[key] = SimpleNamespace(__file__=str(target / "__init__.py"), __name__=impl.__name__)
     return _with_reference[key]

@@ -36,6 +36,7 @@ HINT = {
     "blur": "sum kernel_weight(i) * load_texel(clamp(p + i * dir, 0, image_size() - 1)) for i = -radius..radius",
     "border": "clamp-to-edge: clamp each tap's coordinates to 0..image_size() - 1 (no wrap, no zero padding)",
     "impulse": "a one-pixel impulse must give the kernel back, along dir only (use dir, don't swap x and y)",
+    "alpha": "blur all four channels: return the whole weighted sum, alpha included (not 1, not the centre's)",
 }
 
 
@@ -188,6 +189,13 @@ def check_borders(flt) -> str | None:
     return None
 
 
+def check_alpha(flt) -> str | None:
+    """"Return the sum (all four channels)": a translucent image (random alpha) blurs its alpha like its colours."""
+    image = noise_image(29, 17, seed=12)
+    image[..., 3] = np.random.default_rng(13).integers(0, 256, size=image.shape[:2], dtype=np.uint8)
+    return _compare_image(flt, image, "separable", 4, "alpha")
+
+
 def check_constant(flt) -> str | None:
     image = np.empty((23, 37, 4), dtype=np.uint8)
     image[:] = (90, 161, 40, 255)
@@ -219,7 +227,8 @@ def check_impulse(flt) -> str | None:
 CHECKS = {
     "blur_kernel": {"tables": check_weight_tables, "sums": check_weight_sums, "identity": check_identity},
     "convolve": {"reference": check_reference, "radius_zero": check_radius_zero, "one_pixel": check_one_pixel,
-                 "borders": check_borders, "constant": check_constant, "impulse": check_impulse},
+                 "borders": check_borders, "constant": check_constant, "impulse": check_impulse,
+                 "alpha": check_alpha},
 }
 
 
@@ -374,6 +383,24 @@ WEIGHT_MUTANTS = {  # name -> (sigma, first tap, last tap, normaliser, radius-0 
 }
 
 CONVOLVE_MUTANTS = {  # name -> (GLSL body, WGSL body) of blur_pass
+    "alpha forced to 1": (
+        "ivec2 last = image_size() - 1; vec4 sum = vec4(0.0);\n"
+        "    for (int i = -radius; i <= radius; ++i) {\n"
+        "        sum += kernel_weight(i) * load_texel(clamp(p + i * dir, ivec2(0), last)); }\n"
+        "    return vec4(sum.rgb, 1.0);",
+        "let last = image_size() - 1; var sum = vec4<f32>(0.0);\n"
+        "    for (var i = -radius; i <= radius; i++) {\n"
+        "        sum += kernel_weight(i) * load_texel(clamp(p + i * dir, vec2<i32>(0), last)); }\n"
+        "    return vec4<f32>(sum.rgb, 1.0);"),
+    "alpha of the centre pixel, not blurred": (
+        "ivec2 last = image_size() - 1; vec4 sum = vec4(0.0);\n"
+        "    for (int i = -radius; i <= radius; ++i) {\n"
+        "        sum += kernel_weight(i) * load_texel(clamp(p + i * dir, ivec2(0), last)); }\n"
+        "    return vec4(sum.rgb, load_texel(p).a);",
+        "let last = image_size() - 1; var sum = vec4<f32>(0.0);\n"
+        "    for (var i = -radius; i <= radius; i++) {\n"
+        "        sum += kernel_weight(i) * load_texel(clamp(p + i * dir, vec2<i32>(0), last)); }\n"
+        "    return vec4<f32>(sum.rgb, load_texel(p).a);"),
     "wrap instead of clamp": (
         "ivec2 s = image_size(); vec4 sum = vec4(0.0);\n"
         "    for (int i = -radius; i <= radius; ++i) {\n"

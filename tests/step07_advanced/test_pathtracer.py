@@ -194,6 +194,11 @@ def check_hit_edges(language: str, include_dir: Path) -> str | None:
         ((1, 0, 0), (1, 0, 0), (0, 0, 0), 1, 1e-4, 1e30, -1.0),      # on the surface, leaving
         ((1, 0, 0), (-1, 0, 0), (0, 0, 0), 1, 1e-4, 1e30, 2.0),      # on the surface, entering
         ((0, 0, 0), (0, 0, -1), (0, 0, -5), 2, 1e-4, 1e30, 3.0),     # a bigger sphere
+        # Both bounds strict, with roots that every stable formula computes exactly (powers of two; sqrt of 1, 4, 16):
+        ((1, 0, 0), (1, 0, 0), (0, 0, 0), 1, 0.0, 1e30, -1.0),       # on the surface, leaving: root 0 is not > t_min 0
+        ((1, 0, 0), (-1, 0, 0), (0, 0, 0), 1, 0.0, 1e30, 2.0),       # on the surface, entering: not 0, the far root
+        ((0, 0, 0), (0, 0, -1), (0, 0, -4), 2, 3.0, 6.0, -1.0),      # the far root 6 exactly on t_max: no hit
+        ((0, 0, 0), (0, 0, -1), (0, 0, -4), 2, 3.0, 6.5, 6.0),       # ... and just inside it
     ]
     o, d, c = (_f32([case[k] for case in cases]) for k in range(3))
     r, t_min, t_max, expected = (_f32([case[k] for case in cases]) for k in range(3, 7))
@@ -388,6 +393,14 @@ HIT_MUTANTS = [
     ("tangent-misses", "a zero discriminant (a tangent ray) counted as a miss",
      [(HG, "if (discriminant < 0.0) {", "if (discriminant <= 0.0) {"),
       (HW, "if (discriminant < 0.0) {", "if (discriminant <= 0.0) {")]),
+    ("inclusive-bounds", "t_min <= t <= t_max: a root exactly on a bound counts (the stub says strict)",
+     [(HG, "if (t0 > t_min && t0 < t_max)", "if (t0 >= t_min && t0 <= t_max)"),
+      (HG, "if (t1 > t_min && t1 < t_max)", "if (t1 >= t_min && t1 <= t_max)"),
+      (HW, "if (t0 > t_min && t0 < t_max)", "if (t0 >= t_min && t0 <= t_max)"),
+      (HW, "if (t1 > t_min && t1 < t_max)", "if (t1 >= t_min && t1 <= t_max)")]),
+    ("inclusive-t-max", "t < t_max written t <= t_max",
+     [(HG, "if (t1 > t_min && t1 < t_max)", "if (t1 > t_min && t1 <= t_max)"),
+      (HW, "if (t1 > t_min && t1 < t_max)", "if (t1 > t_min && t1 <= t_max)")]),
     ("zero-on-miss", "returns 0 instead of -1 for a miss",
      [(HG, "    return -1.0;\n}", "    return 0.0;\n}"), (HW, "    return -1.0;\n}", "    return 0.0;\n}")]),
 ]

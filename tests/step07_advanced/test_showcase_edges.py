@@ -64,6 +64,31 @@ def test_perturb_normal_is_unit_and_orthogonalises_the_tangent(impl, language):
             "vector)")
 
 
+@pytest.mark.exercise("normal_map")
+@pytest.mark.parametrize("language", LANGUAGES)
+def test_perturb_normal_without_a_tangent_or_a_result_stays_finite(impl, language):
+    """The stub's fallbacks: a tangent of no usable length (zero, or parallel to n) takes any unit vector
+    perpendicular to n, so the result is unit with the texel's share along n (m.z / |m|, whichever perpendicular
+    was taken); a texel of (0.5, 0.5, 0.5) decodes to m = 0, a result of no length: n itself."""
+    n = np.array([0.0, 0.6, 0.8])
+    cases = [([0.0, 0.0, 0.0, 1.0], [0.7, 0.35, 0.9]), ([0.0, 1.2, 1.6, -1.0], [0.25, 0.6, 0.8]),
+             ([1.0, 0.0, 0.0, 1.0], [0.5, 0.5, 0.5]), ([0.0, 0.0, 0.0, 1.0], [0.5, 0.5, 0.5])]
+    arrays = {"n": ("vec4", np.array([[*n, 0.0]] * len(cases), np.float32)),
+              "t": ("vec4", np.array([t for t, _ in cases], np.float32)),
+              "c": ("vec4", np.array([[*c, 0.0] for _, c in cases], np.float32))}
+    expr = ("vec4(perturb_normal(n.xyz, t, c.xyz), 0.0)" if language == "glsl"
+            else "vec4<f32>(perturb_normal(n.xyz, t, c.xyz), 0.0)")
+    got = evaluate(language, f'#include "normal_map.{language}"', expr, arrays, "vec4", impl_dir(impl))[:, :3]
+    for (tangent, texel), out in zip(cases, got):
+        m = np.asarray(texel) * 2.0 - 1.0
+        along = m[2] / np.linalg.norm(m) if np.linalg.norm(m) > 0 else 1.0
+        ok = (np.all(np.isfinite(out)) and abs(np.linalg.norm(out) - 1.0) <= TOLERANCE
+              and abs(float(np.dot(out, n)) - along) <= TOLERANCE)
+        assert ok, (f"{language}: perturb_normal(n={n.tolist()}, tangent={tangent}, texel={texel}) = {out.tolist()}: "
+                    f"expected a unit vector with n·result = {along:.4f} (hint: with no usable tangent take any "
+                    "unit vector perpendicular to n; with a result of no length return n)")
+
+
 PRELUDES = {
     "glsl": "struct Particle { vec4 position; vec4 velocity; };\n"
             "struct SimParams { vec4 gravity; vec4 emitter; float dt; float restitution; float floor_y; uint seed; };\n"
@@ -82,7 +107,7 @@ def test_the_floor_bounces_only_particles_moving_down(impl, language, part):
     dt, restitution, floor_y, gravity = 0.1, 0.5, 0.0, np.array([0.0, -9.81, 0.0])
     cases = [  # (position, velocity): falling through the floor, below it but rising, above it, resting on it
         ([0.0, 0.05, 0.0, 2.0], [1.0, -3.0, 0.0, 0.0]),
-        ([0.0, -0.5, 0.0, 2.0], [0.0, 2.0, 0.5, 0.0]),  # still below after the step, rising
+        ([0.0, -0.5, 0.0, 2.0], [0.0, 2.0, 0.5, 0.75]),  # still below after the step, rising; velocity.w kept
         ([1.0, 2.0, 0.0, 2.0], [0.0, 1.0, 0.0, 0.0]),
         ([0.0, 0.0, 0.0, 0.5], [0.0, 0.0, 0.0, 0.0]),
     ]

@@ -23,6 +23,7 @@ import pytest
 from shader_checks import LANGUAGE, impl_dir
 from shader_harness import evaluate, gl_context
 
+from step07_advanced.showcase.particles import hash_u32  # lowbias32, the kernels' hash
 from step07_advanced.terrain.heightfield import height_np, normal_np, tess_level_np
 
 OUT_OF_RANGE = -1000.0
@@ -42,16 +43,6 @@ HINT = {
 
 
 # --- heightmaps defined in the prelude (GLSL, WGSL) and in numpy ---------------------------------------------
-def _hash_np(x: np.ndarray) -> np.ndarray:
-    x = np.asarray(x, dtype=np.uint32).copy()
-    x ^= x >> np.uint32(16)
-    x *= np.uint32(0x7FEB352D)
-    x ^= x >> np.uint32(15)
-    x *= np.uint32(0x846CA68B)
-    x ^= x >> np.uint32(16)
-    return x
-
-
 MAPS = {  # name -> (N, GLSL expression, WGSL expression) of the texel p = (column, row)
     "random": (16, "float(hm_hash(uint(p.x + p.y * 16)) >> 8u) / 16777216.0",
                "f32(hm_hash(u32(p.x + p.y * 16)) >> 8u) / 16777216.0"),
@@ -65,7 +56,7 @@ def map_np(name: str) -> np.ndarray:
     n = MAPS[name][0]
     row, col = np.mgrid[0:n, 0:n]
     if name == "random":
-        return ((_hash_np(col + row * n) >> np.uint32(8)).astype(np.float32) / np.float32(16777216.0))
+        return ((hash_u32(col + row * n) >> np.uint32(8)).astype(np.float32) / np.float32(16777216.0))
     if name == "ramp":
         return (col.astype(np.float32) * np.float32(3) + row.astype(np.float32) * np.float32(5)) / np.float32(512)
     return np.full((n, n), 0.375, dtype=np.float32)

@@ -20,6 +20,7 @@ from gandalf_core.app.cli import load_impl
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.resources import MeshData, ResourceError, cube
 from gandalf_tools.testing import psnr
+from step07_advanced import solutions
 from step07_advanced.terrain import opengl, patches, scene, webgpu
 from step07_advanced.terrain.heightfield import check_heights, encode_heights, fractal_heights, quantize
 
@@ -35,7 +36,9 @@ def render(backend: str, impl, size=SMALL, frames: int = 2, **scene_args) -> np.
         return app.capture()
 
 
-REFERENCE = load_impl("step07_advanced", False)
+# The trusted picture comes from the reference solutions themselves (never a student's copy of them), so this module
+# grades on the instructor's side: a student's release, which has no solutions, leaves it out.
+REFERENCE = solutions
 
 
 # --- graded ----------------------------------------------------------------------------------------------------

@@ -30,7 +30,7 @@ from ..material_checks import check_parameters
 from ..material_values import MaterialValues
 from ..patches import declared_patch_size
 from ..shader_files import load_shader
-from ..storage import buffer_bytes
+from ..storage import StorageBufferLib, StorageLayout, buffer_bytes, check_material_buffer, glsl_storage_layouts
 from ..texture_checks import check_texture_kinds, check_texture_size
 
 GL_SRGB8_ALPHA8 = 0x8C43
@@ -115,17 +115,20 @@ class TextureLib(_InContext, ResourceLib[Any]):
         self.stats["textures_created"] += 1
         return tex
 
-    # glTexSubImage2D(target, level, x, y, width, height, format, type, pixels), loaded from the context itself
-    # (moderngl has no per-level cube-map write; glcontext's loader works for EGL, GLX, WGL and CGL alike).
+    # glTexSubImage2D(target, level, x, y, width, height, format, type, pixels), loaded through the context's own
+    # loader (moderngl 5.13's TextureCube.write has no level): glcontext's ``load`` for a standalone context (EGL,
+    # GLX, WGL, CGL), moderngl's DefaultLoader ``load_opengl_function`` for a window's context (glfw).
     _GL_TEXTURE_CUBE_MAP_POSITIVE_X, _GL_RGBA, _GL_UNSIGNED_BYTE = 0x8515, 0x1908, 0x1401
 
     def _write_cube_levels(self, tex: Any, chain: list[np.ndarray]) -> None:
         import ctypes
 
-        try:
-            address = self.ctx.mglo._context.load("glTexSubImage2D")
-        except AttributeError as exc:  # a moderngl without glcontext's loader
-            raise RuntimeError(f"this moderngl cannot load glTexSubImage2D to write cube-map levels: {exc}") from None
+        loader = getattr(self.ctx.mglo, "_context", None)
+        load = getattr(loader, "load", None) or getattr(loader, "load_opengl_function", None)
+        address = load("glTexSubImage2D") if load is not None else 0
+        if not address:
+            raise RuntimeError(f"cannot load glTexSubImage2D through this context's loader "
+                               f"({type(loader).__name__}) to write cube-map levels")
         sub_image = ctypes.CFUNCTYPE(None, *[ctypes.c_uint] + [ctypes.c_int] * 5 + [ctypes.c_uint] * 2
                                      + [ctypes.c_void_p])(address)
         tex.use(0)  # binds it to GL_TEXTURE_CUBE_MAP on unit 0; materials bind their own units before drawing
@@ -157,6 +160,8 @@ class GLShader:
     source: str = ""  # the stage files, for messages
     #: The std140 layout of the program's ``uniform Material { ... } material;`` block, or None.
     material_block: BlockLayout | None = None
+    #: The bytes each storage block needs (std430), by block name, where its declaration can be laid out.
+    storage_layouts: dict[str, StorageLayout] = field(default_factory=dict)
 
 
 class ShaderLib(ResourceLib[GLShader]):
@@ -258,7 +263,8 @@ class ShaderLib(ResourceLib[GLShader]):
                                      "'layout(std140) uniform Material { ... } material;' block, the same fields as "
                                      "WGSL's Material struct")
         shader = GLShader(name, program, attributes, samplers, uniforms, patch_vertices, storage_blocks, active_storage,
-                          {s: "Cube" in kinds.get(s, "") for s in samplers}, files, material_block)
+                          {s: "Cube" in kinds.get(s, "") for s in samplers}, files, material_block,
+                          glsl_storage_layouts([src.text for src in stages.values()]))
         self._items[name] = shader
         self._data[name] = stages
         return shader
@@ -385,10 +391,12 @@ class MeshLib(_InContext, ResourceLib[GLMesh]):
 
 
 # --- storage buffers -------------------------------------------------------------------------------
-class BufferLib(_InContext, ResourceLib[moderngl.Buffer]):
+class BufferLib(StorageBufferLib, _InContext, ResourceLib[moderngl.Buffer]):
     """Storage buffers by name, for materials that read them (vertex pulling) and the compute code that fills them.
 
-    ``build(name, data)``: ``data`` is a numpy array (its bytes) or a size in bytes (zeros).
+    ``build(name, data)``: ``data`` is a numpy array (its bytes) or a size in bytes (zeros); building a name again
+    writes the new data into its buffer (same size) or is an error (:class:`~gandalf_core.render.storage.
+    StorageBufferLib`).
     """
 
     kind = "buffer"
@@ -404,6 +412,10 @@ class BufferLib(_InContext, ResourceLib[moderngl.Buffer]):
             buf.clear()
         self.stats["buffers_created"] += 1
         return buf
+
+    def _write(self, buffer: moderngl.Buffer, content: bytes) -> None:
+        make_current(self.ctx)
+        buffer.write(content)
 
     def _release(self, item: moderngl.Buffer) -> None:
         item.release()
@@ -438,6 +450,8 @@ class GLMaterial(MaterialValues):
                 raise ResourceError(f"material '{name}'", "buffers",
                                     f"shader '{shader.name}' reads storage block '{block}' at binding {binding}, but "
                                     f"the material binds buffers 0..{len(buffers) - 1} (declare binding = its index)")
+            check_material_buffer(name, shader.name, data.buffers[binding], buffers[binding].size,
+                                  shader.storage_layouts.get(block))
         self.name, self.data, self.shader, self.textures = name, data, shader, textures
         self.buffers = buffers
         self.block_buffer: moderngl.Buffer | None = None

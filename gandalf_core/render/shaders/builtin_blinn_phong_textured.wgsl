@@ -1,21 +1,13 @@
 // Built-in material gandalf.blinn_phong with a texture: the scene's
 // lights on the colour times the texture.
-#include "instance.wgsl"
+#include "lit_varyings.wgsl"
 #include "builtin_lighting.wgsl"
 #include "material.wgsl"  // the Material block, declared in Python with the shader
 @group(1) @binding(1) var color_texture: texture_2d<f32>;
 @group(1) @binding(2) var color_sampler: sampler;
-struct LitOut {
-    @builtin(position) position: vec4<f32>,
-    @location(0) world: vec3<f32>,
-    @location(1) normal: vec3<f32>,
-    @location(2) uv: vec2<f32>,
-};
 @vertex fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>,
                    @location(2) uv: vec2<f32>, inst: Instance) -> LitOut {
-    let world = instance_model(inst) * vec4<f32>(position, 1.0);
-    return LitOut(frame.projection * frame.view * world, world.xyz,
-                  instance_normal(inst, normal), uv);
+    return lit_vertex(inst, position, normal, uv);
 }
 @fragment fn fs_main(in: LitOut) -> @location(0) vec4<f32> {
     let albedo = material.color * textureSample(color_texture, color_sampler, in.uv);

@@ -1,7 +1,7 @@
 // The engine's built-in lit material (gandalf.blinn_phong): ambient + every light of the Lights
 // block, each with the Blinn-Phong model. Self-contained on purpose: step 06's exercise asks you to
 // write this model yourself.
-#include "frame.glsl"
+#include "light_sample.glsl"
 
 vec3 gandalf_builtin_lighting(vec3 p, vec3 normal, vec3 albedo, float specular, float shininess) {
     float n_length = length(normal);
@@ -12,20 +12,8 @@ vec3 gandalf_builtin_lighting(vec3 p, vec3 normal, vec3 albedo, float specular, 
     vec3 total = u_ambient.rgb * albedo;
     int count = min(u_light_count.x, MAX_LIGHTS);
     for (int i = 0; i < count; ++i) {
-        vec4 position = u_light_position[i];
-        vec3 radiance = u_light_color[i].rgb;
-        vec3 l = position.xyz;  // directional (w = 0): a unit vector towards the light
-        if (position.w > 0.5) {
-            vec3 d = position.xyz - p;
-            float distance = length(d);
-            l = distance > 1e-6 ? d / distance : n;
-            float range = u_light_color[i].a;
-            if (range > 0.0) {  // windowed inverse square, zero at the range
-                float x = distance / range;
-                float window = clamp(1.0 - x * x * x * x, 0.0, 1.0);
-                radiance *= window * window / max(distance * distance, 1e-4);
-            }
-        }
+        vec3 l, radiance;
+        light_at(i, p, n, l, radiance);
         float diffuse = max(dot(n, l), 0.0);
         vec3 h = l + v;
         float h_length = length(h);

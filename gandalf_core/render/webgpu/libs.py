@@ -23,18 +23,13 @@ from typing import Any
 import numpy as np
 import wgpu
 
-from ...resources import (
-    ATTRIBUTE_LOCATIONS,
-    INSTANCE_LOCATIONS,
-    CubeTextureData,
-    MaterialData,
-    MeshData,
-    ResourceError,
-    ShaderSource,
-    TextureData,
-)
 from ...resources.blocks import WGSL_BINDINGS, MaterialDeclaration
+from ...resources.errors import ResourceError
 from ...resources.layout import BlockLayout, LayoutError
+from ...resources.material_data import MaterialData
+from ...resources.mesh_data import ATTRIBUTE_LOCATIONS, INSTANCE_LOCATIONS, MeshData
+from ...resources.shader_source import ShaderSource
+from ...resources.texture_data import CubeTextureData, TextureData
 from ..builtin_materials import prepare as prepare_builtin
 from ..entry_points import wgsl_entry
 from ..errors import ShaderCompileError
@@ -44,7 +39,7 @@ from ..material_block import block_values, declared_block, used_block
 from ..material_checks import check_parameters
 from ..material_values import MaterialValues
 from ..shader_files import load_shader
-from ..storage import buffer_bytes
+from ..storage import StorageBufferLib, StorageLayout, buffer_bytes, check_material_buffer, wgsl_storage_layouts
 from ..texture_checks import check_texture_size
 from .validation import compile_error, first_cause, stage_error
 
@@ -207,6 +202,8 @@ class WGPUShader:
     material_check: Any
     #: The WGSL uniform layout of its ``@group(1) @binding(0)`` Material struct, or None.
     material_block: BlockLayout | None = None
+    #: The bytes each ``@group(1)`` storage variable needs, by binding, where its type can be laid out.
+    storage_layouts: dict[int, StorageLayout] = field(default_factory=dict)
 
 
 class ShaderLib(ResourceLib[WGPUShader]):
@@ -248,7 +245,7 @@ class ShaderLib(ResourceLib[WGPUShader]):
             raise ShaderCompileError(f"shader '{name}': {stage_error(src, str(exc), vertex, fragment)}") from None
         self.stats["shaders_created"] += 1
         shader = WGPUShader(name, module, src, vertex[0], fragment[0], check.get_bind_group_layout(MATERIAL_GROUP),
-                            block)
+                            block, wgsl_storage_layouts(src.text, MATERIAL_GROUP))
         self._items[name] = shader
         self._data[name] = src
         return shader
@@ -329,10 +326,12 @@ BUFFER_USAGE = (wgpu.BufferUsage.STORAGE | wgpu.BufferUsage.VERTEX | wgpu.Buffer
                 | wgpu.BufferUsage.INDIRECT | wgpu.BufferUsage.COPY_SRC | wgpu.BufferUsage.COPY_DST)
 
 
-class BufferLib(ResourceLib[Any]):
+class BufferLib(StorageBufferLib, ResourceLib[Any]):
     """Storage buffers by name, for materials that read them (vertex pulling) and the compute code that fills them.
 
-    ``build(name, data)``: ``data`` is a numpy array (its bytes) or a size in bytes (zeros).
+    ``build(name, data)``: ``data`` is a numpy array (its bytes) or a size in bytes (zeros); building a name again
+    writes the new data into its buffer (same size) or is an error (:class:`~gandalf_core.render.storage.
+    StorageBufferLib`).
     """
 
     kind = "buffer"
@@ -356,6 +355,9 @@ class BufferLib(ResourceLib[Any]):
             buf = self.device.create_buffer_with_data(data=content, usage=BUFFER_USAGE, label=name)
         self.stats["buffers_created"] += 1
         return buf
+
+    def _write(self, buffer: Any, content: bytes) -> None:
+        self.device.queue.write_buffer(buffer, 0, content)
 
     def _release(self, item: Any) -> None:
         item.destroy()
@@ -388,7 +390,8 @@ class WGPUMaterial(MaterialValues):
             entries.append({"binding": len(entries), "resource": item.view})
             entries.append({"binding": len(entries), "resource": item.sampler})
             kinds += ["texture-cube" if item.cube else "texture-2d", "sampler"]
-        for buffer in buffers or []:
+        for buffer_name, buffer in zip(data.buffers, buffers or [], strict=False):
+            check_material_buffer(name, shader.name, buffer_name, buffer.size, shader.storage_layouts.get(len(entries)))
             entries.append({"binding": len(entries), "resource": {"buffer": buffer}})
             kinds.append("storage")
         if not _fits(device, shader.material_check, entries):

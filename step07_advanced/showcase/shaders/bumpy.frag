@@ -14,6 +14,7 @@ uniform sampler2D u_normal_map;
 uniform sampler2D u_height_map;
 uniform samplerCube u_env;
 out vec4 f_color;
+// --8<-- [start:main]
 void main() {
     vec3 n = safe_normalize(v_normal, vec3(0.0, 1.0, 0.0));
     vec3 v = safe_normalize(u_camera_position.xyz - v_world, n);
@@ -34,3 +35,4 @@ void main() {
              * pbr_environment(u_env, shading, v, base, material.metallic, material.roughness);
     f_color = vec4(color, 1.0);
 }
+// --8<-- [end:main]

@@ -15,6 +15,7 @@
 @group(1) @binding(7) var env: texture_cube<f32>;
 @group(1) @binding(8) var env_sampler: sampler;
 
+// --8<-- [start:main]
 @fragment
 fn fs_main(in: SurfaceOut) -> @location(0) vec4<f32> {
     let n = safe_normalize(in.normal, vec3<f32>(0.0, 1.0, 0.0));
@@ -37,3 +38,4 @@ fn fs_main(in: SurfaceOut) -> @location(0) vec4<f32> {
             material.roughness);
     return vec4<f32>(color, 1.0);
 }
+// --8<-- [end:main]

@@ -15,6 +15,7 @@ void tangent_basis(vec3 n, vec4 tangent, out vec3 t, out vec3 b) {
 // refined between the last two layers. v_ts is the unit direction towards the eye in tangent space,
 // scale the depth in UV units. Explicit gradients (textureGrad) keep mip selection smooth where the
 // shifted UVs jump at the bricks' edges.
+// --8<-- [start:march]
 vec2 parallax_uv(sampler2D height_map, vec2 uv, vec3 v_ts, float scale, vec2 dx, vec2 dy) {
     if (scale <= 0.0 || v_ts.z <= 0.0) {
         return uv;
@@ -42,3 +43,4 @@ vec2 parallax_uv(sampler2D height_map, vec2 uv, vec3 v_ts, float scale, vec2 dx,
     float w = abs(denominator) > 1e-6 ? after / denominator : 0.0;
     return mix(current, previous, clamp(w, 0.0, 1.0));
 }
+// --8<-- [end:march]

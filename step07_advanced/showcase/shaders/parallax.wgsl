@@ -20,6 +20,7 @@ fn tangent_basis(n: vec3<f32>, tangent: vec4<f32>) -> TangentBasis {
 // refined between the last two layers. v_ts is the unit direction towards the eye in tangent space,
 // scale the depth in UV units. Explicit gradients (textureSampleGrad) are also what WGSL requires
 // for sampling inside non-uniform loops.
+// --8<-- [start:march]
 fn parallax_uv(height_map: texture_2d<f32>, height_sampler: sampler, uv: vec2<f32>, v_ts: vec3<f32>,
                scale: f32, dx: vec2<f32>, dy: vec2<f32>) -> vec2<f32> {
     if (scale <= 0.0 || v_ts.z <= 0.0) {
@@ -48,3 +49,4 @@ fn parallax_uv(height_map: texture_2d<f32>, height_sampler: sampler, uv: vec2<f3
     let w = select(0.0, after / denominator, abs(denominator) > 1e-6);
     return mix(current, previous, clamp(w, 0.0, 1.0));
 }
+// --8<-- [end:march]

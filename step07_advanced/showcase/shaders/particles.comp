@@ -32,6 +32,7 @@ float random01(uint x) {
     return float(hash_u32(x) >> 8u) / 16777216.0;
 }
 
+// --8<-- [start:step]
 void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i >= uint(particles.length())) {
@@ -47,3 +48,4 @@ void main() {
     }
     particles[i] = p;
 }
+// --8<-- [end:step]

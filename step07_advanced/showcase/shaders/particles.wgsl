@@ -29,6 +29,7 @@ fn random01(x: u32) -> f32 {
     return f32(hash_u32(x) >> 8u) / 16777216.0;
 }
 
+// --8<-- [start:step]
 @compute @workgroup_size(64)
 fn cs_main(@builtin(global_invocation_id) id: vec3<u32>) {
     let i = id.x;
@@ -45,3 +46,4 @@ fn cs_main(@builtin(global_invocation_id) id: vec3<u32>) {
     }
     particles[i] = p;
 }
+// --8<-- [end:step]

@@ -1,7 +1,7 @@
 // Metallic-roughness shading with every light of the scene, plus an environment term from a sky
 // cube map. ggx_specular(), fresnel_schlick(), base_reflectance() and diffuse_albedo() come from
 // brdf.glsl (exercises/ or solutions/); shadow_factor() from the engine's shadow.glsl.
-#include "frame.glsl"
+#include "light_sample.glsl"  // light_at(): the engine's, as in step 06
 #include "shadow.glsl"
 #include "brdf.glsl"
 
@@ -16,29 +16,11 @@ vec3 safe_normalize(vec3 v, vec3 fallback) {
     return len > 1e-12 ? v / len : fallback;
 }
 
-// Unit direction towards light i and its radiance at p (as in step 06: windowed inverse square).
-void light_at(int i, vec3 p, vec3 n, out vec3 l, out vec3 radiance) {
-    vec4 position = u_light_position[i];
-    vec4 color = u_light_color[i];
-    radiance = color.rgb;
-    if (position.w < 0.5) {
-        l = position.xyz;
-        return;
-    }
-    vec3 d = position.xyz - p;
-    float distance = length(d);
-    l = distance > 1e-6 ? d / distance : n;
-    if (color.a > 0.0) {
-        float x = distance / color.a;
-        float window = clamp(1.0 - x * x * x * x, 0.0, 1.0);
-        radiance *= window * window / max(distance * distance, 1e-4);
-    }
-}
-
 // Direct light: sum over the lights of (diffuse_albedo/π + specular BRDF) · radiance · n·l, plus
 // the lights block's ambient. diffuse_albedo = base (1 - metallic)(1 - F): what is reflected
 // specularly is not scattered. `shadow` is the part of the shadow-casting light that reaches p
 // (shadow_factor(); 1 without shadows).
+// --8<-- [start:direct]
 vec3 pbr_direct(vec3 p, vec3 n, vec3 v, vec3 base, float metallic, float roughness, float shadow) {
     float r = clamp(roughness, MIN_ROUGHNESS, 1.0);
     vec3 f0 = base_reflectance(base, metallic);
@@ -62,6 +44,7 @@ vec3 pbr_direct(vec3 p, vec3 n, vec3 v, vec3 base, float metallic, float roughne
     }
     return color;
 }
+// --8<-- [end:direct]
 
 // Image-based light from a (mip-mapped) cube map: blurrier mips stand in for
 // rougher lobes (split sum with Karis' analytic fit of the pre-integrated

@@ -1,7 +1,7 @@
 // Metallic-roughness shading with every light of the scene, plus an environment term from a sky
 // cube map. ggx_specular(), fresnel_schlick(), base_reflectance() and diffuse_albedo() come from
 // brdf.wgsl (exercises/ or solutions/); shadow_factor() from the engine's shadow.wgsl.
-#include "frame.wgsl"
+#include "light_sample.wgsl"  // light_at(): the engine's, as in step 06
 #include "shadow.wgsl"
 #include "brdf.wgsl"
 
@@ -16,34 +16,11 @@ fn safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
     return select(fallback, v / max(len, 1e-12), len > 1e-12);
 }
 
-struct LightSample {
-    l: vec3<f32>,
-    radiance: vec3<f32>,
-};
-
-// Unit direction towards light i and its radiance at p (as in step 06: windowed inverse square).
-fn light_at(i: i32, p: vec3<f32>, n: vec3<f32>) -> LightSample {
-    let position = lights.position[i];
-    let color = lights.color[i];
-    if (position.w < 0.5) {
-        return LightSample(position.xyz, color.rgb);
-    }
-    let d = position.xyz - p;
-    let distance = length(d);
-    let l = select(n, d / max(distance, 1e-6), distance > 1e-6);
-    var radiance = color.rgb;
-    if (color.a > 0.0) {
-        let x = distance / color.a;
-        let window = clamp(1.0 - x * x * x * x, 0.0, 1.0);
-        radiance *= window * window / max(distance * distance, 1e-4);
-    }
-    return LightSample(l, radiance);
-}
-
 // Direct light: sum over the lights of (diffuse_albedo/π + specular BRDF) · radiance · n·l, plus
 // the lights block's ambient. diffuse_albedo = base (1 - metallic)(1 - F): what is reflected
 // specularly is not scattered. `shadow` is the part of the shadow-casting light that reaches p
 // (shadow_factor(); 1 without shadows).
+// --8<-- [start:direct]
 fn pbr_direct(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>, metallic: f32,
               roughness: f32, shadow: f32) -> vec3<f32> {
     let r = clamp(roughness, MIN_ROUGHNESS, 1.0);
@@ -64,6 +41,7 @@ fn pbr_direct(p: vec3<f32>, n: vec3<f32>, v: vec3<f32>, base: vec3<f32>, metalli
     }
     return color;
 }
+// --8<-- [end:direct]
 
 // Image-based light from a (mip-mapped) cube map: blurrier mips stand in for
 // rougher lobes (split sum with Karis' analytic fit of the pre-integrated

@@ -1,27 +1,9 @@
 // The shadow study: the engine's shadow lookup (shadow.wgsl) with the
 // percentage-closer filter's radius as a material parameter
 // (pcf = r: (2r + 1)^2 taps). The output is the lit fraction itself (white = lit).
-#include "frame.wgsl"
-#include "instance.wgsl"
+#include "lit_vertex.wgsl"
 #include "shadow.wgsl"
 #include "material.wgsl"  // the Material block, declared in Python with the shader
-
-struct VOut {
-    @builtin(position) position: vec4<f32>,
-    @location(0) world: vec3<f32>,
-    @location(1) normal: vec3<f32>,
-};
-
-@vertex
-fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>,
-    inst: Instance) -> VOut {
-    var out: VOut;
-    let world = instance_model(inst) * vec4<f32>(position, 1.0);
-    out.position = frame.projection * frame.view * world;
-    out.world = world.xyz;
-    out.normal = instance_normal(inst, normal);
-    return out;
-}
 
 fn study_shadow(world_position: vec3<f32>, normal: vec3<f32>, r: i32) -> f32 {
     let clip = lights.light_view_projection * vec4<f32>(world_position, 1.0);
@@ -46,7 +28,7 @@ fn study_shadow(world_position: vec3<f32>, normal: vec3<f32>, r: i32) -> f32 {
 }
 
 @fragment
-fn fs_main(in: VOut) -> @location(0) vec4<f32> {
+fn fs_main(in: LitOut) -> @location(0) vec4<f32> {
     var lit = 1.0;
     if (lights.shadow.x >= 0.5) {
         lit = study_shadow(in.world, in.normal, i32(material.pcf + 0.5));

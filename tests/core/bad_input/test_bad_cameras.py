@@ -65,7 +65,23 @@ def _singular_camera(app):
     app.step()
 
 
+def _traced_with_zero_scale():
+    """The path tracer's view of a scene whose camera has scale 0 (its rays would have NaN directions)."""
+    from gandalf_core.components import InfoComponent
+    from gandalf_core.systems import TransformSystem
+    from step07_advanced.pathtracer.scene import gather
+
+    scene = Scene("tracer-flat-eye")
+    scene.add_system(TransformSystem())
+    scene.create_entity(InfoComponent("flat eye"), TransformComponent((0, 0, 3), scale=(1.0, 0.0, 1.0)),
+                        CameraComponent())
+    scene.update(0.0)  # world matrices (the scene's TransformSystem)
+    return gather(scene)
+
+
 CONSTRUCTION = [
+    error("pathtracer-camera-with-zero-scale", _traced_with_zero_scale, ValueError, "entity 'flat eye'",
+          "TransformComponent.scale", "non-zero world scale", "0.0"),
     error("near-equals-far", lambda: CameraComponent(near=1.0, far=1.0), ValueError, "CameraComponent.far",
           "greater than CameraComponent.near"),
     error("near-beyond-far", lambda: CameraComponent(near=10.0, far=1.0), ValueError, "CameraComponent.far"),

@@ -119,6 +119,8 @@ TRANSFORM += [
     result("refused-scale-keeps-old", _refused_then_read("scale", (2.0, 2.0, 2.0), "big"),
            lambda v: np.array_equal(v, [2, 2, 2])),
     result("scale-uniform-number", lambda: TransformComponent(scale=2).scale, lambda v: np.array_equal(v, [2, 2, 2])),
+    result("zero-quaternion-reads-as-no-rotation", lambda: TransformComponent(quaternion=(0, 0, 0, 0)).rotation,
+           lambda v: np.array_equal(v, [0, 0, 0])),
     result("scale-zero-allowed", lambda: TransformComponent(scale=0.0).scale, lambda v: np.array_equal(v, [0, 0, 0])),
     result("scale-mirrored-allowed", lambda: TransformComponent(scale=(-1, 1, 1)).scale,
            lambda v: np.array_equal(v, [-1, 1, 1])),

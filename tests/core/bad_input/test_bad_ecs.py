@@ -130,10 +130,51 @@ def manager():
     return m
 
 
+def _shared_info():
+    """One InfoComponent object added to a second entity: renaming one would rename both."""
+    scene = Scene("main")
+    info = InfoComponent("box")
+    scene.create_entity(info, TransformComponent())
+    scene.create_entity(TransformComponent(), info)
+
+
+def _held_info_in_bulk():
+    scene = Scene("main")
+    info = InfoComponent("box")
+    scene.create_entity(info)
+    scene.create_entities(1, [info])
+
+
+def _info_moved():
+    """Taken off one entity, the object may go to another."""
+    scene = Scene("main")
+    info = InfoComponent("box")
+    first = scene.create_entity(info)
+    scene.remove_component(first, InfoComponent)
+    second = scene.create_entity(TransformComponent())
+    scene.add_component(second, info)
+    return scene.get_component(second, InfoComponent).name
+
+
+def _info_back_after_destroy():
+    scene = Scene("main")
+    info = InfoComponent("box")
+    scene.destroy_entity(scene.create_entity(info))
+    return scene.get_component(scene.create_entity(info), InfoComponent).name
+
+
 CASES = [
     # systems
     error("remove-system-not-there", lambda: Scene("main").remove_system(Marker()), ValueError, "scene 'main'",
-          "has no system", "to remove"),
+          "has no system Marker to remove"),
+    error("one-info-on-two-entities", _shared_info, ValueError, "InfoComponent", "entity 'box'", "already belongs",
+          "copy"),
+    error("one-info-twice-in-a-bulk-creation", lambda: (lambda i: Scene("main").create_entities(2, [i, i]))(
+          InfoComponent("twin")), ValueError, "InfoComponent number 1", "same object as number 0"),
+    error("a-held-info-in-a-bulk-creation", _held_info_in_bulk, ValueError, "InfoComponent number 0",
+          "entity 'box'"),
+    result("an-info-moved-after-removal", _info_moved, lambda name: name == "box"),
+    result("an-info-given-back-after-destroy", _info_back_after_destroy, lambda name: name == "box"),
     error("remove-system-of-another-scene", lambda: Scene("main").remove_system(Scene("other").add_system(Marker())),
           ValueError, "scene 'main'", "has no system"),
     error("remove-system-not-a-system", lambda: Scene("main").remove_system(3), ValueError, "has no system 3"),

@@ -63,6 +63,8 @@ def folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
         "missing_reference": lambda st: st.DefinePrim("/World/ref").GetReferences().AddReference("./gone.usda"),
         "missing_sublayer": lambda st: st.GetRootLayer().subLayerPaths.append("./nolayer.usda"),
         "unmapped": _unmapped,
+        "clip_reversed": lambda st: UsdGeom.Camera.Define(st, "/World/cam").CreateClippingRangeAttr((10.0, 1.0)),
+        "nan_points": _nan_points,
     }.items():
         stage = Usd.Stage.CreateNew(str(inside / f"{name}.usda"))
         UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.y)
@@ -78,6 +80,32 @@ def _unmapped(stage: Usd.Stage) -> None:
     curves.CreateCurveVertexCountsAttr([4])
     UsdLux.RectLight.Define(stage, "/World/panel")
     UsdGeom.Sphere.Define(stage, "/World/ball")
+
+
+def _nan_points(stage: Usd.Stage) -> None:
+    mesh = UsdGeom.Mesh.Define(stage, "/World/tri")
+    mesh.CreatePointsAttr([(0, 0, 0), (1, float("nan"), 0), (0, 1, 0)])
+    mesh.CreateFaceVertexCountsAttr([3])
+    mesh.CreateFaceVertexIndicesAttr([0, 1, 2])
+
+
+def float_ops(folder: Path) -> Path:
+    """good.usda with every orient a quatf and every translate and scale a float3 (what many exporters write)."""
+    path = edited("gandalf:sceneName", "gandalf:sceneName", "float_ops.usda")(folder)
+    text = path.read_text()
+    for old, new in (("quatd xformOp:orient", "quatf xformOp:orient"),
+                     ("double3 xformOp:scale", "float3 xformOp:scale"),
+                     ("double3 xformOp:translate", "float3 xformOp:translate")):
+        assert old in text
+        text = text.replace(old, new)
+    path.write_text(text)
+    return path
+
+
+def corrupt_texture_file(folder: Path) -> Path:
+    path = edited("gandalf:sceneName", "gandalf:sceneName", "bad_png.usda")(folder)
+    (folder / "bad_png_usda_textures" / "checker.png").write_bytes(b"not a png")
+    return path
 
 
 def edited(old: str, new: str, name: str):
@@ -175,6 +203,18 @@ CASES = [
     error("translation-nan", loads(edited("double3 xformOp:translate = (0, 3, 0)",
                                           "double3 xformOp:translate = (nan, 3, 0)", "nan.usda")),
           USDSceneError, "nan.usda", "prim </Scene/bulb>", "xformOp:translate"),
+    error("camera-clipping-range-reversed", loads("scene/clip_reversed.usda"), USDSceneError, "</World/cam>",
+          "attribute 'clippingRange'", "CameraComponent.far"),
+    error("mesh-points-nan", quietly(loads("scene/nan_points.usda")), USDSceneError, "</World/tri>",
+          "attribute 'points'", "nan"),
+    error("mesh-index-out-of-range", loads(edited("int[] faceVertexIndices = [0, 1, 2,",
+                                                  "int[] faceVertexIndices = [0, 1, 999,", "index.usda")),
+          USDSceneError, "index.usda", "attribute 'faceVertexIndices'", "999"),
+    error("texture-file-not-an-image", loads(corrupt_texture_file), USDSceneError, "prim </Assets/Textures/checker>",
+          "attribute 'gandalf:files'"),
+    result("float-xform-ops-accepted", loads(float_ops),
+           lambda s: [float(s.get_component(e, TransformComponent).translation[1]) for e in s.entities
+                      if s.get_component(e, InfoComponent).name == "bulb"] == [3.0]),
     error("missing-texture-file", loads(missing_texture_file), USDSceneError, "prim </Assets/Textures/checker>",
           "checker.png"),
     error("duplicate-asset-names", loads(edited('gandalf:name = "blue"', 'gandalf:name = "red"', "dup.usda")),
