@@ -8,8 +8,6 @@ has counts (probed again here), and only one no exercise code raised: an exercis
 
 from __future__ import annotations
 
-import importlib
-
 import pytest
 
 #: The report property that tells the grade a test was not graded here (and why).
@@ -41,11 +39,3 @@ def mark_not_here(item: pytest.Item, call: pytest.CallInfo[None], report: pytest
         report.user_properties.append((NOT_HERE, reason))
     return report
 
-
-def skip_unless_here(part: str, api: str) -> None:
-    """End the test, not graded here, when this machine cannot run ``part`` (``step07_advanced.filter``) in
-    ``api``: for tests that use a part's pieces without its launcher."""
-    from gandalf_core.render.capabilities import check
-    from gandalf_core.render.probe import offer_here
-
-    check(importlib.import_module(f"{part}.scene").PART.needs, offer_here(api), part)
