@@ -3,7 +3,8 @@
 ``python -m gandalf_tools.tour`` opens each step in a window when a display exists; headless (or with
 ``--headless``) it renders every step offscreen and writes ``OUT/stepNN_<topic>-<backend>.png``; a step whose
 package lists ``TECHNIQUES`` (step 07) or ``CONCEPTS`` (step 05) gets one picture pair per sub-package,
-``OUT/stepNN_<topic>-<technique>-<backend>.png``.
+``OUT/stepNN_<topic>-<technique>-<backend>.png``. A part this machine cannot run in one API (see
+``python -m gandalf_tools.doctor``) is named with what it needs, and the tour goes on.
 Steps are found by folder name next to ``gandalf_core`` at run time (the framework never imports a
 step statically).
 """
@@ -19,6 +20,7 @@ from pathlib import Path
 
 from gandalf_core.app.cli import has_solutions, plain, unfinished_exercise
 from gandalf_core.render.base import BACKENDS
+from gandalf_core.render.capabilities import CapabilityError
 
 from .testing import LocalDifferences, psnr
 
@@ -37,16 +39,21 @@ PART_LISTS = ("TECHNIQUES", "CONCEPTS")
 
 def step_parts(step: str) -> list[str]:
     """The runnable packages of a step: the step itself, or ``step.part`` for each of its ``TECHNIQUES`` or
-    ``CONCEPTS``."""
+    ``CONCEPTS`` (a part named already, ``step06_lighting.environment``, is itself)."""
+    if "." in step:
+        return [step]
     package = importlib.import_module(step)
     parts = next((getattr(package, name) for name in PART_LISTS if getattr(package, name, None)), None)
     return [f"{step}.{name}" for name in parts] if parts else [step]
 
 
-def render_step(part: str, backend: str, out_dir: Path, width: int = 640, height: int = 480) -> Path:
-    """Render one step (or one technique, ``step.technique``) headless and save its picture; returns the PNG path."""
+def render_step(part: str, backend: str, out_dir: Path, width: int = 640, height: int = 480,
+                frames: int | None = None) -> Path:
+    """Render one step (or one technique, ``step.technique``) headless and save its picture; returns the PNG path.
+    ``frames``: how many frames before the picture (default: the part's ``TOUR_FRAMES``, else 30)."""
     variant = importlib.import_module(f"{part}.{backend}")
-    frames = getattr(importlib.import_module(f"{part}.scene"), "TOUR_FRAMES", 30)
+    if frames is None:
+        frames = getattr(importlib.import_module(f"{part}.scene"), "TOUR_FRAMES", 30)
     with variant.create_app(headless=True, width=width, height=height) as app:
         app.run(frames=frames)
         return app.save_png(out_dir / f"{part.replace('.', '-')}-{backend}.png")
@@ -57,9 +64,14 @@ def main(argv: list[str] | None = None) -> int:
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--headless", action="store_true", help="render offscreen even when a display exists")
     parser.add_argument("--out", default="out", help="folder for the headless pictures (default: out)")
-    parser.add_argument("--steps", nargs="*", help="only these steps (default: all)")
+    parser.add_argument("--steps", nargs="*",
+                        help="only these steps or parts, e.g. step06_lighting.environment (default: all)")
     parser.add_argument("--backends", nargs="*", default=list(BACKENDS), choices=BACKENDS)
+    parser.add_argument("--size", default="640x480", help="WIDTHxHEIGHT of the headless pictures (default 640x480)")
+    parser.add_argument("--frames", type=int, default=None,
+                        help="frames before each headless picture (default: each part's own count)")
     args = parser.parse_args(argv)
+    width, height = (int(x) for x in args.size.lower().split("x"))
     if str(REPO_ROOT) not in sys.path:
         sys.path.insert(0, str(REPO_ROOT))
     steps = args.steps or find_steps()
@@ -75,13 +87,15 @@ def main(argv: list[str] | None = None) -> int:
             try:
                 if headless:
                     start = time.perf_counter()
-                    path = render_step(part, backend, out_dir)
+                    path = render_step(part, backend, out_dir, width, height, args.frames)
                     images[backend] = path
                     print(f"{part:<26} {backend:<7} -> {path}  ({time.perf_counter() - start:.2f} s)")
                 else:
                     print(f"{part} ({backend}): close the window to go on")
                     with importlib.import_module(f"{part}.{backend}").create_app(headless=False) as app:
                         app.run()
+            except CapabilityError as exc:  # this machine lacks what the part needs: say so and go on
+                print(f"{part:<26} {backend:<7} -> not here: {exc}")
             except Exception as error:  # a student's release: this part runs the student's exercises
                 sentence = unfinished_exercise(error)
                 if sentence is None and has_solutions(part.split(".")[0]):

@@ -22,12 +22,15 @@ def backend(request: pytest.FixtureRequest) -> str:
     return request.param
 
 
-@pytest.hookimpl(hookwrapper=True)
-def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo) -> object:
-    """A test without a grade that stops on an untouched exercise stub (the student's release runs the steps with
-    the student's exercises) is skipped, naming the exercise and its file; a graded test fails as it must."""
-    outcome = yield
-    report = outcome.get_result()
+@pytest.hookimpl(wrapper=True)
+def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo[None]) -> pytest.TestReport:
+    """Two failures that are no failure of the course are skipped, naming why:
+
+    * a test without a grade that stops on an untouched exercise stub (the student's release runs the steps with
+      the student's exercises), naming the exercise and its file; a graded test fails as it must;
+    * a test this machine cannot run (a part's need it lacks): the grade leaves it out ("not graded here").
+    """
+    report = yield
     if report.failed and call.excinfo is not None and item.get_closest_marker("exercise") is None:
         from gandalf_core.app.cli import unfinished_exercise
 
@@ -37,3 +40,6 @@ def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo) -> objec
         if sentence is not None:
             report.outcome = "skipped"
             report.longrepr = (str(item.path), item.location[1] or 0, f"waits for your exercise: {sentence}")
+    from capabilities_here import mark_not_here
+
+    return mark_not_here(item, call, report)

@@ -2,8 +2,9 @@
 
 The step 07 graders use it to test a student's shader *functions* on edge inputs in both languages: the
 student's file is ``#include``d in ``prelude``, ``expression`` calls it, and every element of the ``inputs``
-arrays gives one invocation of a compute shader. A shared headless context (OpenGL) and device (WebGPU) serve all
-tests, so a call costs a compile and one small dispatch.
+arrays gives one invocation: of a GLSL 3.30 vertex shader captured by transform feedback (so it runs on OpenGL 3.3
+and macOS's 4.1, which have no compute shaders), and of a WGSL compute shader. A shared headless context (OpenGL)
+and device (WebGPU) serve all tests, so a call costs a compile and one small draw or dispatch.
 
     eval_glsl('#include "terrain.glsl"', "tess_level(a, b, c.x)",
               {"a": ("vec4", A), "b": ("vec4", B), "c": ("f32", C)}, "f32", include_dirs=[impl_dir])
@@ -70,35 +71,43 @@ def _result(data: bytes, output: str, count: int) -> np.ndarray:
 
 
 # --- OpenGL ----------------------------------------------------------------------------------------
+#: type name -> moderngl's vertex attribute format (one attribute per input array).
+GL_FORMATS = {"f32": "f", "vec2": "2f", "vec4": "4f", "u32": "u", "i32": "i"}
+
+
 @functools.cache
 def gl_context():
-    """The shared headless OpenGL 4.3+ context of the harness."""
-    import moderngl
+    """The shared headless OpenGL context of the harness (3.3 core is enough: it uses transform feedback)."""
+    from gandalf_core.render.opengl.renderer import _standalone_context
 
-    return moderngl.create_standalone_context(backend="egl", require=430)
+    return _standalone_context()
+
+
+@functools.cache
+def gl_target():
+    """A 1 x 1 framebuffer: a surfaceless EGL context has no default one, and a draw needs a complete framebuffer
+    even when transform feedback turns the rasteriser off."""
+    return gl_context().simple_framebuffer((1, 1))
 
 
 def glsl_source(prelude: str, expression: str, arrays: list[tuple[str, str, np.ndarray]], output: str) -> str:
-    inputs = "\n".join(f"layout(std430, binding = {binding}) readonly buffer In{binding} {{ {TYPES[kind][0]} "
-                       f"in_{name}[]; }};" for binding, (name, kind, _) in enumerate(arrays))
-    reads = "".join(f"    {TYPES[kind][0]} {name} = in_{name}[i];\n" for name, kind, _ in arrays)
-    return f"""#version 430
-layout(local_size_x = {WORKGROUP}) in;
-{inputs}
-layout(std430, binding = {len(arrays)}) writeonly buffer Out {{ {TYPES[output][0]} result[]; }};
-uniform uint u_count;
+    """A GLSL 3.30 vertex shader: each vertex is one element, its inputs are vertex attributes, and the result is
+    captured by transform feedback (OpenGL 3.0), so the same test runs on every OpenGL of the course (3.3 core up,
+    macOS's 4.1 included)."""
+    inputs = "".join(f"in {TYPES[kind][0]} in_{name};\n" for name, kind, _ in arrays)
+    reads = "".join(f"    {TYPES[kind][0]} {name} = in_{name};\n" for name, kind, _ in arrays)
+    return f"""#version 330 core
+{inputs}flat out {TYPES[output][0]} result;
 {prelude}
 void main() {{
-    uint i = gl_GlobalInvocationID.x;
-    if (i >= u_count) {{ return; }}
-{reads}    result[i] = {expression};
+{reads}    result = {expression};
 }}
 """
 
 
 def eval_glsl(prelude: str, expression: str, inputs: Inputs, output: str,
               include_dirs: Sequence[str | Path] = ()) -> np.ndarray:
-    """``expression`` evaluated per element in a GLSL 4.30 compute shader; returns the ``output`` values."""
+    """``expression`` evaluated per element in a GLSL vertex shader; returns the ``output`` values."""
     count, arrays = _check(inputs, output)
     ctx = gl_context()
     with ctx:  # another context (an app's, or wgpu's GL backend) may be current on this thread
@@ -108,28 +117,25 @@ def eval_glsl(prelude: str, expression: str, inputs: Inputs, output: str,
 def _run_glsl(ctx, count, arrays, prelude, expression, output, include_dirs) -> np.ndarray:
     import moderngl
 
-    source = load_shader(glsl_source(prelude, expression, arrays, output), "compute", "glsl", include_dirs)
+    source = load_shader(glsl_source(prelude, expression, arrays, output), "vertex", "glsl", include_dirs)
     try:
-        program = ctx.compute_shader(source.text)
+        program = ctx.program(vertex_shader=source.text, varyings=["result"])
     except moderngl.Error as exc:
         from gandalf_core.render.opengl.libs import _explain_gl_error
 
-        raise ShaderCompileError(_explain_gl_error("harness", str(exc), {"compute_shader": source})) from None
+        raise ShaderCompileError(_explain_gl_error("harness", str(exc), {"vertex_shader": source})) from None
     buffers = [ctx.buffer(a.tobytes()) for _, _, a in arrays]
     out = ctx.buffer(reserve=count * TYPES[output][3] * 4)
+    # An input the expression does not read is optimised away: skip_errors leaves it out instead of failing.
+    vao = ctx.vertex_array(program, [(buf, GL_FORMATS[kind], f"in_{name}")
+                                     for buf, (name, kind, _) in zip(buffers, arrays)], skip_errors=True)
     try:
-        for binding, buf in enumerate(buffers):
-            buf.bind_to_storage_buffer(binding)
-        out.bind_to_storage_buffer(len(buffers))
-        if "u_count" in program:
-            program["u_count"].value = count
-        program.run(group_x=(count + WORKGROUP - 1) // WORKGROUP)
-        ctx.memory_barrier()
+        gl_target().use()
+        vao.transform(out, mode=moderngl.POINTS, vertices=count)
         return _result(out.read(), output, count)
     finally:
-        for buf in (*buffers, out):
-            buf.release()
-        program.release()
+        for obj in (vao, *buffers, out, program):
+            obj.release()
 
 
 # --- WebGPU ----------------------------------------------------------------------------------------

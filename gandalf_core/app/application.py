@@ -18,6 +18,7 @@ import numpy as np
 
 from ..ecs import Scene, SceneManager
 from ..render.base import Renderer, check_backend
+from ..render.capabilities import FLOOR, Needs
 from .clock import Clock
 from .input import Input, ResizeEvent
 from .window import Window, display_available
@@ -32,7 +33,9 @@ def _never() -> bool:
 
 class Application:
     """Runs scenes with one backend. ``backend`` is 'opengl' or 'webgpu'; ``editor=True`` turns on the
-    editor (both backends), the course's ``editor`` extension (:mod:`gandalf_core.app.extensions`)."""
+    editor (both backends), the course's ``editor`` extension (:mod:`gandalf_core.app.extensions`); ``needs``
+    (:class:`~gandalf_core.render.capabilities.Needs`) is what the scenes need beyond OpenGL 3.3 / WebGPU's
+    defaults, checked before anything is built (a :class:`~gandalf_core.render.capabilities.CapabilityError`)."""
 
     def __init__(
         self,
@@ -44,6 +47,7 @@ class Application:
         headless: bool | None = None,
         fixed_dt: float | None = None,
         editor: bool = False,
+        needs: Needs = FLOOR,
     ) -> None:
         self.backend = check_backend(backend)  # fails before any GPU library is imported
         for label, value in (("width", width), ("height", height)):
@@ -60,7 +64,12 @@ class Application:
             width, height = self.window.framebuffer_size
         from ..render import create_renderer
 
-        self.renderer: Renderer = create_renderer(self.backend, width, height, self.window)
+        try:
+            self.renderer: Renderer = create_renderer(self.backend, width, height, self.window, needs)
+        except BaseException:  # a context that lacks what ``needs`` states, or no GPU: no window left behind
+            if self.window is not None:
+                self.window.close()
+            raise
         self._prepared: set[int] = set()
         self.running = False
         self._closed = False

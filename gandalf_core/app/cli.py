@@ -28,6 +28,7 @@ from typing import Any
 
 from ..ecs import Scene
 from ..render.base import check_backend
+from ..render.capabilities import FLOOR, CapabilityError, Needs
 from ..resources.layout import BlockLayout
 from .application import Application
 from .extensions import extension
@@ -86,6 +87,10 @@ def unfinished_exercise(error: BaseException) -> str | None:
             f"then run this again; 'python -m gandalf_tools.grading {tests}' grades it.")
 
 
+#: A launcher's exit status when this machine lacks what the part needs (it printed what to run instead).
+CAPABILITY_EXIT = 3
+
+
 def run_variant(create_app: Callable[..., Application], argv: list[str] | None = None, *, description: str = "",
                 prog: str | None = None) -> int:
     """Parse the common options, then run the app in a window or headless (``prog``: the help's ``python -m ...``)."""
@@ -102,7 +107,11 @@ def run_variant(create_app: Callable[..., Application], argv: list[str] | None =
                         help="after the last frame, save the scene to this USD file (.usda or .usdc)")
     args = parser.parse_args(argv)
     width, height = (int(x) for x in args.size.lower().split("x"))
-    app = create_app(headless=True if args.headless else None, student=args.student, width=width, height=height)
+    try:
+        app = create_app(headless=True if args.headless else None, student=args.student, width=width, height=height)
+    except CapabilityError as exc:  # one sentence, no traceback: what is missing and what to run instead
+        print(exc, file=sys.stderr)
+        return CAPABILITY_EXIT
     if args.editor:
         extension("editor")(app)
     frames = args.frames if args.frames is not None else (60 if app.headless else None)
@@ -198,7 +207,9 @@ class Part:
     (``include_impl``: the shaders ``#include`` files of the implementation's folder). ``build_scene(impl,
     **options)`` returns the scene (or scenes) where the API changes nothing else. A step of several runnable
     parts (step 05's concepts, step 07's techniques) names them in ``parts``, picked with ``--<option>``
-    (``default``, else the first); without ``build_scene`` its ``create_app`` is the default part's.
+    (``default``, else the first); without ``build_scene`` its ``create_app`` is the default part's. ``needs``
+    (:class:`~gandalf_core.render.capabilities.Needs`) is what the part needs beyond OpenGL 3.3 core and WebGPU's
+    default limits; the app checks it before building anything and the launcher says what to run instead.
     """
 
     package: str
@@ -208,6 +219,7 @@ class Part:
     parts: Sequence[str] = ()
     option: str = "concept"
     default: str | None = None
+    needs: Needs = FLOOR
 
     @property
     def step(self) -> str:
@@ -258,7 +270,14 @@ def launcher(part: Part, backend: str | Backend, description: str = "", *,
             return importlib.import_module(f"{part.package}.{default[0]}.{api}").create_app(
                 headless, student, width, height, impl=impl, **options)
         impl = impl if impl is not None else load_impl(part.step, student)
-        app = Application(api, width, height, title=title, headless=headless, fixed_dt=1 / 60)
+        try:
+            return _build(impl, headless, width, height, options)
+        except CapabilityError as exc:  # named after the part, with the other API's variant to run instead
+            raise exc.naming(f"`python -m {part.package}.{api}`", f"python -m {part.package}.{_other(api)}") from None
+
+    def _build(impl: ModuleType, headless: bool | None, width: int, height: int, options: dict[str, Any]
+               ) -> Application:
+        app = Application(api, width, height, title=title, headless=headless, fixed_dt=1 / 60, needs=part.needs)
         try:
             folder = Path(importlib.import_module(part.step).__file__).resolve().parent / "shaders"
             build_shaders(app, part.shaders, folder,
@@ -283,6 +302,10 @@ def launcher(part: Part, backend: str | Backend, description: str = "", *,
     create_app.__doc__ = f"The {part.package} app in {title.rsplit(' · ', 1)[1]} (``headless``, ``student``, size)."
     main.__doc__ = f"Run the {part.package} app in {title.rsplit(' · ', 1)[1]} from the command line (``--help``)."
     return create_app, main
+
+
+def _other(api: str) -> str:
+    return "webgpu" if api == "opengl" else "opengl"
 
 
 def available_parts(step_package: str, names: Sequence[str]) -> list[str]:

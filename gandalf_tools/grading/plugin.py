@@ -43,6 +43,7 @@ from . import watchdog
 
 IMPL_ENV = "GANDALF_IMPL"
 _PROPERTY = "gandalf_grade"
+_NOT_HERE = "gandalf_not_here"  # set by tests/conftest.py on a test this machine cannot run (a missing capability)
 _MESSAGE_LIMIT = 4000
 
 # nodeid -> {"step", "exercise", "points"} for every graded test collected in this run.
@@ -269,6 +270,7 @@ def pytest_runtest_logreport(report: pytest.TestReport) -> None:
         _graded.setdefault(report.nodeid, dict(info))
     entry = _outcomes.setdefault(report.nodeid, {"passed_call": False, "failed": False, "message": "", "duration": 0.0})
     entry["duration"] += float(getattr(report, "duration", 0.0) or 0.0)
+    entry["not_here"] = entry.get("not_here") or next((v for k, v in report.user_properties if k == _NOT_HERE), "")
     if report.when == "call" and report.passed:
         entry["passed_call"] = True
     elif report.failed or report.skipped:
@@ -332,6 +334,8 @@ def _test_results() -> list[dict[str, Any]]:
     for nodeid in sorted(_graded):
         info = _graded[nodeid]
         outcome = _outcomes.get(nodeid)
+        if outcome is not None and outcome.get("not_here"):
+            continue  # this machine lacks what the test's part needs (tests/conftest.py): not graded here
         if outcome is None:
             passed, message = False, "not run (the run stopped or its worker crashed before this test)"
         else:
@@ -445,6 +449,9 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
             f" ({int(x['passed'])}/{int(x['tests'])} tests)"
         )
     tr.write_line(f"{'TOTAL':<51} {result['earned']:>5.1f} / {result['possible']:<5.1f} ({result['score']:.0%})")
+    for nodeid, entry in sorted(_outcomes.items()):
+        if entry.get("not_here") and nodeid in _graded:
+            tr.write_line(f"NOT GRADED HERE: {nodeid}: {entry['not_here']}")
     for nodeid, message in result["collection_errors"].items():
         tr.write_line(f"NOT GRADED: {nodeid} failed to import, its tests are missing from the total ({message})")
     path = config.getoption("--grade-json")

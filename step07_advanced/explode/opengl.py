@@ -10,6 +10,7 @@ from types import ModuleType
 
 from gandalf_core import Application, Scene
 from gandalf_core.app.cli import Backend, launcher
+from gandalf_core.render.capabilities import require_opengl
 
 from .scene import LIT_SHADER, PART, GeometryShaderRoute, build_scene
 from .shaders import EXPLODE_MATERIAL, GL_EXPLODE, GL_LIT, GL_PULLED, LIT_MATERIAL, impl_shader_dir
@@ -24,7 +25,8 @@ def register_shaders(app: Application, impl: ModuleType, pulling: bool = False) 
     shaders.build("explode", GL_EXPLODE["vert"], GL_EXPLODE["frag"], geometry=GL_EXPLODE["geom"], include_dirs=include,
                   material=EXPLODE_MATERIAL)
     shaders.build(LIT_SHADER, GL_LIT["vert"], GL_LIT["frag"], include_dirs=include, material=LIT_MATERIAL)
-    if pulling:
+    if pulling:  # storage buffers in a vertex shader: OpenGL 4.3
+        require_opengl(app.renderer.ctx, 430, "storage buffers", "the vertex-pulling route")
         shaders.build("explode_pulled", GL_PULLED["vert"], GL_PULLED["frag"], include_dirs=include,
                       material=EXPLODE_MATERIAL)
 # --8<-- [end:register]

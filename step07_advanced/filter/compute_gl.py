@@ -15,11 +15,14 @@ from typing import Any, TypeVar
 import moderngl
 import numpy as np
 
+from gandalf_core.render.capabilities import require_opengl, standalone_opengl
+
 from .kernels import MAX_RADIUS, check_image, check_op, check_radius, check_shared_memory, check_weights, groups
 from .shaders import FORMATS, PARAMS_BINDING, PARAMS_LAYOUT, PROGRAMS, explain_error, kernel_source, pass_params
 
 #: Compute shaders and image load/store arrived in OpenGL 4.3.
 REQUIRED_VERSION = 430
+PURPOSE = "compute shaders and image load/store"
 #: GL 4.3's guaranteed GL_MAX_COMPUTE_SHARED_MEMORY_SIZE (moderngl does not report the driver's value).
 GL_MIN_SHARED_MEMORY = 32768
 
@@ -45,9 +48,7 @@ class GLImageFilter:
     backend = "opengl"
 
     def __init__(self, ctx: moderngl.Context, impl: ModuleType) -> None:
-        if ctx.version_code < REQUIRED_VERSION:
-            raise RuntimeError(f"the image filter needs OpenGL {REQUIRED_VERSION / 100:.1f} compute shaders; "
-                               f"this context is {ctx.version_code / 100:.1f}")
+        require_opengl(ctx, REQUIRED_VERSION, PURPOSE, "the image filter")
         self.ctx = ctx
         self.owns_context = False
         self.device_name = str(ctx.info.get("GL_RENDERER", "?"))
@@ -66,7 +67,7 @@ class GLImageFilter:
         Some drivers (NVIDIA's) give exactly the version asked for, so a context made for GL 3.3 drawing has no
         compute shaders there; this one asks for 4.3.
         """
-        ctx = moderngl.create_standalone_context(backend="egl", require=REQUIRED_VERSION)
+        ctx = standalone_opengl(REQUIRED_VERSION, PURPOSE, "the image filter")
         flt = cls(ctx, impl)
         flt.owns_context = True
         return flt

@@ -15,6 +15,8 @@ from typing import Any
 import numpy as np
 import wgpu
 
+from gandalf_core.render.webgpu.device import request_device
+
 from .kernels import MAX_RADIUS, check_image, check_op, check_radius, check_shared_memory, check_weights, groups
 from .shaders import FORMATS, PARAMS_LAYOUT, PROGRAMS, explain_error, kernel_source, pass_params
 
@@ -61,8 +63,7 @@ class WGPUImageFilter:
     @classmethod
     def standalone(cls, impl: ModuleType) -> WGPUImageFilter:
         """A filter on its own device (the high-performance adapter, default limits), for the study and the tests."""
-        adapter = wgpu.gpu.request_adapter_sync(power_preference="high-performance")
-        flt = cls(adapter.request_device_sync(), impl)
+        flt = cls(request_device()[1], impl)
         flt.owns_device = True
         return flt
 

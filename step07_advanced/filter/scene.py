@@ -17,7 +17,7 @@ from typing import Protocol
 import numpy as np
 
 from gandalf_core import ClearColorComponent, InfoComponent, Scene, TransformComponent
-from gandalf_core.app.cli import Part
+from gandalf_core.app.cli import Needs, Part
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.resources import MaterialData, TextureData, quad
 
@@ -85,4 +85,4 @@ def build_scene(images: dict[str, np.ndarray]) -> Scene:
 
 
 #: The technique the variants (``opengl.py``, ``webgpu.py``) hand the launcher with their backends.
-PART = Part(__package__)
+PART = Part(__package__, needs=Needs(opengl=430, opengl_for="compute shaders and image load/store"))

@@ -13,6 +13,8 @@ from types import ModuleType
 import moderngl
 import numpy as np
 
+from gandalf_core.render.capabilities import require_opengl, standalone_opengl
+
 from .scene import PackedScene
 from .shaders import PARAMS_BINDING, PARAMS_LAYOUT, explain_error, kernel_source
 
@@ -28,9 +30,7 @@ class GLPathTracer:
 
     def __init__(self, ctx: moderngl.Context, impl: ModuleType, accum: moderngl.Buffer, width: int,
                  height: int) -> None:
-        if ctx.version_code < REQUIRED_VERSION:
-            raise RuntimeError(f"the path tracer needs OpenGL {REQUIRED_VERSION / 100:.1f} compute shaders; "
-                               f"this context is {ctx.version_code / 100:.1f}")
+        require_opengl(ctx, REQUIRED_VERSION, "compute shaders", "the path tracer")
         if accum.size < width * height * 16:
             raise ValueError(f"the accumulation buffer holds {accum.size} bytes; {width}x{height} pixels need "
                              f"{width * height * 16}")
@@ -49,7 +49,7 @@ class GLPathTracer:
     def standalone(cls, impl: ModuleType, width: int, height: int) -> GLPathTracer:
         """A kernel on its own headless GL 4.3 context with its own accumulation buffer (the study: NVIDIA's EGL
         gives exactly the 3.3 the renderer asks for, so the renderer's context may have no compute shaders)."""
-        ctx = moderngl.create_standalone_context(backend="egl", require=REQUIRED_VERSION)
+        ctx = standalone_opengl(REQUIRED_VERSION, "compute shaders", "the path tracer")
         accum = ctx.buffer(reserve=width * height * 16)
         accum.clear()
         tracer = cls(ctx, impl, accum, width, height)

@@ -22,7 +22,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from gandalf_core import Scene, TransformComponent
-from gandalf_core.app.cli import Part
+from gandalf_core.app.cli import Needs, Part
 from gandalf_core.components import (
     CameraComponent,
     ClearColorComponent,
@@ -539,4 +539,4 @@ def camera_rays_np(packed: PackedScene, width: int, height: int, sample_index: i
 
 
 #: The technique the variants (``opengl.py``, ``webgpu.py``) hand the launcher with their backends.
-PART = Part(__package__)
+PART = Part(__package__, needs=Needs(opengl=430, opengl_for="compute shaders and storage buffers"))

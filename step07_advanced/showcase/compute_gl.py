@@ -12,6 +12,7 @@ from types import ModuleType
 import moderngl
 import numpy as np
 
+from gandalf_core.render.capabilities import require_opengl
 from gandalf_core.render.shader_files import load_shader
 
 from .particles import WORKGROUP_SIZE, SimParams
@@ -25,9 +26,7 @@ class GLParticleKernel:
     """``state`` (N, 2, 4) float32 lives in a storage buffer; :meth:`step` runs one kernel dispatch."""
 
     def __init__(self, ctx: moderngl.Context, impl: ModuleType, state: np.ndarray) -> None:
-        if ctx.version_code < REQUIRED_VERSION:
-            raise RuntimeError(f"compute shaders need OpenGL {REQUIRED_VERSION / 100:.1f}; "
-                               f"this context is {ctx.version_code / 100:.1f}")
+        require_opengl(ctx, REQUIRED_VERSION, "compute shaders", "the particle kernel")
         source = load_shader(COMPUTE_GLSL, "compute", "glsl", [impl_shader_dir(impl)], SIM_INCLUDES)
         self.ctx = ctx
         self.program = ctx.compute_shader(source.text)

@@ -15,7 +15,7 @@ from types import ModuleType
 import numpy as np
 
 from gandalf_core import Scene, TransformComponent
-from gandalf_core.app.cli import Part
+from gandalf_core.app.cli import Needs, Part
 from gandalf_core.components import (
     CameraComponent,
     InfoComponent,
@@ -122,4 +122,4 @@ def fountain_state() -> np.ndarray:
 
 
 #: The technique the variants (``opengl.py``, ``webgpu.py``) hand the launcher with their backends.
-PART = Part(__package__)
+PART = Part(__package__, needs=Needs(opengl=430, opengl_for="compute shaders for its particles"))

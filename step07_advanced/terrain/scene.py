@@ -15,7 +15,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from gandalf_core import Scene, TransformComponent
-from gandalf_core.app.cli import Part
+from gandalf_core.app.cli import Needs, Part
 from gandalf_core.components import (
     CameraComponent,
     ClearColorComponent,
@@ -108,4 +108,4 @@ def build_scene(impl: ModuleType, terrain: TerrainBackend, eye: Any = EYE, targe
 
 
 #: The technique the variants (``opengl.py``, ``webgpu.py``) hand the launcher with their backends.
-PART = Part(__package__)
+PART = Part(__package__, needs=Needs(opengl=400, opengl_for="tessellation shaders"))

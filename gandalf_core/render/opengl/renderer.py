@@ -17,6 +17,7 @@ from ...resources import MaterialData, ResourceError
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
 from ..base import Renderer
+from ..capabilities import FLOOR, GL_FLOOR, CapabilityError, Needs, check, opengl_offer
 from ..frame import FRAME_FLOATS, INSTANCE_STRIDE, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
 from ..texture_checks import check_target_size
 from . import raw_gl
@@ -63,12 +64,18 @@ class OpenGLRenderer(Renderer):
 
     backend = "opengl"
 
-    def __init__(self, width: int, height: int, window: Any = None) -> None:
+    def __init__(self, width: int, height: int, window: Any = None, needs: Needs = FLOOR) -> None:
         super().__init__(width, height, window)
         if window is None:
             self.ctx = _standalone_context()
         else:
-            self.ctx = moderngl.create_context(require=330)
+            self.ctx = moderngl.create_context(require=GL_FLOOR)
+        try:
+            check(needs, opengl_offer(self.ctx))  # before anything is built on a context that cannot run the part
+        except CapabilityError:
+            if window is None:
+                self.ctx.release()
+            raise
         self.textures = TextureLib(self.ctx, self.stats)
         self.shaders = ShaderLib(self.ctx, self.stats)
         self.meshes = MeshLib(self.ctx, self.stats)

@@ -8,6 +8,8 @@ from typing import Any
 
 import wgpu
 
+from ..capabilities import FLOOR, Needs, check, webgpu_offer
+
 
 def _quiet_runtime_dir() -> None:
     # lavapipe warns when XDG_RUNTIME_DIR is unset; a private mode-700 folder silences it.
@@ -17,8 +19,12 @@ def _quiet_runtime_dir() -> None:
         os.environ["XDG_RUNTIME_DIR"] = path
 
 
-def request_device(canvas_context: Any = None) -> tuple[Any, Any]:
-    """Return ``(adapter, device)``; with a canvas context the adapter must be able to present to it."""
+def request_device(canvas_context: Any = None, needs: Needs = FLOOR) -> tuple[Any, Any]:
+    """Return ``(adapter, device)``; with a canvas context the adapter must be able to present to it.
+
+    The device has WebGPU's default limits and no optional feature, plus what ``needs`` states (a
+    :class:`~gandalf_core.render.capabilities.CapabilityError` when the adapter lacks it): what runs here then
+    runs on every implementation that offers the same."""
     _quiet_runtime_dir()
     if canvas_context is not None:
         adapter = wgpu.gpu.request_adapter_sync(canvas=canvas_context, power_preference="high-performance")
@@ -28,4 +34,6 @@ def request_device(canvas_context: Any = None) -> tuple[Any, Any]:
         raise RuntimeError(
             "no WebGPU adapter found: install a Vulkan driver (on Debian: mesa-vulkan-drivers libvulkan1)"
         )
-    return adapter, adapter.request_device_sync()
+    check(needs, webgpu_offer(adapter))
+    return adapter, adapter.request_device_sync(required_features=list(needs.features),
+                                                required_limits=needs.device_limits(adapter.limits))

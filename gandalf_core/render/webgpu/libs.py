@@ -62,6 +62,9 @@ class TextureLib(ResourceLib[WGPUTexture]):
     def __init__(self, device: Any, stats: Counter[str]) -> None:
         super().__init__(stats)
         self.device = device
+        # wgpu's OpenGL backend cannot bind one layer of a six-layer texture as a 2-D texture (it takes such a
+        # texture for a cube map): there, cube mips are made on the CPU as for every other texture.
+        self._cube_mips_on_gpu = device.adapter.info.get("backend_type") != "OpenGL"
 
     def _create(self, name: str, data: TextureData | CubeTextureData) -> WGPUTexture:
         check_texture_size(name, data, int(self.device.limits["max-texture-dimension-2d"]),
@@ -69,7 +72,7 @@ class TextureLib(ResourceLib[WGPUTexture]):
         cube = isinstance(data, CubeTextureData)
         fmt = "rgba8unorm-srgb" if data.srgb else "rgba8unorm"
         usage = wgpu.TextureUsage.TEXTURE_BINDING | wgpu.TextureUsage.COPY_DST
-        if cube and data.levels is None and data.mipmaps and _is_power_of_two(data.size):
+        if cube and data.levels is None and data.mipmaps and _is_power_of_two(data.size) and self._cube_mips_on_gpu:
             # A cube map's faces go up one by one from their own arrays (no stacked copy) and its mip levels are
             # made on the GPU, each the exact 2x2 box average of the level above (one bilinear tap at the texel
             # corner), in linear light for sRGB: no CPU mip chain (6 x 2048² faces: ~0.5 GB of floats).
@@ -287,6 +290,9 @@ class MeshLib(ResourceLib[WGPUMesh]):
     def __init__(self, device: Any, stats: Counter[str]) -> None:
         super().__init__(stats)
         self.device = device
+        # wgpu's OpenGL backend cannot bind one layer of a six-layer texture as a 2-D texture (it takes such a
+        # texture for a cube map): there, cube mips are made on the CPU as for every other texture.
+        self._cube_mips_on_gpu = device.adapter.info.get("backend_type") != "OpenGL"
 
     def _create(self, name: str, data: MeshData) -> WGPUMesh:
         ibo = None
@@ -333,6 +339,9 @@ class BufferLib(StorageBufferLib, ResourceLib[Any]):
     def __init__(self, device: Any, stats: Counter[str]) -> None:
         super().__init__(stats)
         self.device = device
+        # wgpu's OpenGL backend cannot bind one layer of a six-layer texture as a 2-D texture (it takes such a
+        # texture for a cube map): there, cube mips are made on the CPU as for every other texture.
+        self._cube_mips_on_gpu = device.adapter.info.get("backend_type") != "OpenGL"
 
     def _create(self, name: str, data: Any) -> Any:
         content, size = buffer_bytes(name, data)

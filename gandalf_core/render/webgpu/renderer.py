@@ -18,6 +18,7 @@ from ...resources import MaterialData, ResourceError
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_has
 from ..base import Renderer
+from ..capabilities import FLOOR, Needs
 from ..errors import ShaderCompileError
 from ..frame import FRAME_FLOATS, INSTANCE_STRIDE, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
 from ..shader_files import engine_shader_files, load_shader
@@ -44,7 +45,7 @@ class WebGPURenderer(Renderer):
 
     backend = "webgpu"
 
-    def __init__(self, width: int, height: int, window: Any = None) -> None:
+    def __init__(self, width: int, height: int, window: Any = None, needs: Needs = FLOOR) -> None:
         super().__init__(width, height, window)
         self._surface = None
         #: In a window, frames are drawn straight onto the surface texture (no offscreen target and blit) unless
@@ -54,7 +55,7 @@ class WebGPURenderer(Renderer):
             from wgpu.utils.glfw_present_info import get_glfw_present_info
 
             self._surface = wgpu.gpu.get_canvas_context(get_glfw_present_info(window.handle, vsync=False))
-        self.adapter, self.device = request_device(self._surface)
+        self.adapter, self.device = request_device(self._surface, needs)
         if self._surface is not None:
             # The blit samples the sRGB frame as linear light; an -srgb surface encodes it back unchanged.
             preferred = self._surface.get_preferred_format(self.adapter)
