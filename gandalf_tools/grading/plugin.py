@@ -38,7 +38,7 @@ from typing import Any
 
 import pytest
 
-from . import watchdog
+from . import remote, sandbox, watchdog
 
 IMPL_ENV = "GANDALF_IMPL"
 _PROPERTY = "gandalf_grade"
@@ -49,6 +49,9 @@ _graded: dict[str, dict[str, Any]] = {}
 # nodeid -> {"passed_call": bool, "failed": bool, "message": str, "duration": float}
 _outcomes: dict[str, dict[str, Any]] = {}
 _overlays: dict[str, ModuleType] = {}
+# step package -> (its sandbox, the stand-in of the student's package) for this run.
+_sandboxes: dict[str, tuple[Any, ModuleType]] = {}
+ROOT = Path(__file__).resolve().parents[2]
 # Test modules that failed to import (a course bug: their graded tests are missing from the grade), nodeid -> message.
 _collection_errors: dict[str, str] = {}
 
@@ -72,6 +75,12 @@ def pytest_addoption(parser: pytest.Parser) -> None:
         metavar="SECONDS",
         help=f"with --student: seconds one call of the student's function may take; a function that runs past it "
         f"fails that test and every later call at once, saying so (default {watchdog.DEFAULT_BUDGET:g}; 0: none)",
+    )
+    group.addoption(
+        "--grade-in-process",
+        action="store_true",
+        help="import the graded package into the test process instead of a sandboxed process (only for the "
+        "course's own code: the mutation check's mutants)",
     )
     group.addoption(
         "--grade-hard-timeout",
@@ -131,19 +140,38 @@ def _overlay(step_package: str) -> ModuleType | None:
     return _overlays[step_package]
 
 
+def _sandboxed(config: pytest.Config, step_package: str, folder: Path) -> ModuleType:
+    """The stand-in of the student's package ``folder``, whose code runs in the step's sandbox (one per run)."""
+    if step_package not in _sandboxes:
+        outputs = [str(Path(p).resolve().parent) for p in (config.getoption("--grade-json"),
+                                                           config.getoption("--gradescope")) if p]
+        box = sandbox.Sandbox(step_package, folder, hide=tuple(outputs))
+        budget = float(config.getoption("--grade-call-budget"))
+        _sandboxes[step_package] = (box, remote.install(step_package, folder, box, budget))
+    return _sandboxes[step_package][1]
+
+
 # --8<-- [start:impl_fixture]
 def impl_fixture(step_package: str) -> Any:
-    """Create the ``impl`` fixture of a step: its ``exercises`` or ``solutions`` package."""
+    """Create the ``impl`` fixture of a step: its ``exercises`` or ``solutions`` package.
+
+    A student's package (``--student``, ``GANDALF_IMPL``) runs in a sandboxed process (:mod:`.sandbox`); the
+    fixture gives its stand-in (:mod:`.remote`). ``--grade-in-process`` imports it here instead (the mutation
+    check's mutants: the course's own code)."""
 
     @pytest.fixture
     def impl(request: pytest.FixtureRequest) -> ModuleType:
-        overlay = _overlay(step_package)  # GANDALF_IMPL: a submission's or a mutant's package
-        budget = float(request.config.getoption("--grade-call-budget"))
+        config = request.config
+        folder = parse_impl_env(os.environ.get(IMPL_ENV)).get(step_package)  # a submission's or a mutant's package
+        if folder is None and not config.getoption("--student"):
+            return importlib.import_module(f"{step_package}.solutions")
+        if not config.getoption("--grade-in-process"):
+            return _sandboxed(config, step_package, folder or ROOT / step_package / "exercises")
+        budget = float(config.getoption("--grade-call-budget"))
+        overlay = _overlay(step_package)
         if overlay is not None:
             return watchdog.guard(overlay, budget)
-        if request.config.getoption("--student"):
-            return watchdog.guard(importlib.import_module(f"{step_package}.exercises"), budget)
-        return importlib.import_module(f"{step_package}.solutions")
+        return watchdog.guard(importlib.import_module(f"{step_package}.exercises"), budget)
 
     return impl
 
@@ -449,6 +477,9 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
 
 
 def pytest_unconfigure(config: pytest.Config) -> None:
+    for box, _package in _sandboxes.values():
+        box.stop()
+    _sandboxes.clear()
     folder = getattr(config, "_gandalf_collect_dir", None)
     if folder and Path(folder).is_dir():
         for path in Path(folder).iterdir():
