@@ -170,12 +170,47 @@ class Sandbox:
         protected = [private, Path(sys.prefix).resolve(), Path(sys.base_prefix).resolve(), ROOT / "gandalf_core",
                      Path(tempfile.gettempdir()).resolve()]
         hide = [p for p in hidden_paths(self.hide) if not any(q == p or p in q.parents for q in protected)]
-        mounts = "".join(f"mount -t tmpfs -o ro,size=4k,mode=0555 gandalf-hidden '{p}' || exit 97\n" for p in hide)
         if self.mode == "user+mount":
             drop = f"exec setpriv --reuid={self.uid} --regid={self.uid} --clear-groups --inh-caps=-all -- \"$@\"\n"
-            return ["unshare", "--mount", "--propagation", "private", "--", "sh", "-c", mounts + drop, "sh", *python]
+            script, kept = self._only_what_it_needs(private)
+            inside = [p for p in hide if any(k in p.parents for k in kept)]  # the rest is covered already
+            script += "".join(f"mount -t tmpfs -o ro,size=4k,mode=0555 gandalf-hidden '{p}' || exit 97\n"
+                              for p in inside)
+            script += drop
+            return ["unshare", "--mount", "--propagation", "private", "--pid", "--fork", "--mount-proc", "--", "sh", "-c",
+                    script, "sh", *python]
+        mounts = "".join(f"mount -t tmpfs -o ro,size=4k,mode=0555 gandalf-hidden '{p}' || exit 97\n" for p in hide)
         return ["unshare", "--user", "--map-root-user", "--mount", "--propagation", "private", "--", "sh", "-c",
                 mounts + 'exec "$@"\n', "sh", *python]
+
+    def _only_what_it_needs(self, private: Path) -> tuple[str, list[Path]]:
+        """Shell lines (run as root in the new mount namespace) that cover every folder where checkouts, submissions,
+        outputs and temp files live (``/tmp``, ``/home``, ``/root``, the checkout's top folder, ...) with an empty
+        read-only folder, then put back only what the student's process needs: its private folder, the engine, the
+        step packages (their ``solutions/`` covered again below), the virtual environment and Python itself."""
+        needed = [ROOT / "gandalf_core", *sorted(p.parent for p in ROOT.glob("step*/__init__.py")),
+                  Path(sys.prefix).resolve(), Path(sys.base_prefix).resolve(), Path(sys.executable).resolve().parent]
+        system = {"usr", "lib", "lib32", "lib64", "libx32", "bin", "sbin", "etc", "proc", "dev", "sys", "run", "var",
+                  "boot", ""}
+        tops = {Path("/", p.resolve().parts[1]) for p in [*needed, private, Path(tempfile.gettempdir())]
+                if len(p.resolve().parts) > 1}
+        tops |= {Path(p) for p in ("/tmp", "/home", "/root", "/srv", "/mnt", "/media", "/opt", "/var/tmp")}
+        covers = sorted(p for p in tops if p.is_dir() and p.parts[1] not in system or p == Path("/var/tmp"))
+        needed = [p for p in dict.fromkeys(needed) if p.is_dir() and any(c in p.parents for c in covers)]
+        stage = Path("/run") / f"gandalf-stage-{self.uid}"
+        stage.mkdir(exist_ok=True)
+        lines = ["set -e", f"mount -t tmpfs -o size=64k,mode=0700 gandalf-stage '{stage}'"]
+        keep = [*needed, private]
+        for i, path in enumerate(keep):
+            lines += [f"mkdir '{stage}/{i}'", f"mount --bind '{path}' '{stage}/{i}'"]
+        lines += [f"mount -t tmpfs -o size=1m,mode=0755 gandalf-cover '{c}'" for c in covers]
+        for i, path in enumerate(keep):
+            lines += [f"mkdir -p '{path}'", f"mount --bind '{stage}/{i}' '{path}'"]
+            if path != private:
+                lines.append(f"mount -o remount,bind,ro '{path}'")
+        lines += [f"mount -o remount,ro '{c}'" for c in covers]
+        lines += [f"umount -l '{stage}'", "set +e", ""]
+        return "\n".join(lines), keep
 
     def _start(self) -> None:
         self.private = self._lay_out()
@@ -208,6 +243,11 @@ class Sandbox:
             for fd in (self._to_child, self._from_child):
                 os.close(fd)
             self.proc = None
+        if self.uid is not None:
+            try:
+                (Path("/run") / f"gandalf-stage-{self.uid}").rmdir()
+            except OSError:
+                pass
         if self.private is not None:
             shutil.rmtree(self.private, ignore_errors=True)
             self.private = None

@@ -183,6 +183,7 @@ class Server:
         mirror.clear()
         mirror.update(live)
         assets = _Assets()
+        app = types.SimpleNamespace(**app) if isinstance(app, dict) else None
         obj.scene = types.SimpleNamespace(app=app, assets=assets)
         obj._members = dict(live)
         obj._lists = None
