@@ -16,9 +16,14 @@ controller gave it), so a test whose worker crashed (``os._exit``, a segfault, a
 failed instead of vanishing from the grade.
 
 ``GANDALF_IMPL="step01_window=/path/to/package"`` (several joined by ``os.pathsep``) grades the package at
-that path as the step's ``exercises`` (it is imported under that name, so relative imports and
-``load_impl(step, student=True)`` find it): the batch grader overlays a submission's folders with it and
-the mutation check its mutants.
+that path as the step's ``exercises``: the batch grader overlays a submission's folders with it and the mutation
+check its mutants.
+
+A student's package (``--student`` or ``GANDALF_IMPL``) never runs in this process: it runs in a sandboxed
+process (:mod:`.sandbox`) and the ``impl`` fixture gives its stand-in (:mod:`.remote`), put in ``sys.modules`` as
+``<step>.exercises`` so that ``load_impl(step, student=True)`` finds it too; only plain data comes back, and the
+results and grade files are written here. ``--grade-in-process`` imports the package here instead, for the course's
+own code only (the mutation check's mutants).
 """
 
 from __future__ import annotations
@@ -448,6 +453,8 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
     if not _graded:
         return
     result = summary()
+    if _sandboxes:  # how the student's code was kept from the checkout on this machine (sandbox.isolation)
+        result["isolation"] = sandbox.isolation()
     which = (
         "exercises (student)"
         if config.getoption("--student") or os.environ.get(IMPL_ENV)

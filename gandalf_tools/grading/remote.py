@@ -213,7 +213,8 @@ class RemoteSystem:
             self.data = pack_lights([])
 
     def _forward(self, hook: str, args: list[Any], members: list[tuple[uuid.UUID, tuple[Any, ...]]]) -> Any:
-        label = f"{type(self).__name__}.{'on_update_entity' if hook == 'on_update_system' and 'on_update_system' not in self._hooks else hook}"
+        shown = "on_update_entity" if hook == "on_update_system" and hook not in self._hooks else hook
+        label = f"{type(self).__name__}.{shown}"
         if self._session.sandbox.generation != self._generation:
             raise ExerciseTimeout(f"{label}: this {type(self).__name__} was lost when its process was ended "
                                   "(an earlier call hung or crashed)")

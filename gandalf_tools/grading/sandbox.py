@@ -177,8 +177,8 @@ class Sandbox:
             script += "".join(f"mount -t tmpfs -o ro,size=4k,mode=0555 gandalf-hidden '{p}' || exit 97\n"
                               for p in inside)
             script += drop
-            return ["unshare", "--mount", "--propagation", "private", "--pid", "--fork", "--mount-proc", "--", "sh", "-c",
-                    script, "sh", *python]
+            return ["unshare", "--mount", "--propagation", "private", "--pid", "--fork", "--mount-proc", "--",
+                    "sh", "-c", script, "sh", *python]
         mounts = "".join(f"mount -t tmpfs -o ro,size=4k,mode=0555 gandalf-hidden '{p}' || exit 97\n" for p in hide)
         return ["unshare", "--user", "--map-root-user", "--mount", "--propagation", "private", "--", "sh", "-c",
                 mounts + 'exec "$@"\n', "sh", *python]

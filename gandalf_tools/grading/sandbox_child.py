@@ -173,7 +173,8 @@ class Server:
         for entity, components in members:
             key = uuid.UUID(entity)
             old = mirror.get(key)
-            if old is not None and len(old) == len(components) and all(type(a) is type(b) for a, b in zip(old, components)):
+            same = old is not None and len(old) == len(components)
+            if same and all(type(a) is type(b) for a, b in zip(old, components)):
                 for mine, theirs in zip(old, components):
                     for name, value in wire.fields_of(theirs).items():
                         setattr(mine, name, value)

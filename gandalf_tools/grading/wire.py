@@ -48,8 +48,8 @@ def _float(value: float) -> Any:
     return value
 
 
-def encode_value(value: Any, blobs: list[bytes], objects: Callable[[Any], Any] | None = None, depth: int = 0,
-                 callbacks: Callable[[Any], int] | None = None) -> Any:
+def encode_value(value: Any, blobs: list[bytes], objects: Callable[[Any], Any] | None = None,
+                 depth: int = 0, callbacks: Callable[[Any], int] | None = None) -> Any:
     """``value`` as JSON-ready data, its arrays and bytes appended to ``blobs``; ``objects(value)`` turns any
     other object into ``(type_name, fields)`` or raises :class:`WireError`; ``callbacks(fn)`` numbers a function
     the other side may call back (``{"$cb": n}``)."""
@@ -83,13 +83,14 @@ def encode_value(value: Any, blobs: list[bytes], objects: Callable[[Any], Any] |
     if isinstance(value, (set, frozenset)):
         return {"$set": [encode_value(v, blobs, objects, depth + 1, callbacks) for v in value]}
     if isinstance(value, dict):
-        return {"$d": [[encode_value(k, blobs, objects, depth + 1, callbacks), encode_value(v, blobs, objects, depth + 1, callbacks)]
-                       for k, v in value.items()]}
+        return {"$d": [[encode_value(k, blobs, objects, depth + 1, callbacks),
+                        encode_value(v, blobs, objects, depth + 1, callbacks)] for k, v in value.items()]}
     if callbacks is not None and callable(value) and not isinstance(value, type):
         return {"$cb": callbacks(value)}
     if objects is not None:
         name, fields = objects(value)
-        return {"$o": name, "f": {str(k): encode_value(v, blobs, objects, depth + 1, callbacks) for k, v in fields.items()}}
+        return {"$o": name,
+                "f": {str(k): encode_value(v, blobs, objects, depth + 1, callbacks) for k, v in fields.items()}}
     raise WireError(f"a {t.__name__} (only numbers, strings, tuples, lists, dicts and arrays travel)")
 
 
@@ -108,7 +109,8 @@ def decode_value(data: Any, blobs: list[bytes], objects: Callable[[str, dict[str
     if "$set" in data:
         return {decode_value(v, blobs, objects, callbacks) for v in data["$set"]}
     if "$d" in data:
-        return {decode_value(k, blobs, objects, callbacks): decode_value(v, blobs, objects, callbacks) for k, v in data["$d"]}
+        return {decode_value(k, blobs, objects, callbacks): decode_value(v, blobs, objects, callbacks)
+                for k, v in data["$d"]}
     if "$f" in data:
         return float(data["$f"])
     if "$b" in data:
@@ -208,7 +210,8 @@ def fields_of(obj: Any) -> dict[str, Any]:
     try:
         return {k: v for k, v in vars(obj).items() if not k.startswith("_")}
     except TypeError:
-        raise WireError(f"a {type(obj).__name__} (only numbers, strings, tuples, lists, dicts and arrays travel)") from None
+        raise WireError(f"a {type(obj).__name__} (only numbers, strings, tuples, lists, dicts and arrays "
+                        "travel)") from None
 
 
 def build_object(cls: type, fields: dict[str, Any]) -> Any:
