@@ -56,7 +56,6 @@ _outcomes: dict[str, dict[str, Any]] = {}
 _overlays: dict[str, ModuleType] = {}
 # step package -> (its sandbox, the stand-in of the student's package) for this run.
 _sandboxes: dict[str, tuple[Any, ModuleType]] = {}
-ROOT = Path(__file__).resolve().parents[2]
 # Test modules that failed to import (a course bug: their graded tests are missing from the grade), nodeid -> message.
 _collection_errors: dict[str, str] = {}
 
@@ -171,7 +170,9 @@ def impl_fixture(step_package: str) -> Any:
         if folder is None and not config.getoption("--student"):
             return importlib.import_module(f"{step_package}.solutions")
         if not config.getoption("--grade-in-process"):
-            return _sandboxed(config, step_package, folder or ROOT / step_package / "exercises")
+            if folder is None:  # the step's own exercises (found without importing them)
+                folder = Path(importlib.import_module(step_package).__file__ or "").resolve().parent / "exercises"
+            return _sandboxed(config, step_package, folder)
         budget = float(config.getoption("--grade-call-budget"))
         overlay = _overlay(step_package)
         if overlay is not None:

@@ -22,6 +22,7 @@ imports it.
 from __future__ import annotations
 
 import functools
+import importlib
 import os
 import shutil
 import signal
@@ -112,6 +113,11 @@ def hidden_paths(extra: list[str] | tuple[str, ...] = ()) -> list[Path]:
     return sorted(p.resolve() for p in paths if p.is_dir())
 
 
+def _step_dirs(graded: Path) -> list[Path]:
+    """The checkout's step packages and the graded one (which may live elsewhere)."""
+    return sorted({p.parent.resolve() for p in ROOT.glob("step*/__init__.py")} | {graded})
+
+
 def _uid() -> int:
     return 200000 + os.getpid() % 100000
 
@@ -122,6 +128,8 @@ class Sandbox:
     def __init__(self, step: str, folder: Path, *, hide: tuple[str, ...] = (), memory: int = MEMORY_LIMIT) -> None:
         self.step, self.folder, self.hide, self.memory = step, Path(folder), tuple(hide), memory
         self.package = f"{step}.exercises"
+        # The step package itself (course code, already imported by the tests): usually one of the checkout's.
+        self.step_dir = Path(importlib.import_module(step).__file__ or "").resolve().parent
         self.mode = isolation()
         self.uid = _uid() if self.mode == "user+mount" else None
         self.generation = 0  # bumped per process started: instances made in an older one are gone
@@ -137,8 +145,8 @@ class Sandbox:
         pkgs = private / "pkgs"
         pkgs.mkdir()
         (pkgs / "gandalf_core").symlink_to(ROOT / "gandalf_core")
-        for step in sorted(ROOT.glob("step*/__init__.py")):
-            source, target = step.parent, pkgs / step.parent.name
+        for source in _step_dirs(self.step_dir):
+            target = pkgs / source.name
             target.mkdir()
             for entry in source.iterdir():
                 if entry.name not in ("solutions", "exercises", "__pycache__"):
@@ -169,7 +177,8 @@ class Sandbox:
             return python
         protected = [private, Path(sys.prefix).resolve(), Path(sys.base_prefix).resolve(), ROOT / "gandalf_core",
                      Path(tempfile.gettempdir()).resolve()]
-        hide = [p for p in hidden_paths(self.hide) if not any(q == p or p in q.parents for q in protected)]
+        hide = [p for p in hidden_paths((*self.hide, str(self.step_dir / "solutions")))
+                if not any(q == p or p in q.parents for q in protected)]
         if self.mode == "user+mount":
             drop = f"exec setpriv --reuid={self.uid} --regid={self.uid} --clear-groups --inh-caps=-all -- \"$@\"\n"
             script, kept = self._only_what_it_needs(private)
@@ -188,7 +197,7 @@ class Sandbox:
         outputs and temp files live (``/tmp``, ``/home``, ``/root``, the checkout's top folder, ...) with an empty
         read-only folder, then put back only what the student's process needs: its private folder, the engine, the
         step packages (their ``solutions/`` covered again below), the virtual environment and Python itself."""
-        needed = [ROOT / "gandalf_core", *sorted(p.parent for p in ROOT.glob("step*/__init__.py")),
+        needed = [ROOT / "gandalf_core", *_step_dirs(self.step_dir),
                   Path(sys.prefix).resolve(), Path(sys.base_prefix).resolve(), Path(sys.executable).resolve().parent]
         system = {"usr", "lib", "lib32", "lib64", "libx32", "bin", "sbin", "etc", "proc", "dev", "sys", "run", "var",
                   "boot", ""}
@@ -281,6 +290,10 @@ class Sandbox:
             status = self.proc.poll() if self.proc else None
             self.failed[key] = (f"{label} ended its process (exit status {status}){self._last_words()}" if isinstance(
                 exc, (EOFError, OSError)) else f"{label} sent a reply that cannot be read ({exc})")
+        except BaseException:  # the test's own time limit (or ^C) while waiting: the process is mid-call, end it
+            self.failed[key] = f"{label} was stopped by the test's time limit"
+            self.stop()
+            raise
         self.stop()
         raise SandboxFailure(self.failed[key])
 
