@@ -454,7 +454,8 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
     if not _graded:
         return
     result = summary()
-    if _sandboxes:  # how the student's code was kept from the checkout on this machine (sandbox.isolation)
+    student = config.getoption("--student") or os.environ.get(IMPL_ENV)
+    if student and not config.getoption("--grade-in-process"):  # how the student's code was kept from the checkout
         result["isolation"] = sandbox.isolation()
     which = (
         "exercises (student)"
