@@ -199,7 +199,7 @@ def type_name(cls: type) -> str:
 
 def fields_of(obj: Any) -> dict[str, Any]:
     """An engine object's field values: a dataclass's fields, a columnar component's columns (copied), or an
-    ordinary component's public attributes."""
+    ordinary component's public attributes and slots."""
     import dataclasses
 
     if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
@@ -207,11 +207,15 @@ def fields_of(obj: Any) -> dict[str, Any]:
     columns = getattr(type(obj), "columns", None)
     if isinstance(columns, dict) and hasattr(obj, "_local"):
         return {name: np.array(getattr(obj, name), dtype=np.float64) for name in columns}
-    try:
-        return {k: v for k, v in vars(obj).items() if not k.startswith("_")}
-    except TypeError:
-        raise WireError(f"a {type(obj).__name__} (only numbers, strings, tuples, lists, dicts and arrays "
-                        "travel)") from None
+    if not hasattr(obj, "__dict__") and not hasattr(type(obj), "__slots__"):
+        raise WireError(f"a {type(obj).__name__} (only numbers, strings, tuples, lists, dicts and arrays travel)")
+    fields = {k: v for k, v in getattr(obj, "__dict__", {}).items() if not k.startswith("_")}
+    for cls in type(obj).__mro__:  # slots (an asset name component keeps its name in one)
+        slots = getattr(cls, "__slots__", ())
+        for slot in (slots,) if isinstance(slots, str) else slots:
+            if slot not in ("__dict__", "__weakref__") and hasattr(obj, slot):
+                fields[slot] = getattr(obj, slot)
+    return fields
 
 
 def build_object(cls: type, fields: dict[str, Any]) -> Any:
