@@ -24,7 +24,7 @@ import os
 import select
 import struct
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from typing import Any
 
 import numpy as np
@@ -82,7 +82,7 @@ def encode_value(value: Any, blobs: list[bytes], objects: Callable[[Any], Any] |
         return [encode_value(v, blobs, objects, depth + 1, callbacks) for v in value]
     if isinstance(value, (set, frozenset)):
         return {"$set": [encode_value(v, blobs, objects, depth + 1, callbacks) for v in value]}
-    if isinstance(value, dict):
+    if isinstance(value, (dict, Mapping)):  # a read-only mapping (a material's params) travels as a dict
         return {"$d": [[encode_value(k, blobs, objects, depth + 1, callbacks),
                         encode_value(v, blobs, objects, depth + 1, callbacks)] for k, v in value.items()]}
     if callbacks is not None and callable(value) and not isinstance(value, type):
@@ -199,7 +199,7 @@ def type_name(cls: type) -> str:
 
 def fields_of(obj: Any) -> dict[str, Any]:
     """An engine object's field values: a dataclass's fields, a columnar component's columns (copied), or an
-    ordinary component's public attributes and slots."""
+    ordinary component's attributes and slots."""
     import dataclasses
 
     if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
@@ -209,7 +209,7 @@ def fields_of(obj: Any) -> dict[str, Any]:
         return {name: np.array(getattr(obj, name), dtype=np.float64) for name in columns}
     if not hasattr(obj, "__dict__") and not hasattr(type(obj), "__slots__"):
         raise WireError(f"a {type(obj).__name__} (only numbers, strings, tuples, lists, dicts and arrays travel)")
-    fields = {k: v for k, v in getattr(obj, "__dict__", {}).items() if not k.startswith("_")}
+    fields = dict(getattr(obj, "__dict__", {}))  # private ones too (a light keeps its kind behind a property)
     for cls in type(obj).__mro__:  # slots (an asset name component keeps its name in one)
         slots = getattr(cls, "__slots__", ())
         for slot in (slots,) if isinstance(slots, str) else slots:
