@@ -169,7 +169,7 @@ def apply_fields(component: Any, before: dict[str, Any], after: dict[str, Any]) 
         else:
             ok = type(new) is type(old)
         if not ok:
-            raise StudentError(f"{type(component).__name__}.{name}: expected a {type(old).__name__}, "
+            raise StudentError(f"{type(component).__name__}.{name}: expected {type(old).__name__}, "
                                f"got {type(new).__name__}")
         if not _same(new, old):
             setattr(component, name, new)

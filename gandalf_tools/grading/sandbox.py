@@ -287,7 +287,10 @@ class Sandbox:
         except wire.Timeout:
             self.failed[key] = f"{label} did not return within {budget:g} s (a loop that never ends?)"
         except (EOFError, wire.WireError, OSError) as exc:
-            status = self.proc.poll() if self.proc else None
+            try:
+                status = self.proc.wait(timeout=2) if self.proc else None
+            except subprocess.TimeoutExpired:
+                status = None
             self.failed[key] = (f"{label} ended its process (exit status {status}){self._last_words()}" if isinstance(
                 exc, (EOFError, OSError)) else f"{label} sent a reply that cannot be read ({exc})")
         except BaseException:  # the test's own time limit (or ^C) while waiting: the process is mid-call, end it
