@@ -294,6 +294,27 @@ class RemoteModule(types.ModuleType):
         self._session, self._prefix, self._names = session, prefix, names
         self._cache: dict[str, Any] = {}
 
+    def __setattr__(self, attr: str, value: Any) -> None:
+        """A test's ``monkeypatch.setattr`` of one of the student's functions (by the grader's own function, or back
+        to the student's): the sandboxed module gets it too, so the student's other code calls it."""
+        if not attr.startswith("_") and attr in getattr(self, "_names", {}) and callable(value):
+            target = f"{self._prefix}{attr}"
+            own = isinstance(value, RemoteFunction) and value.target == target  # monkeypatch's undo
+            self._session.call({"op": "patch", "target": target, "value": None if own else value},
+                               f"patching {target}", "patch")
+            self._cache[attr] = value
+            return
+        super().__setattr__(attr, value)
+
+    def __delattr__(self, attr: str) -> None:
+        """The undo of a patch (``monkeypatch`` deletes what it set): the student's own function again."""
+        if not attr.startswith("_") and attr in getattr(self, "_names", {}):
+            target = f"{self._prefix}{attr}"
+            self._session.call({"op": "patch", "target": target, "value": None}, f"patching {target}", "patch")
+            self._cache.pop(attr, None)
+            return
+        super().__delattr__(attr)
+
     def __getattr__(self, attr: str) -> Any:
         if attr.startswith("__") or attr in ("_session", "_prefix", "_names", "_cache"):
             raise AttributeError(attr)

@@ -138,6 +138,7 @@ class Sandbox:
         self._to_child = self._from_child = -1
         self.failed: dict[str, str] = {}  # target -> the sentence its later calls fail with
         self.import_error: str | None = None
+        self.callables = []
 
     # --- the private folder -------------------------------------------------------------------------
     def _lay_out(self) -> Path:
@@ -237,6 +238,7 @@ class Sandbox:
         os.close(from_child_w)
         self._to_child, self._from_child = to_child_w, from_child_r
         self.generation += 1
+        self.callables: list[Callable[..., Any]] = []  # the grader's functions the student's code may call back
 
     def stop(self) -> None:
         """End the sandboxed process, every process of its user, and remove its folder."""
@@ -311,7 +313,7 @@ class Sandbox:
         return f"; its last words: {text[-limit:]}" if text else ""
 
     def _exchange(self, message: dict[str, Any], budget: float, objects: Any, encode_objects: Any) -> Any:
-        callables: list[Callable[..., Any]] = []
+        callables = self.callables  # kept for the process's life: a function patched in stays callable
 
         def number(fn: Callable[..., Any]) -> int:
             callables.append(fn)
