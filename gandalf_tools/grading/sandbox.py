@@ -7,12 +7,14 @@ imports it.
   the student's package as ``<step>/exercises``, the step packages' other modules (links, never ``solutions/``),
   the engine, the server (``sandbox_child.py``) and its own temp folder and bytecode cache. Python runs isolated
   (``-I``) with that folder first on ``sys.path`` and as its working folder; the checkout is not on ``sys.path``.
-* **Who it is.** When the grader runs as root (Gradescope does), the process runs as a user of its own (no name,
-  uid ``200000 + pid % 100000``) in a mount namespace where every ``solutions/``, ``tests/``, ``.git``, the output
-  folders and the other submissions (``GANDALF_SANDBOX_HIDE``) are covered by an empty read-only folder. As any
-  other user, a user + mount namespace (``unshare -Urm``) covers the same folders when the system allows it; where it
-  does not, the student's process can read the checkout's files (``isolation()`` says which applies; the grade
-  records it).
+* **Who it is.** When the grader runs as root (Gradescope does), the process runs as a user of its own (a uid
+  without a name, one per sandbox), in its own pid namespace and a mount namespace where ``/tmp``, ``/home``,
+  ``/root``, the checkout's top folder and the like are covered by empty read-only folders and only what it needs is
+  put back read-only (the engine, the step packages with ``solutions/`` covered again, the virtual environment,
+  Python): no solution, test, git history, output folder or other submission is there to read. As any other user, a
+  user + mount namespace (``unshare -Urm``) covers the checkouts' ``solutions/``, ``tests/`` and ``.git`` and the
+  folders of ``GANDALF_SANDBOX_HIDE`` (outputs, other submissions) when the system allows it; where it does not,
+  the student's process can read what its user can (``isolation()`` says which applies; the grade records it).
 * **Limits.** Memory (RLIMIT_AS), processes (RLIMIT_NPROC, for its own user), file size (RLIMIT_FSIZE), CPU time
   (RLIMIT_CPU), and a wall-clock budget per call kept by this process: a call past it ends the sandboxed process
   (and every process of its user), the function is remembered as hung so that its later calls fail at once, and
@@ -118,8 +120,13 @@ def _step_dirs(graded: Path) -> list[Path]:
     return sorted({p.parent.resolve() for p in ROOT.glob("step*/__init__.py")} | {graded})
 
 
+_made = iter(range(1 << 30))
+
+
 def _uid() -> int:
-    return 200000 + os.getpid() % 100000
+    """A user id of the sandbox's own (no name needed): one per sandbox of this process (a step's), so that ending
+    the processes of one never touches another's."""
+    return 200000 + (os.getpid() * 16 + next(_made) % 16) % 1600000
 
 
 class Sandbox:
