@@ -17,21 +17,21 @@ from __future__ import annotations
 
 import builtins
 import dataclasses
-import re
 import sys
 import types
 import uuid
 import warnings
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from . import wire
-from .sandbox import Sandbox, SandboxFailure
+from .sandbox import ALLOWED_MODULE, Sandbox, SandboxFailure
 from .watchdog import ExerciseTimeout, describe_call
 
-_ALLOWED_MODULE = re.compile(r"^(gandalf_core(\..*)?|step\d\d_[a-z_]+(\.(?!exercises|solutions)[a-z_]+)*)$")
+_ALLOWED_MODULE = ALLOWED_MODULE
 
 
 class StudentError(Exception):
@@ -94,7 +94,7 @@ class Session:
     def __init__(self, sandbox: Sandbox, budget: float) -> None:
         self.sandbox, self.budget = sandbox, budget
 
-    def call(self, message: dict[str, Any], label: str, key: str) -> Any:
+    def call(self, message: dict[str, Any], label: str | Callable[[], str], key: str) -> Any:
         try:
             reply = self.sandbox.request(message, label=label, key=key, budget=self.budget,
                                          objects=trusted_object, encode_objects=_encode_object)
@@ -102,7 +102,7 @@ class Session:
             raise ExerciseTimeout(str(exc)) from None
         _warn(reply.get("warnings", []))
         if "error" in reply:
-            _raise(reply["error"], label)
+            _raise(reply["error"], label() if callable(label) else label)
         return reply.get("ok")
 
 
@@ -113,7 +113,7 @@ class RemoteFunction:
 
     def __call__(self, *args: Any, **kwargs: Any) -> Any:
         return self.session.call({"op": "call", "target": self.target, "args": list(args), "kwargs": kwargs},
-                                 describe_call(self.__name__, args, kwargs), self.target)
+                                 lambda: describe_call(self.__name__, args, kwargs), self.target)
 
     def __repr__(self) -> str:
         return f"<the student's {self.target} (sandboxed)>"

@@ -23,15 +23,19 @@ imports it.
 
 from __future__ import annotations
 
+import builtins
 import functools
 import importlib
+import marshal
 import os
+import re
 import shutil
 import signal
 import subprocess
 import sys
 import tempfile
 import time
+import types
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -120,6 +124,49 @@ def _step_dirs(graded: Path) -> list[Path]:
     return sorted({p.parent.resolve() for p in ROOT.glob("step*/__init__.py")} | {graded})
 
 
+#: Modules whose types and functions the two sides may name: the engine's and the steps' own, never a student's
+#: package or a reference solution.
+ALLOWED_MODULE = re.compile(r"^(gandalf_core(\..*)?|step\d\d_[a-z_]+(\.(?!exercises|solutions)[a-z_]+)*)$")
+
+
+#: Modules a shipped function may use by name (see :func:`recipe`).
+SHIPPED_MODULES = ("numpy", "math")
+
+
+def _names_of(code: types.CodeType) -> set[str]:
+    names = set(code.co_names)
+    for const in code.co_consts:
+        if isinstance(const, types.CodeType):
+            names |= _names_of(const)
+    return names
+
+
+def recipe(fn: Callable[..., Any]) -> dict[str, Any] | None:
+    """How the sandbox can run ``fn`` itself instead of calling it back: for a function of the engine or a step
+    (never a student's package nor a solution) whose captured values, defaults and global names are plain data or
+    ``numpy``/``math``, its code (``marshal``: course code going to the sandbox, never read back) and those values.
+    An acceleration function that a simulation calls thousands of times then costs no round trip each. None for
+    any other function (it is called back)."""
+    if not isinstance(fn, types.FunctionType) or not ALLOWED_MODULE.match(fn.__module__ or "") or fn.__kwdefaults__:
+        return None
+    names: dict[str, Any] = {}
+    for name in _names_of(fn.__code__):
+        if name in fn.__globals__:
+            value = fn.__globals__[name]
+            names[name] = {"module": value.__name__} if isinstance(value, types.ModuleType) else value
+            if isinstance(value, types.ModuleType) and value.__name__ not in SHIPPED_MODULES:
+                return None
+        elif not hasattr(builtins, name):
+            return None
+    data = {"code": marshal.dumps(fn.__code__), "name": fn.__name__, "globals": names,
+            "cells": [c.cell_contents for c in fn.__closure__ or ()], "defaults": fn.__defaults__}
+    try:
+        wire.encode_value(data, [])
+    except (wire.WireError, ValueError):  # a captured object or function: call it back instead
+        return None
+    return data
+
+
 _made = iter(range(1 << 30))
 
 
@@ -146,6 +193,7 @@ class Sandbox:
         self.failed: dict[str, str] = {}  # target -> the sentence its later calls fail with
         self.import_error: str | None = None
         self.callables = []
+        self._recipes: dict[int, tuple[Callable[..., Any], dict[str, Any] | None]] = {}
 
     # --- the private folder -------------------------------------------------------------------------
     def _lay_out(self) -> Path:
@@ -271,12 +319,12 @@ class Sandbox:
             self.private = None
 
     # --- requests -------------------------------------------------------------------------------------
-    def request(self, message: dict[str, Any], *, label: str, budget: float, key: str | None = None,
+    def request(self, message: dict[str, Any], *, label: str | Callable[[], str], budget: float, key: str,
                 objects: Callable[[str, dict[str, Any]], Any] | None = None,
                 encode_objects: Callable[[Any], Any] | None = None) -> Any:
         """Send ``message``; the reply's ``ok`` value (decoded with ``objects``) or its ``error``/``warnings`` as
-        they came. ``key`` names the function for the memory of hung ones; ``label`` says it in messages."""
-        key = key or label
+        they came. ``key`` names the function for the memory of hung ones; ``label`` (or what it returns, made only
+        for a message) says the call in messages."""
         if key in self.failed:
             raise SandboxFailure(self.failed[key])
         if self.import_error is not None:
@@ -291,19 +339,22 @@ class Sandbox:
                 self.import_error = f"importing your {self.package} {why}"
                 self.stop()
                 raise SandboxFailure(self.import_error) from None
+        def said() -> str:
+            return label() if callable(label) else label
+
         try:
             return self._exchange(message, budget, objects, encode_objects)
         except wire.Timeout:
-            self.failed[key] = f"{label} did not return within {budget:g} s (a loop that never ends?)"
+            self.failed[key] = f"{said()} did not return within {budget:g} s (a loop that never ends?)"
         except (EOFError, wire.WireError, OSError) as exc:
             try:
                 status = self.proc.wait(timeout=2) if self.proc else None
             except subprocess.TimeoutExpired:
                 status = None
-            self.failed[key] = (f"{label} ended its process (exit status {status}){self._last_words()}" if isinstance(
-                exc, (EOFError, OSError)) else f"{label} sent a reply that cannot be read ({exc})")
+            self.failed[key] = (f"{said()} ended its process (exit status {status}){self._last_words()}" if isinstance(
+                exc, (EOFError, OSError)) else f"{said()} sent a reply that cannot be read ({exc})")
         except BaseException:  # the test's own time limit (or ^C) while waiting: the process is mid-call, end it
-            self.failed[key] = f"{label} was stopped by the test's time limit"
+            self.failed[key] = f"{said()} was stopped by the test's time limit"
             self.stop()
             raise
         self.stop()
@@ -322,7 +373,12 @@ class Sandbox:
     def _exchange(self, message: dict[str, Any], budget: float, objects: Any, encode_objects: Any) -> Any:
         callables = self.callables  # kept for the process's life: a function patched in stays callable
 
-        def number(fn: Callable[..., Any]) -> int:
+        def number(fn: Callable[..., Any]) -> int | dict[str, Any]:
+            if id(fn) not in self._recipes or self._recipes[id(fn)][0] is not fn:
+                self._recipes[id(fn)] = (fn, recipe(fn))  # the function is kept: its id stays its own
+            rebuilt = self._recipes[id(fn)][1]
+            if rebuilt is not None:
+                return rebuilt
             callables.append(fn)
             return len(callables) - 1
 

@@ -16,7 +16,9 @@ the answer. Nothing here is trusted: the grader checks every reply.
 
 from __future__ import annotations
 
+import builtins
 import importlib
+import marshal
 import os
 import sys
 import traceback
@@ -52,8 +54,11 @@ class Channel:
 _channel: Channel
 
 
-def _callback(index: int) -> Any:
-    """The grader's callable ``index`` (an argument such as an acceleration function): each call asks the grader."""
+def _callback(index: Any) -> Any:
+    """The grader's callable ``index`` (an argument such as an acceleration function): each call asks the grader;
+    or a recipe: a function of the course's own code rebuilt here (see ``sandbox.recipe``)."""
+    if isinstance(index, dict):
+        return _rebuild_function(index)
 
     def call(*args: Any) -> Any:
         _channel.send({"callback": index, "args": list(args)})
@@ -63,6 +68,16 @@ def _callback(index: int) -> Any:
         return reply["ok"]
 
     return call
+
+
+def _rebuild_function(recipe: dict[str, Any]) -> Any:
+    """A function of the course's own code that the grader sent (its code, globals and captured values)."""
+    names = {k: importlib.import_module(v["module"]) if isinstance(v, dict) and set(v) == {"module"} else v
+             for k, v in recipe["globals"].items()}
+    code = marshal.loads(recipe["code"])
+    cells = tuple(types.CellType(v) for v in recipe["cells"])
+    defaults = tuple(recipe["defaults"]) if recipe["defaults"] is not None else None
+    return types.FunctionType(code, {"__builtins__": builtins, **names}, recipe["name"], defaults, cells or None)
 
 
 def _rebuild(name: str, fields: dict[str, Any]) -> Any:
@@ -235,6 +250,9 @@ def main() -> None:
             request = _channel.receive()
         except EOFError:
             os._exit(0)
+        except Exception as exc:  # noqa: BLE001 - a request this side cannot rebuild: say so, keep serving
+            _channel.send({"error": _error(exc), "warnings": []})
+            continue
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
             try:
