@@ -145,11 +145,24 @@ def _overlay(step_package: str) -> ModuleType | None:
 
 
 def _sandboxed(config: pytest.Config, step_package: str, folder: Path) -> ModuleType:
-    """The stand-in of the student's package ``folder``, whose code runs in the step's sandbox (one per run)."""
+    """The stand-in of the student's package ``folder``, whose code runs in the run's sandbox (one process for every
+    step graded, started once)."""
     if step_package not in _sandboxes:
-        outputs = [str(Path(p).resolve().parent) for p in (config.getoption("--grade-json"),
-                                                           config.getoption("--gradescope")) if p]
-        box = sandbox.Sandbox(step_package, folder, hide=tuple(outputs))
+        boxes = {box for box, _ in _sandboxes.values()}
+        if boxes:
+            box = boxes.pop()
+            box.add(step_package, folder)
+        else:
+            outputs = [str(Path(p).resolve().parent) for p in (config.getoption("--grade-json"),
+                                                               config.getoption("--gradescope")) if p]
+            # Every package the run may grade goes into the first layout: one process start for the whole run.
+            wanted = {p.parent.parent.name: p.parent for p in sandbox.ROOT.glob("step*/exercises/__init__.py")
+                      } if config.getoption("--student") else {}
+            wanted.update(parse_impl_env(os.environ.get(IMPL_ENV)))
+            wanted[step_package] = folder
+            box = sandbox.Sandbox(step_package, folder, hide=tuple(outputs))
+            for step, other in wanted.items():
+                box.add(step, other)
         budget = float(config.getoption("--grade-call-budget"))
         _sandboxes[step_package] = (box, remote.install(step_package, folder, box, budget))
     return _sandboxes[step_package][1]
@@ -486,7 +499,7 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
 
 
 def pytest_unconfigure(config: pytest.Config) -> None:
-    for box, _package in _sandboxes.values():
+    for box in {box for box, _package in _sandboxes.values()}:
         box.stop()
     _sandboxes.clear()
     folder = getattr(config, "_gandalf_collect_dir", None)

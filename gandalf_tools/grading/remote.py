@@ -91,12 +91,12 @@ def _warn(caught: list[Any]) -> None:
 class Session:
     """The sandbox of one step's package, with the grader's budget per call."""
 
-    def __init__(self, sandbox: Sandbox, budget: float) -> None:
-        self.sandbox, self.budget = sandbox, budget
+    def __init__(self, sandbox: Sandbox, budget: float, package: str) -> None:
+        self.sandbox, self.budget, self.package = sandbox, budget, package
 
     def call(self, message: dict[str, Any], label: str | Callable[[], str], key: str) -> Any:
         try:
-            reply = self.sandbox.request(message, label=label, key=key, budget=self.budget,
+            reply = self.sandbox.request({**message, "package": self.package}, label=label, key=key, budget=self.budget,
                                          objects=trusted_object, encode_objects=_encode_object)
         except SandboxFailure as exc:
             raise ExerciseTimeout(str(exc)) from None
@@ -370,7 +370,7 @@ def install(step: str, folder: Path, sandbox: Sandbox, budget: float) -> RemoteP
     place of any real one, so that nothing in this process imports the student's files."""
     import importlib
 
-    package = RemotePackage(step, folder, Session(sandbox, budget))
+    package = RemotePackage(step, folder, Session(sandbox, budget, f"{step}.exercises"))
     for name in [k for k in sys.modules if k == package.__name__ or k.startswith(package.__name__ + ".")]:
         del sys.modules[name]
     sys.modules[package.__name__] = package

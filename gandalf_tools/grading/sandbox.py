@@ -119,9 +119,9 @@ def hidden_paths(extra: list[str] | tuple[str, ...] = ()) -> list[Path]:
     return sorted(p.resolve() for p in paths if p.is_dir())
 
 
-def _step_dirs(graded: Path) -> list[Path]:
-    """The checkout's step packages and the graded one (which may live elsewhere)."""
-    return sorted({p.parent.resolve() for p in ROOT.glob("step*/__init__.py")} | {graded})
+def _step_dirs(graded: list[Path]) -> list[Path]:
+    """The checkout's step packages and the graded ones (which may live elsewhere)."""
+    return sorted({p.parent.resolve() for p in ROOT.glob("step*/__init__.py")} | set(graded))
 
 
 #: Modules whose types and functions the two sides may name: the engine's and the steps' own, never a student's
@@ -177,13 +177,16 @@ def _uid() -> int:
 
 
 class Sandbox:
-    """One sandboxed process for a step's package (started on first use, again after a hang or a crash)."""
+    """One sandboxed process for the graded packages of a grading session, one per step (started on first use,
+    again after a hang or a crash)."""
 
     def __init__(self, step: str, folder: Path, *, hide: tuple[str, ...] = (), memory: int = MEMORY_LIMIT) -> None:
-        self.step, self.folder, self.hide, self.memory = step, Path(folder), tuple(hide), memory
-        self.package = f"{step}.exercises"
-        # The step package itself (course code, already imported by the tests): usually one of the checkout's.
-        self.step_dir = Path(importlib.import_module(step).__file__ or "").resolve().parent
+        self.hide, self.memory = tuple(hide), memory
+        self.folders: dict[str, Path] = {}  # step package -> the folder graded as its exercises
+        self.step_dirs: dict[str, Path] = {}  # step package -> its own folder (course code)
+        self.imported: set[str] = set()  # the packages the running process has imported
+        self.import_errors: dict[str, str] = {}
+        self.add(step, folder)
         self.mode = isolation()
         self.uid = _uid() if self.mode == "user+mount" else None
         self.generation = 0  # bumped per process started: instances made in an older one are gone
@@ -191,9 +194,18 @@ class Sandbox:
         self.private: Path | None = None
         self._to_child = self._from_child = -1
         self.failed: dict[str, str] = {}  # target -> the sentence its later calls fail with
-        self.import_error: str | None = None
         self.callables = []
         self._recipes: dict[int, tuple[Callable[..., Any], dict[str, Any] | None]] = {}
+
+    def add(self, step: str, folder: Path) -> None:
+        """Grade ``folder`` as ``<step>.exercises`` too (a process already running starts again to include it)."""
+        if self.folders.get(step) == Path(folder):
+            return
+        self.folders[step] = Path(folder)
+        # The step package itself (course code, already imported by the tests): usually one of the checkout's.
+        self.step_dirs[step] = Path(importlib.import_module(step).__file__ or "").resolve().parent
+        if getattr(self, "proc", None) is not None:
+            self.stop()
 
     # --- the private folder -------------------------------------------------------------------------
     def _lay_out(self) -> Path:
@@ -201,14 +213,14 @@ class Sandbox:
         pkgs = private / "pkgs"
         pkgs.mkdir()
         (pkgs / "gandalf_core").symlink_to(ROOT / "gandalf_core")
-        for source in _step_dirs(self.step_dir):
+        for source in _step_dirs(list(self.step_dirs.values())):
             target = pkgs / source.name
             target.mkdir()
             for entry in source.iterdir():
                 if entry.name not in ("solutions", "exercises", "__pycache__"):
                     (target / entry.name).symlink_to(entry)
-            if source.name == self.step:
-                shutil.copytree(self.folder, target / "exercises", symlinks=False,
+            if source.name in self.folders:
+                shutil.copytree(self.folders[source.name], target / "exercises", symlinks=False,
                                 ignore=shutil.ignore_patterns("__pycache__", "*.pyc", "solutions"))
             elif (source / "exercises").is_dir():
                 shutil.copytree(source / "exercises", target / "exercises",
@@ -227,13 +239,13 @@ class Sandbox:
     def _command(self, private: Path, fd_in: int, fd_out: int) -> list[str]:
         boot = _BOOT.format(memory=self.memory, fsize=FILE_LIMIT, cpu=CPU_LIMIT,
                             nproc=PROCESS_LIMIT if self.uid is not None else None)
-        python = [sys.executable, "-I", "-c", boot, str(private), str(private / "pkgs"), str(fd_in), str(fd_out),
-                  self.package]
+        python = [sys.executable, "-I", "-c", boot, str(private), str(private / "pkgs"), str(fd_in), str(fd_out)]
         if self.mode == "process":
             return python
         protected = [private, Path(sys.prefix).resolve(), Path(sys.base_prefix).resolve(), ROOT / "gandalf_core",
                      Path(tempfile.gettempdir()).resolve()]
-        hide = [p for p in hidden_paths((*self.hide, str(self.step_dir / "solutions")))
+        solutions = [str(d / "solutions") for d in self.step_dirs.values()]
+        hide = [p for p in hidden_paths((*self.hide, *solutions))
                 if not any(q == p or p in q.parents for q in protected)]
         if self.mode == "user+mount":
             drop = f"exec setpriv --reuid={self.uid} --regid={self.uid} --clear-groups --inh-caps=-all -- \"$@\"\n"
@@ -253,7 +265,7 @@ class Sandbox:
         outputs and temp files live (``/tmp``, ``/home``, ``/root``, the checkout's top folder, ...) with an empty
         read-only folder, then put back only what the student's process needs: its private folder, the engine, the
         step packages (their ``solutions/`` covered again below), the virtual environment and Python itself."""
-        needed = [ROOT / "gandalf_core", *_step_dirs(self.step_dir),
+        needed = [ROOT / "gandalf_core", *_step_dirs(list(self.step_dirs.values())),
                   Path(sys.prefix).resolve(), Path(sys.base_prefix).resolve(), Path(sys.executable).resolve().parent]
         system = {"usr", "lib", "lib32", "lib64", "libx32", "bin", "sbin", "etc", "proc", "dev", "sys", "run", "var",
                   "boot", ""}
@@ -293,6 +305,7 @@ class Sandbox:
         os.close(from_child_w)
         self._to_child, self._from_child = to_child_w, from_child_r
         self.generation += 1
+        self.imported = set()
         self.callables: list[Callable[..., Any]] = []  # the grader's functions the student's code may call back
 
     def stop(self) -> None:
@@ -325,20 +338,24 @@ class Sandbox:
         """Send ``message``; the reply's ``ok`` value (decoded with ``objects``) or its ``error``/``warnings`` as
         they came. ``key`` names the function for the memory of hung ones; ``label`` (or what it returns, made only
         for a message) says the call in messages."""
+        package = str(message["package"])
+        key = f"{package}:{key}"
         if key in self.failed:
             raise SandboxFailure(self.failed[key])
-        if self.import_error is not None:
-            raise SandboxFailure(self.import_error)
+        if package in self.import_errors:
+            raise SandboxFailure(self.import_errors[package])
         if self.proc is None:
             self._start()
+        if package not in self.imported:
             try:
-                self._exchange({"op": "import"}, STARTUP_BUDGET + budget, None, None)
-            except (wire.Timeout, EOFError, wire.WireError) as exc:
+                self._exchange({"op": "import", "package": package}, STARTUP_BUDGET + budget, None, None)
+                self.imported.add(package)
+            except (wire.Timeout, EOFError, wire.WireError, OSError) as exc:
                 why = (f"did not finish in {STARTUP_BUDGET + budget:g} s" if isinstance(exc, wire.Timeout)
                        else f"ended its process{self._last_words()}")
-                self.import_error = f"importing your {self.package} {why}"
+                self.import_errors[package] = f"importing your {package} {why}"
                 self.stop()
-                raise SandboxFailure(self.import_error) from None
+                raise SandboxFailure(self.import_errors[package]) from None
         def said() -> str:
             return label() if callable(label) else label
 

@@ -1,8 +1,9 @@
 """The sandboxed side: a server that imports the student's package and answers the grader's requests.
 
 Run by :mod:`gandalf_tools.grading.sandbox` as a script copied into a private folder (``python -I child.py FD_IN
-FD_OUT PACKAGE``), as an unprivileged user where the grader can drop to one. It reads requests from FD_IN and
-writes replies to FD_OUT in the wire format (``gandalf_wire``, a copy of :mod:`gandalf_tools.grading.wire`):
+FD_OUT``), as an unprivileged user where the grader can drop to one. It reads requests from FD_IN and writes replies
+to FD_OUT in the wire format (``gandalf_wire``, a copy of :mod:`gandalf_tools.grading.wire`); each names the
+package (``<step>.exercises``) it is about:
 
 * ``import``: import the package; reply with what its public names are (function, class, module, value);
 * ``call``: call one of its functions with plain data; reply with the result (plain data, or an engine object by
@@ -134,30 +135,28 @@ class _Assets:
 
 
 class Server:
-    def __init__(self, package: str) -> None:
-        self.package_name = package
-        self.package: types.ModuleType | None = None
+    def __init__(self) -> None:
+        self.packages: dict[str, types.ModuleType] = {}
         self.instances: dict[int, Any] = {}
         self.mirrors: dict[int, dict[uuid.UUID, tuple[Any, ...]]] = {}
         self.originals: dict[str, Any] = {}
 
-    def resolve(self, target: str) -> Any:
-        assert self.package is not None
-        value: Any = self.package
-        for part in target.split("."):
+    def resolve(self, package: str, target: str) -> Any:
+        value: Any = self.packages[package]
+        for part in target.split(".") if target else ():
             value = getattr(value, part)
         return value
 
-    def op_import(self) -> dict[str, Any]:
-        self.package = importlib.import_module(self.package_name)
-        folder = os.path.dirname(self.package.__file__ or "")
+    def op_import(self, package: str) -> dict[str, Any]:
+        module = self.packages[package] = importlib.import_module(package)
+        folder = os.path.dirname(module.__file__ or "")
         modules = sorted(n[:-3] for n in os.listdir(folder) if n.endswith(".py") and n != "__init__.py")
-        return {"names": {name: self.describe(name) for name in dir(self.package) if not name.startswith("_")},
-                "modules": {m: {n: self.describe(f"{m}.{n}") for n in dir(self.resolve(m)) if not n.startswith("_")}
-                            for m in modules if hasattr(self.package, m)}}
+        return {"names": {name: self.describe(package, name) for name in dir(module) if not name.startswith("_")},
+                "modules": {m: {n: self.describe(package, f"{m}.{n}") for n in dir(self.resolve(package, m))
+                                if not n.startswith("_")} for m in modules if hasattr(module, m)}}
 
-    def describe(self, target: str) -> Any:
-        value = self.resolve(target)
+    def describe(self, package: str, target: str) -> Any:
+        value = self.resolve(package, target)
         if isinstance(value, types.ModuleType):
             return {"kind": "module"}
         if isinstance(value, type):
@@ -170,21 +169,22 @@ class Server:
             return {"kind": "other", "type": type(value).__name__}
         return {"kind": "value", "value": value}
 
-    def op_call(self, target: str, args: list[Any], kwargs: dict[str, Any]) -> Any:
-        return self.resolve(target)(*args, **kwargs)
+    def op_call(self, package: str, target: str, args: list[Any], kwargs: dict[str, Any]) -> Any:
+        return self.resolve(package, target)(*args, **kwargs)
 
-    def op_patch(self, target: str, value: Any) -> None:
+    def op_patch(self, package: str, target: str, value: Any) -> None:
         """The grader replaces a function of the package by its own (a test grading a system on its own)."""
         module, _, name = target.rpartition(".")
-        owner = self.resolve(module) if module else self.package
+        owner = self.resolve(package, module)
+        target = f"{package}:{target}"
         if value is None:  # back to the student's own
             setattr(owner, name, self.originals.pop(target, getattr(owner, name)))
         else:
             self.originals.setdefault(target, getattr(owner, name))
             setattr(owner, name, value)
 
-    def op_new(self, target: str, args: list[Any], kwargs: dict[str, Any]) -> Any:
-        obj = self.resolve(target)(*args, **kwargs)
+    def op_new(self, package: str, target: str, args: list[Any], kwargs: dict[str, Any]) -> Any:
+        obj = self.resolve(package, target)(*args, **kwargs)
         index = len(self.instances) + 1
         self.instances[index] = obj
         self.mirrors[index] = {}
@@ -193,7 +193,7 @@ class Server:
                 "updates_each_frame": bool(getattr(obj, "updates_each_frame", True)),
                 "hooks": [h for h in HOOKS if _overrides(type(obj), h)]}
 
-    def op_hook(self, id: int, hook: str, members: list[Any], args: list[Any], app: Any) -> Any:
+    def op_hook(self, package: str, id: int, hook: str, members: list[Any], args: list[Any], app: Any) -> Any:
         obj, mirror = self.instances[id], self.mirrors[id]
         live: dict[uuid.UUID, tuple[Any, ...]] = {}
         for entity, components in members:
@@ -227,8 +227,8 @@ class Server:
 
     def handle(self, request: dict[str, Any]) -> Any:
         op = request.pop("op")
-        if op != "import" and self.package is None:
-            self.op_import()
+        if op != "import" and request.get("package") not in self.packages:
+            self.op_import(request["package"])
         return getattr(self, f"op_{op}")(**request)
 
 
@@ -242,9 +242,9 @@ ROOT = os.path.dirname(os.path.abspath(__file__))
 
 def main() -> None:
     global _channel
-    fd_in, fd_out, package = int(sys.argv[1]), int(sys.argv[2]), sys.argv[3]
+    fd_in, fd_out = int(sys.argv[1]), int(sys.argv[2])
     _channel = Channel(fd_in, fd_out)
-    server = Server(package)
+    server = Server()
     while True:
         try:
             request = _channel.receive()
