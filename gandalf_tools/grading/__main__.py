@@ -3,9 +3,11 @@
 A thin front end over ``pytest --student`` that prints one line per failed test and the score table
 (``pytest --student`` itself shows full tracebacks). Other arguments go to pytest.
 
-The student's code runs in a pytest-xdist worker process (``--jobs``, default 1), never in this one: a
-test that calls ``os._exit`` or crashes the interpreter fails on its own, its worker is replaced and the
-other tests are graded. Each test has a time limit (``--timeout``, default 60 s): pytest-timeout's
+The student's code runs in a sandboxed process of its own (:mod:`gandalf_tools.grading.sandbox`), never in a
+pytest process: a call that ends that process or runs past its budget fails (with every later call of that
+function), a fresh process serves the other functions, and only plain data comes back. The tests themselves run in
+a pytest-xdist worker (``--jobs``, default 1): a test that crashes the engine fails on its own, its worker is
+replaced and the other tests are graded. Each test has a time limit (``--timeout``, default 60 s): pytest-timeout's
 signal method fails a runaway Python loop in place; a hang inside native code (a driver call) that a
 signal cannot interrupt ends the worker after ``--hard-timeout`` seconds, and that test fails too.
 """

@@ -6,9 +6,13 @@ download of the exercise folders gives) or a whole checkout of the repository (o
 ``step*/exercises/`` folders are used; nothing else of it is imported). A step a student did not hand in is
 graded on this checkout's own ``exercises/`` (the untouched stubs: CI checks they fail every graded test).
 
-**Isolation.** This process never imports a student's code. Each submission is graded by its own
+**Isolation.** No grading process imports a student's code. Each submission is graded by its own
 ``python -m gandalf_tools.grading`` process with ``GANDALF_IMPL`` pointing every step's ``exercises`` at the
-submission's folder. A runaway test fails on its time limit and the run goes on (pytest-timeout). By default
+submission's folder; that process runs the student's package in a sandboxed process of its own (a private copy, its
+own user when the grader runs as root, limits, a time budget per call: see :mod:`gandalf_tools.grading.sandbox`),
+which sees neither the other submissions nor ``--out`` (``GANDALF_SANDBOX_HIDE``), and only data comes back from
+it: the grade files and the gradebook are written by the grading processes and this one alone. A runaway test
+fails on its time limit and the run goes on (pytest-timeout). By default
 (``--isolation auto``) that process runs the tests itself, the fastest way (no worker to start: about 3 s less
 per submission, the same grade); only when it does not finish cleanly — a hard exit or a crash in the student's
 code, a hang in native code past ``--fast-limit`` — is the submission graded again with the tests in a
@@ -36,6 +40,7 @@ from pathlib import Path
 from typing import Any
 
 from . import bytecode_cache_env
+from .sandbox import HIDE_ENV
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -109,6 +114,8 @@ def grade_submission(
     env = {k: v for k, v in os.environ.items() if k != "GANDALF_IMPL"}
     env["GANDALF_IMPL"] = os.pathsep.join(f"{step}={path}" for step, path in handed_in.items())
     env = bytecode_cache_env(env)  # bytecode in a cache outside the submission and the checkout
+    # The sandboxed student process must not see the other submissions nor the gradebook.
+    env[HIDE_ENV] = os.pathsep.join(str(p.resolve()) for p in (folder.parent, out))
     graded = Graded(student, sorted(handed_in))
     runs = {"auto": [(0, min(limit, fast_limit)), (workers, limit)], "always": [(workers, limit)],
             "never": [(0, limit)]}[isolation]

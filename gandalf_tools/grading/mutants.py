@@ -236,7 +236,8 @@ class _Job:
         return Path(self.tmp.name)
 
     def pytest_args(self, timeout: float) -> list[str]:
-        args = ["-q", "-p", "no:cacheprovider", "--student", "--tb=line", "-p", "gandalf_tools.grading.plugin"]
+        args = ["-q", "-p", "no:cacheprovider", "--student", "--grade-in-process", "--tb=line", "-p",
+                "gandalf_tools.grading.plugin"]
         args += SPEED_OPTIONS
         args += ["--grade-json", str(self.folder / "grade.json"), f"--timeout={timeout:g}"]
         if self.mutant is not None:

@@ -17,9 +17,14 @@ controller gave it), so a test whose worker crashed (``os._exit``, a segfault, a
 failed instead of vanishing from the grade.
 
 ``GANDALF_IMPL="step01_window=/path/to/package"`` (several joined by ``os.pathsep``) grades the package at
-that path as the step's ``exercises`` (it is imported under that name, so relative imports and
-``load_impl(step, student=True)`` find it): the batch grader overlays a submission's folders with it and
-the mutation check its mutants.
+that path as the step's ``exercises``: the batch grader overlays a submission's folders with it and the mutation
+check its mutants.
+
+A student's package (``--student`` or ``GANDALF_IMPL``) never runs in this process: it runs in a sandboxed
+process (:mod:`.sandbox`) and the ``impl`` fixture gives its stand-in (:mod:`.remote`), put in ``sys.modules`` as
+``<step>.exercises`` so that ``load_impl(step, student=True)`` finds it too; only plain data comes back, and the
+results and grade files are written here. ``--grade-in-process`` imports the package here instead, for the course's
+own code only (the mutation check's mutants).
 """
 
 from __future__ import annotations
@@ -39,7 +44,7 @@ from typing import Any
 
 import pytest
 
-from . import watchdog
+from . import remote, sandbox, watchdog
 
 IMPL_ENV = "GANDALF_IMPL"
 _PROPERTY = "gandalf_grade"
@@ -51,6 +56,8 @@ _graded: dict[str, dict[str, Any]] = {}
 # nodeid -> {"passed_call": bool, "failed": bool, "message": str, "duration": float}
 _outcomes: dict[str, dict[str, Any]] = {}
 _overlays: dict[str, ModuleType] = {}
+# step package -> (its sandbox, the stand-in of the student's package) for this run.
+_sandboxes: dict[str, tuple[Any, ModuleType]] = {}
 # Test modules that failed to import (a course bug: their graded tests are missing from the grade), nodeid -> message.
 _collection_errors: dict[str, str] = {}
 
@@ -74,6 +81,12 @@ def pytest_addoption(parser: pytest.Parser) -> None:
         metavar="SECONDS",
         help=f"with --student: seconds one call of the student's function may take; a function that runs past it "
         f"fails that test and every later call at once, saying so (default {watchdog.DEFAULT_BUDGET:g}; 0: none)",
+    )
+    group.addoption(
+        "--grade-in-process",
+        action="store_true",
+        help="import the graded package into the test process instead of a sandboxed process (only for the "
+        "course's own code: the mutation check's mutants)",
     )
     group.addoption(
         "--grade-hard-timeout",
@@ -142,19 +155,54 @@ def _has_solutions(step_package: str) -> bool:
         return False
 
 
+def _sandboxed(config: pytest.Config, step_package: str, folder: Path) -> ModuleType:
+    """The stand-in of the student's package ``folder``, whose code runs in the run's sandbox (one process for every
+    step graded, started once)."""
+    if step_package not in _sandboxes:
+        boxes = {box for box, _ in _sandboxes.values()}
+        if boxes:
+            box = boxes.pop()
+            box.add(step_package, folder)
+        else:
+            outputs = [str(Path(p).resolve().parent) for p in (config.getoption("--grade-json"),
+                                                               config.getoption("--gradescope")) if p]
+            # Every package the run may grade goes into the first layout: one process start for the whole run.
+            wanted = {p.parent.parent.name: p.parent for p in sandbox.ROOT.glob("step*/exercises/__init__.py")
+                      } if config.getoption("--student") else {}
+            wanted.update(parse_impl_env(os.environ.get(IMPL_ENV)))
+            wanted[step_package] = folder
+            box = sandbox.Sandbox(step_package, folder, hide=tuple(outputs))
+            for step, other in wanted.items():
+                box.add(step, other)
+        budget = float(config.getoption("--grade-call-budget"))
+        _sandboxes[step_package] = (box, remote.install(step_package, folder, box, budget))
+    return _sandboxes[step_package][1]
+
+
 # --8<-- [start:impl_fixture]
 def impl_fixture(step_package: str) -> Any:
-    """Create the ``impl`` fixture of a step: its ``exercises`` or ``solutions`` package."""
+    """Create the ``impl`` fixture of a step: its ``exercises`` or ``solutions`` package.
+
+    A student's package (``--student``, ``GANDALF_IMPL``) runs in a sandboxed process (:mod:`.sandbox`); the
+    fixture gives its stand-in (:mod:`.remote`). ``--grade-in-process`` imports it here instead (the mutation
+    check's mutants: the course's own code)."""
 
     @pytest.fixture
     def impl(request: pytest.FixtureRequest) -> ModuleType:
-        overlay = _overlay(step_package)  # GANDALF_IMPL: a submission's or a mutant's package
-        budget = float(request.config.getoption("--grade-call-budget"))
+        config = request.config
+        folder = parse_impl_env(os.environ.get(IMPL_ENV)).get(step_package)  # a submission's or a mutant's package
+        student = config.getoption("--student") or not _has_solutions(step_package)  # a student's release: exercises
+        if folder is None and not student:
+            return importlib.import_module(f"{step_package}.solutions")
+        if not config.getoption("--grade-in-process"):
+            if folder is None:  # the step's own exercises (found without importing them)
+                folder = Path(importlib.import_module(step_package).__file__ or "").resolve().parent / "exercises"
+            return _sandboxed(config, step_package, folder)
+        budget = float(config.getoption("--grade-call-budget"))
+        overlay = _overlay(step_package)
         if overlay is not None:
             return watchdog.guard(overlay, budget)
-        if request.config.getoption("--student") or not _has_solutions(step_package):  # a student's release
-            return watchdog.guard(importlib.import_module(f"{step_package}.exercises"), budget)
-        return importlib.import_module(f"{step_package}.solutions")
+        return watchdog.guard(importlib.import_module(f"{step_package}.exercises"), budget)
 
     return impl
 
@@ -434,13 +482,11 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
     if not _graded:
         return
     result = summary()
-    which = (
-        "exercises (student)"
-        if config.getoption("--student")
-        or os.environ.get(IMPL_ENV)
-        or not all(_has_solutions(info["step"]) for info in _graded.values())
-        else ("solutions (reference)")
-    )
+    student = bool(config.getoption("--student") or os.environ.get(IMPL_ENV)
+                   or not all(_has_solutions(info["step"]) for info in _graded.values()))
+    if student and not config.getoption("--grade-in-process"):  # how the student's code was kept from the checkout
+        result["isolation"] = sandbox.isolation()
+    which = "exercises (student)" if student else "solutions (reference)"
     tr = terminalreporter
     tr.section(f"gandalf grade — {which}")
     for x in result["exercises"]:
@@ -468,6 +514,9 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
 
 
 def pytest_unconfigure(config: pytest.Config) -> None:
+    for box in {box for box, _package in _sandboxes.values()}:
+        box.stop()
+    _sandboxes.clear()
     folder = getattr(config, "_gandalf_collect_dir", None)
     if folder and Path(folder).is_dir():
         for path in Path(folder).iterdir():

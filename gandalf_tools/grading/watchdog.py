@@ -55,6 +55,9 @@ def _describe(name: str, args: tuple[Any, ...], kwargs: dict[str, Any]) -> str:
     return f"{name}({text if len(text) <= _ARGS_LIMIT else text[: _ARGS_LIMIT - 1] + '…'})"
 
 
+describe_call = _describe  # the same words for a call of sandboxed code
+
+
 def _is_self_like(value: Any) -> bool:
     # A method's ``self`` and the engine objects handed to systems say nothing to a student.
     return not isinstance(value, (int, float, complex, str, bytes, tuple, list, dict, bool, type(None))) and (

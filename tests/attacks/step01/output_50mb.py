@@ -1,0 +1,23 @@
+"""Attack: write 50 MB to stdout and stderr at import."""
+
+from gandalf_core import ClearColorComponent, System
+
+from ..components import HueCycleComponent
+
+
+def hsv_to_rgb(hue, saturation, value):
+    raise NotImplementedError("exercise: hsv_to_rgb")
+
+
+class HueCycleSystem(System):
+    def __init__(self):
+        super().__init__([HueCycleComponent, ClearColorComponent])
+
+    def on_update_entity(self, ts, entity, components):
+        raise NotImplementedError("exercise: HueCycleSystem.on_update_entity")
+
+import sys
+
+for _ in range(50):
+    sys.stdout.write('x' * 2**20)
+    sys.stderr.write('y' * 2**20)

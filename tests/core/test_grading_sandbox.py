@@ -1,0 +1,203 @@
+"""The sandbox the student's package runs in, and the stand-in the grader gets (``gandalf_tools.grading.sandbox``,
+``remote``, ``wire``).
+
+A package written into ``tmp_path`` is graded as ``step01_window.exercises``: its functions run in another process
+that cannot import or read the reference solutions (where this machine allows namespaces), whose results come back
+as plain data only, whose hung function fails at once afterwards while the others go on in a fresh process, and
+whose system changes only the component fields it may, with values of the right kind.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import textwrap
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from gandalf_core import ClearColorComponent, Scene
+from gandalf_tools.grading import remote, sandbox, wire
+from gandalf_tools.grading.watchdog import ExerciseTimeout
+from step01_window.components import HueCycleComponent
+
+ROOT = Path(__file__).resolve().parents[2]
+
+PACKAGE = '''
+import os
+import time
+
+import numpy as np
+
+from gandalf_core import ClearColorComponent, System
+
+from ..components import HueCycleComponent
+
+
+class Sneaky(float):
+    def __eq__(self, other):
+        return True
+
+    __hash__ = float.__hash__
+
+
+def values():
+    return (Sneaky(0.25), np.float32(0.5), 3, [1, (2.0, "x")], {"k": np.arange(3.0)}, float("nan"), b"ab")
+
+
+def sneaky_object():
+    class Anything:
+        def __eq__(self, other):
+            return True
+    return Anything()
+
+
+def spin(n):
+    while True:
+        pass
+
+
+def crash():
+    os._exit(3)
+
+
+def twice(x):
+    return 2 * x
+
+
+def apply(f, x):
+    return f(x) + 1
+
+
+def read(path):
+    try:
+        return open(path).read()[:40]
+    except OSError as exc:
+        return "unreadable: " + type(exc).__name__
+
+
+def import_it(name):
+    import importlib
+    try:
+        importlib.import_module(name)
+        return "imported"
+    except Exception as exc:
+        return "not importable: " + type(exc).__name__
+
+
+def whoami():
+    return (os.getuid(), os.getcwd())
+
+
+def warn():
+    import warnings
+    warnings.warn("watch out", UserWarning)
+    return 1
+
+
+def fail():
+    raise ValueError("bad sides: 2")
+
+
+class HueCycleSystem(System):
+    def __init__(self):
+        super().__init__([HueCycleComponent, ClearColorComponent])
+
+    def on_update_entity(self, ts, entity, components):
+        cycle, clear = components
+        cycle.hue = (cycle.hue + cycle.speed * ts) % 360.0
+        clear.color = (0.25, 0.5, 0.75, 1.0)
+
+
+class BadSystem(System):
+    def __init__(self):
+        super().__init__([HueCycleComponent, ClearColorComponent])
+
+    def on_update_entity(self, ts, entity, components):
+        components[0].hue = "red"
+'''
+
+
+@pytest.fixture(scope="module")
+def student(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("submission") / "exercises"
+    folder.mkdir()
+    (folder / "__init__.py").write_text(textwrap.dedent(PACKAGE))
+    box = sandbox.Sandbox("step01_window", folder)
+    package = remote.install("step01_window", folder, box, budget=2.0)
+    yield package
+    box.stop()
+    import importlib
+    import sys
+
+    sys.modules.pop("step01_window.exercises", None)
+    importlib.import_module("step01_window").exercises = importlib.import_module("step01_window.exercises")
+
+
+def test_wire_round_trip_gives_plain_values_and_never_pickles():
+    blobs: list[bytes] = []
+    value = (1, 2.5, "s", [None, True], {"a": np.eye(2)}, {3}, b"x", float("inf"))
+    data = wire.encode_value(value, blobs)
+    back = wire.decode_value(data, blobs)
+    assert back[:4] == value[:4] and np.array_equal(back[4]["a"], np.eye(2)) and back[5:] == value[5:]
+    with pytest.raises(wire.WireError):
+        wire.encode_value(np.array([object()]), [])
+    with pytest.raises(wire.WireError):
+        wire.encode_value(object(), [])
+    assert all(b"pickle" not in b for b in blobs)
+
+
+def test_results_come_back_as_plain_data(student):
+    sneaky, f32, i, nested, mapping, nan, raw = student.values()
+    assert type(sneaky) is float and sneaky == 0.25 and sneaky != 0.3  # the float subclass's __eq__ is gone
+    assert type(f32) is float and type(i) is int and nested == [1, (2.0, "x")]
+    assert np.array_equal(mapping["k"], [0.0, 1.0, 2.0]) and math.isnan(nan) and raw == b"ab"
+    with pytest.raises(TypeError, match="cannot be graded|cannot use"):
+        student.sneaky_object()
+
+
+def test_errors_warnings_and_callbacks_cross(student):
+    with pytest.raises(ValueError, match="bad sides: 2"):
+        student.fail()
+    with pytest.warns(UserWarning, match="watch out"):
+        assert student.warn() == 1
+    assert student.apply(lambda x: x * 10, 2) == 21  # the test's own function, called back from the sandbox
+
+
+def test_the_student_process_cannot_reach_the_solutions(student):
+    if sandbox.isolation() == "process":
+        pytest.skip("no namespaces here: the student's process could read the checkout (the grade records it)")
+    solution = ROOT / "step01_window" / "solutions" / "hue.py"
+    assert student.import_it("step01_window.solutions.hue").startswith("not importable")
+    assert student.import_it("gandalf_tools.grading.plugin").startswith("not importable")
+    assert student.read(str(solution)).startswith("unreadable")
+    assert student.read(str(ROOT / "tests" / "conftest.py")).startswith("unreadable")
+    uid, cwd = student.whoami()
+    assert uid != os.getuid() or sandbox.isolation() == "mount"
+    assert not Path(cwd).resolve().is_relative_to(ROOT)
+
+
+def test_a_hung_function_fails_at_once_later_and_the_others_go_on(student):
+    with pytest.raises(ExerciseTimeout, match=r"^spin\(1\) did not return within 2 s"):
+        student.spin(1)
+    with pytest.raises(ExerciseTimeout, match=r"^spin\(1\) did not return"):
+        student.spin(2)  # remembered: no second wait
+    assert student.twice(4) == 8  # a fresh process
+    with pytest.raises(ExerciseTimeout, match=r"crash\(\) ended its process \(exit status 3\)"):
+        student.crash()
+    assert student.twice(5) == 10
+
+
+def test_a_system_changes_only_fields_of_the_right_kind(student):
+    scene = Scene("sandboxed")
+    entity = scene.create_entity(ClearColorComponent(), HueCycleComponent(hue=350, speed=20))
+    scene.add_system(student.HueCycleSystem())
+    scene.update(1.0)
+    assert scene.get_component(entity, HueCycleComponent).hue == pytest.approx(10.0)
+    assert tuple(scene.get_component(entity, ClearColorComponent).color) == pytest.approx((0.25, 0.5, 0.75, 1.0))
+    bad = Scene("bad")
+    bad.create_entity(ClearColorComponent(), HueCycleComponent(hue=5))
+    bad.add_system(student.BadSystem())
+    with pytest.raises(remote.StudentError, match="HueCycleComponent.hue: expected int, got str"):
+        bad.update(1.0)
