@@ -21,7 +21,7 @@ in float64 on the CPU and handed over in forms that stay smooth (each wrap taken
 * ``time.x``: seconds wrapped to :data:`TIME_WRAP` (1024 s), steps exact to 1.2e-4 s; ``time.z`` counts the wraps.
   ``fract(time.x * f)`` is smooth across the wrap when ``1024 f`` is a whole number (periods of 1024 s / n:
   1 s, 0.5 s, 2 s, 1/60 s ...), a plain ``sin(time.x)`` is not (it jumps every 17 minutes).
-* ``time.w``: seconds wrapped to :data:`ANGLE_WRAP` = 163 turns of 2π (1024.16 s): ``sin(k * time.w)`` and
+* ``time.w``: seconds wrapped to :data:`ANGLE_WRAP` (163 turns of 2π, 1024.16 s): ``sin(k * time.w)`` and
   ``cos(k * time.w)`` are smooth across the wrap for every whole ``k`` (an angle in radians at k rad/s).
 * any other period: a per-animation phase, ``phase(time, period)`` in float64 on the CPU, written as a material
   value (the explode technique's ``explode_time`` is its clock wrapped to its own period).
