@@ -1,10 +1,10 @@
 """Writes the step's textured model: a wooden crate as a Wavefront OBJ file and its texture as a PNG.
 
-``models/crate.obj`` is a cube of edge 0.7 standing on y = 0: 24 vertices (four per face, so each face has its own
-normal and its own texture coordinates from 0 to 1), 12 triangles, readable in any text editor. ``models/crate.png``
-(128² texels, sRGB) is the wood every face shows: planks, a darker frame and a diagonal brace. The scene loads both
-as a model artist would hand them over (``load_mesh``, ``TextureData``) and draws them with the textured Blinn-Phong
-shader. ``python -m step06_lighting.meshes.make_crate`` writes them again.
+``models/crate.obj`` is the engine's cube of edge 0.7 standing on y = 0: 24 vertices (four per face, so each face
+has its own normal and its own texture coordinates from 0 to 1), 12 triangles, readable in any text editor.
+``models/crate.png`` (128² texels, sRGB) is the wood every face shows: planks, a darker frame and a diagonal brace.
+The scene loads both as a model artist would hand them over (``load_mesh``, ``TextureData``) and draws them with the
+textured Blinn-Phong shader. ``python -m step06_lighting.meshes.make_crate`` writes them again.
 """
 
 from __future__ import annotations
@@ -14,40 +14,27 @@ from pathlib import Path
 
 import numpy as np
 
+from gandalf_core.resources import cube
+
 MODELS = Path(__file__).resolve().parents[1] / "models"
 CRATE_OBJ = MODELS / "crate.obj"
 CRATE_PNG = MODELS / "crate.png"
 EDGE = 0.7
 TEXELS = 128
 
-# Each face: its outward normal and the two axes its texture's u (left to right) and v (bottom to top) run along.
-_FACES = (
-    ((1, 0, 0), (0, 0, -1), (0, 1, 0)),
-    ((-1, 0, 0), (0, 0, 1), (0, 1, 0)),
-    ((0, 1, 0), (1, 0, 0), (0, 0, -1)),
-    ((0, -1, 0), (1, 0, 0), (0, 0, 1)),
-    ((0, 0, 1), (1, 0, 0), (0, 1, 0)),
-    ((0, 0, -1), (-1, 0, 0), (0, 1, 0)),
-)
-
-
 def crate_obj(edge: float = EDGE) -> str:
-    """The crate's OBJ text: positions (``v``), texture coordinates (``vt``, v up as OBJ has it), normals (``vn``)
-    and two counter-clockwise triangles per face (``f v/vt/vn``)."""
-    h = edge / 2
+    """The crate's OBJ text: the engine's ``cube(edge)`` (four vertices a face, each face the whole texture) lifted
+    to stand on y = 0, as positions (``v``), texture coordinates (``vt``: v up, as OBJ has them; the engine's are
+    top-row-first), normals (``vn``) and counter-clockwise triangles (``f v/vt/vn``, counted from 1)."""
+    mesh = cube(edge)
     lines = [f"# A wooden crate: a cube of edge {edge:g} standing on y = 0 (make_crate.py)", "mtllib crate.mtl"]
-    faces = []
-    for k, (n, u, v) in enumerate(_FACES):
-        n, u, v = (np.asarray(a, dtype=float) for a in (n, u, v))
-        for du, dv in ((0, 0), (1, 0), (1, 1), (0, 1)):
-            p = h * n + h * (2 * du - 1) * u + h * (2 * dv - 1) * v + (0.0, h, 0.0)
-            lines.append("v " + " ".join(f"{c:.4f}" for c in p))
-            lines.append(f"vt {du} {dv}")
-        lines.append("vn " + " ".join(f"{c:g}" for c in n))
-        a = 4 * k + 1
-        faces += [f"f {a}/{a}/{k + 1} {a + 1}/{a + 1}/{k + 1} {a + 2}/{a + 2}/{k + 1}",
-                  f"f {a}/{a}/{k + 1} {a + 2}/{a + 2}/{k + 1} {a + 3}/{a + 3}/{k + 1}"]
-    return "\n".join(lines + ["usemtl crate"] + faces) + "\n"
+    lines += ["v " + " ".join(f"{c:.4f}" for c in (x, y + edge / 2, z)) for x, y, z in mesh.positions]
+    lines += [f"vt {u:g} {1.0 - v:g}" for u, v in mesh.uvs]
+    lines += ["vn " + " ".join(f"{c:g}" for c in n) for n in mesh.normals]
+    lines.append("usemtl crate")
+    for a, b, c in np.asarray(mesh.indices).reshape(-1, 3) + 1:
+        lines.append(f"f {a}/{a}/{a} {b}/{b}/{b} {c}/{c}/{c}")
+    return "\n".join(lines) + "\n"
 
 
 def crate_texels(size: int = TEXELS) -> np.ndarray:

@@ -13,13 +13,8 @@ float safe_length(vec3 v) {
     return s > 0.0 && s <= 3.4028235e38 ? s * length(v / s) : s;
 }
 vec3 safe_normalize(vec3 v, vec3 fallback) {
-    vec3 a = abs(v);
-    float s = max(max(a.x, a.y), a.z);
-    if (!(s > 0.0 && s <= 3.4028235e38)) {
-        return fallback;
-    }
-    vec3 u = v / s;
-    return u / length(u);
+    float len = safe_length(v);
+    return len > 0.0 && len <= 3.4028235e38 ? v / len : fallback;
 }
 
 // --8<-- [start:light_at]

@@ -14,13 +14,9 @@ fn safe_length(v: vec3<f32>) -> f32 {
     return select(s, s * length(v / select(1.0, s, finite)), finite);
 }
 fn safe_normalize(v: vec3<f32>, fallback: vec3<f32>) -> vec3<f32> {
-    let a = abs(v);
-    let s = max(max(a.x, a.y), a.z);
-    if (!(s > 0.0 && s <= 3.4028235e38)) {
-        return fallback;
-    }
-    let u = v / s;
-    return u / length(u);
+    let len = safe_length(v);
+    let usable = len > 0.0 && len <= 3.4028235e38;
+    return select(fallback, v / select(1.0, len, usable), usable);
 }
 
 // --8<-- [start:light_at]

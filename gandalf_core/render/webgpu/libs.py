@@ -290,9 +290,6 @@ class MeshLib(ResourceLib[WGPUMesh]):
     def __init__(self, device: Any, stats: Counter[str]) -> None:
         super().__init__(stats)
         self.device = device
-        # wgpu's OpenGL backend cannot bind one layer of a six-layer texture as a 2-D texture (it takes such a
-        # texture for a cube map): there, cube mips are made on the CPU as for every other texture.
-        self._cube_mips_on_gpu = device.adapter.info.get("backend_type") != "OpenGL"
 
     def _create(self, name: str, data: MeshData) -> WGPUMesh:
         ibo = None
@@ -339,9 +336,6 @@ class BufferLib(StorageBufferLib, ResourceLib[Any]):
     def __init__(self, device: Any, stats: Counter[str]) -> None:
         super().__init__(stats)
         self.device = device
-        # wgpu's OpenGL backend cannot bind one layer of a six-layer texture as a 2-D texture (it takes such a
-        # texture for a cube map): there, cube mips are made on the CPU as for every other texture.
-        self._cube_mips_on_gpu = device.adapter.info.get("backend_type") != "OpenGL"
 
     def _create(self, name: str, data: Any) -> Any:
         content, size = buffer_bytes(name, data)
