@@ -159,8 +159,8 @@ shader_mutant(MUTANTS, STEP, "terrain_height", "height-trunc-for-floor",
                (TW, "let base = floor(st);", "let base = trunc(st);")])
 
 # --- filter: the Gaussian weights (blur_kernel) and the blur pass (convolve) -----------------------------------------
-_filter = _tables("test_filter.py", {"_W_GLSL", "_W_WGSL", "_weights_body", "WEIGHT_MUTANTS", "CONVOLVE_MUTANTS",
-                                     "_C_GLSL", "_C_WGSL"})
+_filter = _tables("test_filter_reference.py", {"_W_GLSL", "_W_WGSL", "_weights_body", "WEIGHT_MUTANTS",
+                                               "CONVOLVE_MUTANTS", "_C_GLSL", "_C_WGSL"})
 for description, spec in _filter["WEIGHT_MUTANTS"].items():
     shader_mutant(MUTANTS, STEP, "blur_kernel", _slug(description), f"the weights: {description}",
                   [_whole_file(f"blur_kernel.{lang}",
