@@ -1,14 +1,13 @@
 """The step07 terrain rendered: the student's picture against the reference one, the tessellation following the
-camera in both APIs, the two APIs agreeing, WebGPU's compute tessellator against its numpy twin (crack-free
-edges), and the errors for bad levels, bad heightmaps and patch/program mismatches.
+camera in both APIs, WebGPU's compute tessellator against its numpy twin (crack-free edges), and the errors for bad
+levels, bad heightmaps and patch/program mismatches (the two APIs' agreement on the reference's tour picture is in
+``test_terrain_render_reference.py``).
 
 Tolerances: the student's picture against the reference solution's (committed, ``references/terrain-<api>.png``),
 same API, 160×120: PSNR ≥ 35 dB (a correct solution differs only by float rounding; the reference measures inf on
-llvmpipe/lavapipe). OpenGL against WebGPU (the implementation under test, the tour's 640×480 picture): PSNR
-≥ 35 dB; measured 45.7 dB on llvmpipe/lavapipe (the two triangulations differ only where a patch's outer levels
-differ from its inner one; the shading comes per fragment from the uv in both). OpenGL's generated triangles
-(GL_PRIMITIVES_GENERATED) equal the count predicted from the numpy levels within 1 % (measured: exactly equal);
-WebGPU's per-patch segment counts equal the numpy ones for ≥ 99 % of the patches (measured: all).
+llvmpipe/lavapipe). OpenGL's generated triangles (GL_PRIMITIVES_GENERATED) equal the count predicted from the numpy
+levels within 1 % (measured: exactly equal); WebGPU's per-patch segment counts equal the numpy ones for ≥ 99 % of the
+patches (measured: all).
 """
 
 from __future__ import annotations
@@ -116,13 +115,6 @@ def test_tessellation_follows_the_camera(impl, backend):
 
 
 # --- the engine side (not graded) ---------------------------------------------------------------------------------
-def test_both_apis_agree_on_the_tour_picture(impl):
-    gl = render("opengl", impl, size=(640, 480), frames=scene.TOUR_FRAMES)
-    wg = render("webgpu", impl, size=(640, 480), frames=scene.TOUR_FRAMES)
-    value = psnr(gl, wg)
-    assert value >= 35.0, f"OpenGL and WebGPU pictures differ: PSNR {value:.1f} dB < 35 dB"
-
-
 def test_compute_tessellator_matches_its_numpy_twin_and_has_no_cracks():
     params = patches.TerrainParams(patches=4, max_level=8, lod_scale=6.0)
     eye = np.array([1.0, 3.0, 6.0])
