@@ -1,9 +1,11 @@
 """Mutants of step 07's shader exercises, for the mutation check.
 
-The lists live beside the checks that kill them, in the technique's test files (each of those files also runs
-its mutants through the shader harness as ungraded tests); here they are read from the files' source (only the
-literal tables, nothing is imported: the mutation runner forks with no GPU library loaded) and registered with
-the exercise each one breaks. The terrain, filter and parallax test files build their mutants in their own formats
+The lists live beside the checks that kill them, in each technique's ``test_<technique>_mutants.py`` (the filter's
+in ``test_filter_reference.py``): modules apart from the graded tests, since they hold the reference's own shader
+text, which a student's release leaves out. Each of them also runs its mutants through the graded checks as ungraded
+tests; here they are read from the files' source (only the literal tables, nothing is imported: the mutation runner
+forks with no GPU library loaded) and registered with the exercise each one breaks. The terrain, filter and
+parallax mutant tables build their mutants in their own formats
 (function bodies in a frame, weight-table parameters, replacements in the solution's text): the same builders run
 here and each mutant becomes a whole-file replacement of the copied solution, so the mutation runner grades exactly
 the shader text those files' own mutant tests check (terrain_height gets two more here). The showcase's two older
@@ -53,16 +55,16 @@ def _whole_file(file: str, text: str) -> tuple[str, str, str]:
     return (file, (SOLUTIONS / file).read_text(), text)
 
 
-_explode = _tables("test_explode.py", {"G", "W", "SHADER_MUTANTS"})
+_explode = _tables("test_explode_mutants.py", {"G", "W", "SHADER_MUTANTS"})
 for name, description, edits in _explode["SHADER_MUTANTS"]:
     shader_mutant(MUTANTS, STEP, "explode_offset", name, description, edits)
 
-_tracer = _tables("test_pathtracer.py", {"HG", "HW", "SG", "SW", "HIT_MUTANTS", "SCATTER_MUTANTS"})
+_tracer = _tables("test_pathtracer_mutants.py", {"HG", "HW", "SG", "SW", "HIT_MUTANTS", "SCATTER_MUTANTS"})
 for exercise, table in (("hit_sphere", _tracer["HIT_MUTANTS"]), ("scatter_dielectric", _tracer["SCATTER_MUTANTS"])):
     for name, description, edits in table:
         shader_mutant(MUTANTS, STEP, exercise, name, description, edits)
 
-_brdf = _tables("test_pbr_model_brdf.py", {"G", "W", "SHADER_MUTANTS", "MUTANT_EXERCISE"})
+_brdf = _tables("test_pbr_model_brdf_mutants.py", {"G", "W", "SHADER_MUTANTS", "MUTANT_EXERCISE"})
 for name, description, edits in _brdf["SHADER_MUTANTS"]:
     shader_mutant(MUTANTS, STEP, _brdf["MUTANT_EXERCISE"][name], name, description, edits)
 
@@ -129,7 +131,8 @@ for name, description, edits in PARTICLE_STEP:
 
 # --- terrain: the test file's function bodies in its frame (tess_level, terrain_height, terrain_normal) -------------
 TERRAIN_EXERCISE = {"tess_level": "terrain_lod", "terrain_height": "terrain_height", "terrain_normal": "terrain_normal"}
-_terrain = _tables("test_terrain.py", {"_GLSL", "_WGSL", "_BILINEAR", "_BILINEAR_WGSL", "_REFERENCE", "MUTANTS"})
+_terrain = _tables("test_terrain_mutants.py", {"_GLSL", "_WGSL", "_BILINEAR", "_BILINEAR_WGSL", "_REFERENCE",
+                                                "MUTANTS"})
 
 
 def _terrain_file(language: str, function: str, body: str) -> str:
@@ -159,8 +162,8 @@ shader_mutant(MUTANTS, STEP, "terrain_height", "height-trunc-for-floor",
                (TW, "let base = floor(st);", "let base = trunc(st);")])
 
 # --- filter: the Gaussian weights (blur_kernel) and the blur pass (convolve) -----------------------------------------
-_filter = _tables("test_filter.py", {"_W_GLSL", "_W_WGSL", "_weights_body", "WEIGHT_MUTANTS", "CONVOLVE_MUTANTS",
-                                     "_C_GLSL", "_C_WGSL"})
+_filter = _tables("test_filter_reference.py", {"_W_GLSL", "_W_WGSL", "_weights_body", "WEIGHT_MUTANTS",
+                                               "CONVOLVE_MUTANTS", "_C_GLSL", "_C_WGSL"})
 for description, spec in _filter["WEIGHT_MUTANTS"].items():
     shader_mutant(MUTANTS, STEP, "blur_kernel", _slug(description), f"the weights: {description}",
                   [_whole_file(f"blur_kernel.{lang}",
@@ -172,7 +175,7 @@ for description, (glsl, wgsl) in _filter["CONVOLVE_MUTANTS"].items():
                    _whole_file("convolve.wgsl", _filter["_C_WGSL"].format(body=wgsl))])
 
 # --- parallax: replacements in the solution's text (every occurrence, as the test file applies them) ----------------
-_parallax = _tables("test_parallax.py", {"_SAME", "MUTANTS"})
+_parallax = _tables("test_parallax_mutants.py", {"_SAME", "MUTANTS"})
 
 
 def _parallax_file(language: str, edits: list[tuple[str, str]]) -> str:

@@ -21,14 +21,23 @@ def _unit(v):
     return v / np.linalg.norm(v, axis=-1, keepdims=True)
 
 
+def _dot(a, b):
+    return np.einsum("...k,...k->...", a, b)[..., None]
+
+
 def _reflect(i, n):
-    return i - 2.0 * np.sum(n * i, axis=-1, keepdims=True) * n
+    """The mirror image of ``i``: its part along ``n`` turned round, its part across ``n`` kept."""
+    along = _dot(i, n) * n
+    return (i - along) - along
 
 
 def _refract(i, n, eta):
-    cos_i = np.sum(n * i, axis=-1, keepdims=True)
-    k = 1.0 - eta * eta * (1.0 - cos_i * cos_i)
-    return np.where(k >= 0, eta * i - (eta * cos_i + np.sqrt(np.maximum(k, 0.0))) * n, 0.0)
+    """Snell's law split into parts: across ``n`` the direction scales by ``eta``; along ``-n`` it has what is left
+    of unit length, sqrt(1 - sin²θt); none left (sin²θt > 1) is total internal reflection, the zero vector."""
+    across = eta * (i - _dot(i, n) * n)
+    sin2_t = eta**2 * (1.0 - _dot(i, n) ** 2)
+    along = -np.sqrt(np.clip(1.0 - sin2_t, 0.0, None)) * n
+    return np.where(sin2_t <= 1.0, across + along, 0.0)
 
 
 # --- numpy ------------------------------------------------------------------------------------------
