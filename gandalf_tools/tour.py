@@ -67,11 +67,14 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--steps", nargs="*",
                         help="only these steps or parts, e.g. step06_lighting.environment (default: all)")
     parser.add_argument("--backends", nargs="*", default=list(BACKENDS), choices=BACKENDS)
-    parser.add_argument("--size", default="640x480", help="WIDTHxHEIGHT of the headless pictures (default 640x480)")
+    parser.add_argument("--size", default=AGREEMENT_SIZE,
+                        help=f"WIDTHxHEIGHT of the headless pictures (default {AGREEMENT_SIZE}; the two APIs' "
+                             "pictures are judged against their bound at that size only)")
     parser.add_argument("--frames", type=int, default=None,
                         help="frames before each headless picture (default: each part's own count)")
     args = parser.parse_args(argv)
     width, height = (int(x) for x in args.size.lower().split("x"))
+    judged = f"{width}x{height}" == AGREEMENT_SIZE
     if str(REPO_ROOT) not in sys.path:
         sys.path.insert(0, str(REPO_ROOT))
     steps = args.steps or find_steps()
@@ -105,9 +108,9 @@ def main(argv: list[str] | None = None) -> int:
                 waiting.append(part)
                 break
         if len(images) == 2:
-            verdict, problems = _agreement(part, *images.values())
+            verdict, problems = _agreement(part, *images.values(), judged=judged)
             print(f"{part:<26} OpenGL vs WebGPU: {verdict}")
-            if problems:
+            if problems and judged:
                 disagree.append(part)
     if waiting:
         print(f"{len(waiting)} parts wait for your exercises: {', '.join(waiting)}")
@@ -122,6 +125,10 @@ def main(argv: list[str] | None = None) -> int:
 #: on llvmpipe / lavapipe: at most 0.02 % of pixels beyond 2 levels, apart from the parts below), no 8 x 8 square
 #: off by more than 12 on average.
 AGREEMENT = LocalDifferences(level=4, share=0.999)
+#: The picture size the bounds are stated for. At another size the agreement is reported, not judged: a smaller
+#: picture samples its textures from coarser mip levels, where implementations legally pick and blend levels
+#: differently (e.g. on an NVIDIA GPU the environment's 64 x 48 picture has 1.3 % of pixels beyond 4 levels).
+AGREEMENT_SIZE = "640x480"
 #: Parts whose two variants draw legitimately different geometry, and why.
 AGREEMENT_BY_PART = {
     # OpenGL tessellates the patches in hardware, WebGPU in a compute kernel: the two cut a patch into other
@@ -131,9 +138,10 @@ AGREEMENT_BY_PART = {
 }
 
 
-def _agreement(part: str, a: Path, b: Path) -> tuple[str, list[str]]:
+def _agreement(part: str, a: Path, b: Path, judged: bool = True) -> tuple[str, list[str]]:
     """How closely the two backends' pictures agree (PSNR, largest channel difference), the verdict against
-    the part's bound, and what breaks it (empty when within)."""
+    the part's bound (``judged``: the pictures are of :data:`AGREEMENT_SIZE`), and what breaks it (empty when
+    within)."""
     import numpy as np
     from PIL import Image
 
@@ -144,7 +152,8 @@ def _agreement(part: str, a: Path, b: Path) -> tuple[str, list[str]]:
     if worst == 0:
         return "identical", []
     verdict = (f"within the bound ({bound.share:.1%} of pixels within {bound.level} levels)" if not problems
-               else "DIFFERENT: " + "; ".join(problems))
+               else ("DIFFERENT: " if judged else f"beyond the {AGREEMENT_SIZE} bound, not judged at this size: ")
+               + "; ".join(problems))
     return f"PSNR {psnr(x, y):.1f} dB, largest channel difference {worst}/255: {verdict}", problems
 
 
