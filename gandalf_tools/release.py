@@ -248,7 +248,7 @@ def graded_exercises(folder: Path) -> set[tuple[str, str]]:
     """(step, exercise) of every graded test module in ``folder``/tests (read from the modules' markers)."""
     found = set()
     for path in sorted(Path(folder, "tests").glob("step*/**/test_*.py")):
-        found |= {(path.relative_to(folder, "tests").parts[0], m) for m in _EXERCISE_MARK.findall(path.read_text())}
+        found |= {(path.relative_to(folder / "tests").parts[0], m) for m in _EXERCISE_MARK.findall(path.read_text())}
     return found
 
 
