@@ -14,9 +14,9 @@ case "$cmd" in
         exec .venv/bin/python -m gandalf_tools.tour "$@"
         ;;
     test)
-        # One pytest worker per core (pytest-xdist); the window tests share one worker (their xdist group), so no
-        # two windows overlap on the display. `./run.sh test -n 0 ...` runs in one process.
-        parallel=(-n auto --dist loadgroup)
+        # One pytest worker per core (pytest-xdist; the window tests take turns on the display through a lock, see
+        # tests/conftest.py). `./run.sh test -n 0 ...` runs in one process.
+        parallel=(-n auto)
         if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null 2>&1; then
             exec xvfb-run -a -s "-screen 0 1280x720x24" .venv/bin/python -m pytest "${parallel[@]}" "$@"
         fi

@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import os
 import sys
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -14,6 +16,22 @@ if str(ROOT) not in sys.path:
 TESTS = Path(__file__).resolve().parent
 if str(TESTS) not in sys.path:
     sys.path.append(str(TESTS))
+
+
+@pytest.fixture
+def one_window_at_a_time() -> Iterator[None]:
+    """Hold the display for this test alone, across pytest-xdist's worker processes (a lock file): two windows
+    made at once on one X display can crash Mesa's GLX, and an obscured window's pixels are undefined to a read of
+    its framebuffer. Used by every test that opens real windows."""
+    import fcntl
+    import tempfile
+
+    with open(Path(tempfile.gettempdir()) / f"gandalf-display-{os.environ.get('DISPLAY', 'none')}.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        try:
+            yield
+        finally:
+            fcntl.flock(lock, fcntl.LOCK_UN)
 
 
 @pytest.fixture(params=["opengl", "webgpu"])

@@ -12,10 +12,9 @@ import pytest
 from gandalf_core import Application, ClearColorComponent, Scene
 from gandalf_core.app.window import display_available
 
-# One xdist worker runs every window test (./run.sh test: --dist loadgroup), so no two windows overlap: an
-# obscured window's pixels are undefined to a read of its framebuffer.
+# One window test at a time across xdist workers (the conftest's lock on the display).
 pytestmark = [pytest.mark.skipif(not display_available(), reason="needs a display (run under xvfb-run)"),
-              pytest.mark.xdist_group("windows")]
+              pytest.mark.usefixtures("one_window_at_a_time")]
 
 
 def test_window_presents_the_frame(backend):
