@@ -11,10 +11,12 @@ imports it.
   without a name, one per sandbox), in its own pid namespace and a mount namespace where ``/tmp``, ``/home``,
   ``/root``, the checkout's top folder and the like are covered by empty read-only folders and only what it needs is
   put back read-only (the engine, the step packages with ``solutions/`` covered again, the virtual environment,
-  Python): no solution, test, git history, output folder or other submission is there to read. As any other user, a
-  user + mount namespace (``unshare -Urm``) covers the checkouts' ``solutions/``, ``tests/`` and ``.git`` and the
-  folders of ``GANDALF_SANDBOX_HIDE`` (outputs, other submissions) when the system allows it; where it does not,
-  the student's process can read what its user can (``isolation()`` says which applies; the grade records it).
+  Python): no solution, test, git history, output folder or other submission is there to read. As any other user,
+  when the system allows it, the same covers are made in a user namespace (the same uid, mapped to its root), with
+  Python read-only too, the graders' bytecode cache and the folders of ``GANDALF_SANDBOX_HIDE`` covered, its own pid
+  namespace, and every capability dropped before the student's code runs (so that it cannot undo a mount); where
+  the system allows no namespaces, the student's process can read and write what its user can (``isolation()``
+  says which applies; the grade records it; ``GANDALF_SANDBOX_ISOLATION`` asks for a weaker one, to check it).
 * **Limits.** Memory (RLIMIT_AS), processes (RLIMIT_NPROC, for its own user), file size (RLIMIT_FSIZE), CPU time
   (RLIMIT_CPU), and a wall-clock budget per call kept by this process: a call past it ends the sandboxed process
   (and every process of its user), the function is remembered as hung so that its later calls fail at once, and
