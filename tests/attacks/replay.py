@@ -7,7 +7,7 @@ Three ways the course grades, each through its real entry point:
   gandalf_tools.grading tests/<step> --gradescope results.json``): the same run gives both files, so one run per attack
   reads the points of both;
 * **batch**: ``python -m gandalf_tools.grading.batch CLASS --out OUT --jobs 2`` over a class of honest classmates
-  (a correct submission, the untouched stub, a partial one, graded both before and after the attackers) and every
+  (a correct submission before the attackers; a correct one, a partial one and the untouched stub after them) and every
   attacker, next to a batch of the same classmates alone.
 
 An attack may name the instructor's paths it aims at (assumed known: they are on the instructors page) with
@@ -50,7 +50,7 @@ REPLAY_ENV = "GANDALF_ATTACK_REPLAY"
 SITE = Path(sysconfig.get_paths()["purelib"])
 #: Seconds a detached process is given to act after a grading run ends, before the files are checked.
 AFTERMATH = 3.0
-#: The honest classmates of a batch (graded before and after the attackers: ``a_*`` and ``z_*``).
+#: The kinds of honest classmates in a batch.
 HONEST = ("correct", "partial", "stub")
 PARTIAL_TAIL = '''
 
@@ -254,7 +254,10 @@ def grade_batch(step: str, modules: dict[str, Path | str | None], *, jobs: int =
 
 
 def honest_class(step: str, root: Path = ROOT) -> dict[str, str | None]:
-    return {f"{side}_{kind}": honest_module(step, kind, root) for side in ("a", "z") for kind in HONEST}
+    """The honest classmates: a correct one graded before the attackers (``a_``: beside the first of them), and each
+    kind graded after them (``z_``: what the attackers left behind reaches them)."""
+    return {"a_correct": honest_module(step, "correct", root),
+            **{f"z_{kind}": honest_module(step, kind, root) for kind in HONEST}}
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -51,12 +51,12 @@ def test_a_batch_of_attackers_costs_honest_classmates_nothing():
     honest = honest_class(STEP)
     alone = grade_batch(STEP, honest)
     assert {s: r["earned"] for s, r in alone.rows.items()} == {
-        "a_correct": 2.0, "a_partial": 1.0, "a_stub": 0.0, "z_correct": 2.0, "z_partial": 1.0, "z_stub": 0.0}
+        "a_correct": 2.0, "z_correct": 2.0, "z_partial": 1.0, "z_stub": 0.0}
     hostile = {f"m_{a.stem}": a for a in attacks(STEP) if not _readable_checkout(a)}
     both = grade_batch(STEP, {**honest, **hostile})
     assert both.changed == []
     assert set(both.rows) == set(honest) | set(hostile)
     for student, row in alone.rows.items():
         assert (both.rows[student]["exercises"], both.rows[student]["error"]) == (row["exercises"], ""), student
-    gained = {s: both.rows[s]["earned"] for s in hostile if both.rows[s]["earned"] > alone.rows["a_stub"]["earned"]}
+    gained = {s: both.rows[s]["earned"] for s in hostile if both.rows[s]["earned"] > alone.rows["z_stub"]["earned"]}
     assert gained == {}, [(s, (ATTACKS / "step01" / f"{s[2:]}.py").read_text().splitlines()[0]) for s in gained]
