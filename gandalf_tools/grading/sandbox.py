@@ -315,6 +315,8 @@ class Sandbox:
             if path != private:
                 lines.append(f"mount -o remount,bind,ro '{path}'")
         lines += [f"mount -o remount,ro '{c}'" for c in covers]
+        # Shared memory of its own: the machine's /dev/shm is writable by every user (a channel between sandboxes).
+        lines += ["[ ! -d /dev/shm ] || mount -t tmpfs -o size=64m,mode=1777 gandalf-shm /dev/shm"]
         lines += [f"umount -l '{stage}'", "set +e", ""]
         return "\n".join(lines), keep
 

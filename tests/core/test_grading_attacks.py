@@ -22,8 +22,10 @@ from gandalf_tools.grading import sandbox
 STEP = "step01_window"
 
 
-def _readable_checkout(attack) -> bool:
-    return sandbox.isolation() == "process" and ("solution" in attack.stem or "sibling" in attack.stem)
+def _uncontained(attack) -> bool:
+    """Whether ``attack`` reads the checkout or writes the instructor's files, which a machine without namespaces
+    cannot prevent (its student's process can read and write what the grader's user can): not replayed there."""
+    return sandbox.isolation() == "process" and ("solution" in attack.stem or "@@" in attack.read_text())
 
 
 @pytest.fixture(scope="module")
@@ -38,8 +40,8 @@ def test_the_reference_solution_handed_in_gets_full_marks():
 
 @pytest.mark.parametrize("attack", attacks(STEP), ids=lambda p: p.stem)
 def test_an_attack_gains_no_point_over_the_stub_and_changes_nothing(attack, stub):
-    if _readable_checkout(attack):
-        pytest.skip("this machine allows no namespaces: the student's process can read the checkout's files")
+    if _uncontained(attack):
+        pytest.skip("this machine allows no namespaces: the student's process can read and write the grader's files")
     graded = grade_single(STEP, attack)
     said = f"{attack.stem}: {attack.read_text().splitlines()[0]}"
     assert graded.front_end <= stub.front_end + 1e-9, f"front end: {said}"
@@ -52,7 +54,7 @@ def test_a_batch_of_attackers_costs_honest_classmates_nothing():
     alone = grade_batch(STEP, honest)
     assert {s: r["earned"] for s, r in alone.rows.items()} == {
         "a_correct": 2.0, "z_correct": 2.0, "z_partial": 1.0, "z_stub": 0.0}
-    hostile = {f"m_{a.stem}": a for a in attacks(STEP) if not _readable_checkout(a)}
+    hostile = {f"m_{a.stem}": a for a in attacks(STEP) if not _uncontained(a)}
     both = grade_batch(STEP, {**honest, **hostile})
     assert both.changed == []
     assert set(both.rows) == set(honest) | set(hostile)
