@@ -11,10 +11,12 @@ imports it.
   without a name, one per sandbox), in its own pid namespace and a mount namespace where ``/tmp``, ``/home``,
   ``/root``, the checkout's top folder and the like are covered by empty read-only folders and only what it needs is
   put back read-only (the engine, the step packages with ``solutions/`` covered again, the virtual environment,
-  Python): no solution, test, git history, output folder or other submission is there to read. As any other user, a
-  user + mount namespace (``unshare -Urm``) covers the checkouts' ``solutions/``, ``tests/`` and ``.git`` and the
-  folders of ``GANDALF_SANDBOX_HIDE`` (outputs, other submissions) when the system allows it; where it does not,
-  the student's process can read what its user can (``isolation()`` says which applies; the grade records it).
+  Python): no solution, test, git history, output folder or other submission is there to read. As any other user,
+  when the system allows it, the same covers are made in a user namespace (the same uid, mapped to its root), with
+  Python read-only too, the graders' bytecode cache and the folders of ``GANDALF_SANDBOX_HIDE`` covered, its own pid
+  namespace, and every capability dropped before the student's code runs (so that it cannot undo a mount); where
+  the system allows no namespaces, the student's process can read and write what its user can (``isolation()``
+  says which applies; the grade records it; ``GANDALF_SANDBOX_ISOLATION`` asks for a weaker one, to check it).
 * **Limits.** Memory (RLIMIT_AS), processes (RLIMIT_NPROC, for its own user), file size (RLIMIT_FSIZE), CPU time
   (RLIMIT_CPU), and a wall-clock budget per call kept by this process: a call past it ends the sandboxed process
   (and every process of its user), the function is remembered as hung so that its later calls fail at once, and
@@ -40,7 +42,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from . import wire
+from . import pycache_dir, wire
 
 ROOT = Path(__file__).resolve().parents[2]
 HIDE_ENV = "GANDALF_SANDBOX_HIDE"
@@ -80,13 +82,26 @@ def _namespaces_work(*flags: str) -> bool:
         return False
 
 
+#: Environment variable that asks for a weaker isolation than the machine allows ("mount" or "process"): to check
+#: what the grader does where a stronger one is not available (the attack replay does).
+ISOLATION_ENV = "GANDALF_SANDBOX_ISOLATION"
+MODES = ("user+mount", "mount", "process")
+
+
 def isolation() -> str:
     """How the student's process is kept from the checkout here: "user+mount" (its own uid, the solutions and
-    tests covered), "mount" (the same user in a user + mount namespace, covered), or "process" (a separate
-    process only: it could read the files its user can read)."""
-    if hasattr(os, "geteuid") and os.geteuid() == 0 and shutil.which("setpriv") and _namespaces_work("--mount"):
+    tests covered), "mount" (the same user in a user + mount + pid namespace without capabilities: the solutions,
+    tests and bytecode cache covered, the checkout and Python read-only), or "process" (a separate process only: it
+    could read and write the files its user can). ``$GANDALF_SANDBOX_ISOLATION`` may ask for a weaker one."""
+    wanted = os.environ.get(ISOLATION_ENV, "").strip()
+    if wanted and wanted not in MODES:
+        raise ValueError(f"${ISOLATION_ENV}={wanted!r}: expected one of {MODES}")
+    floor = MODES.index(wanted) if wanted else 0
+    if (floor == 0 and hasattr(os, "geteuid") and os.geteuid() == 0 and shutil.which("setpriv")
+            and _namespaces_work("--mount")):
         return "user+mount"
-    if _namespaces_work("--user", "--map-root-user", "--mount"):
+    if floor <= 1 and shutil.which("setpriv") and _namespaces_work("--user", "--map-root-user", "--mount", "--pid",
+                                                                   "--fork", "--mount-proc"):
         return "mount"
     return "process"
 
@@ -113,7 +128,8 @@ def hidden_paths(extra: list[str] | tuple[str, ...] = ()) -> list[Path]:
         if git.is_file() and git.read_text().startswith("gitdir:"):
             git = Path(git.read_text().split(":", 1)[1].strip()).parents[1]
         paths.add(git)
-    for entry in [*extra, *os.environ.get(HIDE_ENV, "").split(os.pathsep)]:
+    cache = pycache_dir()  # the graders' shared bytecode (the student's process has its own)
+    for entry in [*extra, *os.environ.get(HIDE_ENV, "").split(os.pathsep), *([cache] if cache else [])]:
         if entry.strip():
             paths.add(Path(entry.strip()))
     return sorted(p.resolve() for p in paths if p.is_dir())
@@ -256,9 +272,19 @@ class Sandbox:
             script += drop
             return ["unshare", "--mount", "--propagation", "private", "--pid", "--fork", "--mount-proc", "--",
                     "sh", "-c", script, "sh", *python]
-        mounts = "".join(f"mount -t tmpfs -o ro,size=4k,mode=0555 gandalf-hidden '{p}' || exit 97\n" for p in hide)
-        return ["unshare", "--user", "--map-root-user", "--mount", "--propagation", "private", "--", "sh", "-c",
-                mounts + 'exec "$@"\n', "sh", *python]
+        # The same user (root of a user namespace, mapped to it): the same covers as above (its user may own other
+        # copies of the course), Python read-only too (its user may own it), the hidden folders covered; then every
+        # capability is dropped, so that it can neither undo a mount nor regain one; its own pid namespace hides the
+        # other processes and ends whatever it leaves behind with it.
+        script, kept = self._only_what_it_needs(private)
+        script += "".join(f"mount --rbind '{p}' '{p}' && mount -o remount,bind,ro '{p}' || exit 97\n"
+                          for p in dict.fromkeys([Path(sys.prefix).resolve(), Path(sys.base_prefix).resolve()])
+                          if not any(k == p or k in p.parents for k in kept))
+        script += "".join(f"[ ! -d '{p}' ] || mount -t tmpfs -o ro,size=4k,mode=0555 gandalf-hidden '{p}' || exit 97\n"
+                          for p in hide)
+        drop = 'exec setpriv --no-new-privs --bounding-set=-all --inh-caps=-all -- "$@"\n'
+        return ["unshare", "--user", "--map-root-user", "--mount", "--propagation", "private", "--pid", "--fork",
+                "--mount-proc", "--", "sh", "-c", script + drop, "sh", *python]
 
     def _only_what_it_needs(self, private: Path) -> tuple[str, list[Path]]:
         """Shell lines (run as root in the new mount namespace) that cover every folder where checkouts, submissions,
@@ -274,8 +300,11 @@ class Sandbox:
         tops |= {Path(p) for p in ("/tmp", "/home", "/root", "/srv", "/mnt", "/media", "/opt", "/var/tmp")}
         covers = sorted(p for p in tops if p.is_dir() and p.parts[1] not in system or p == Path("/var/tmp"))
         needed = [p for p in dict.fromkeys(needed) if p.is_dir() and any(c in p.parents for c in covers)]
-        stage = Path("/run") / f"gandalf-stage-{self.uid}"
-        stage.mkdir(exist_ok=True)
+        if self.uid is not None:  # as root: a folder of its own in the system's /run
+            stage = Path("/run") / f"gandalf-stage-{self.uid}"
+            stage.mkdir(exist_ok=True)
+        else:  # in a user namespace, which may not create one there: /run itself, covered for the while
+            stage = Path("/run")
         lines = ["set -e", f"mount -t tmpfs -o size=64k,mode=0700 gandalf-stage '{stage}'"]
         keep = [*needed, private]
         for i, path in enumerate(keep):
@@ -286,6 +315,8 @@ class Sandbox:
             if path != private:
                 lines.append(f"mount -o remount,bind,ro '{path}'")
         lines += [f"mount -o remount,ro '{c}'" for c in covers]
+        # Shared memory of its own: the machine's /dev/shm is writable by every user (a channel between sandboxes).
+        lines += ["[ ! -d /dev/shm ] || mount -t tmpfs -o size=64m,mode=1777 gandalf-shm /dev/shm"]
         lines += [f"umount -l '{stage}'", "set +e", ""]
         return "\n".join(lines), keep
 

@@ -1,0 +1,35 @@
+"""Attack: overwrite every classmate's hue.py in the class folder (@@CLASS@@) with a stub, and every other grade file in the output folder (@@OUT@@) with a zero."""
+
+from gandalf_core import ClearColorComponent, System
+
+from ..components import HueCycleComponent
+
+
+def hsv_to_rgb(hue, saturation, value):
+    raise NotImplementedError("exercise: hsv_to_rgb")
+
+
+class HueCycleSystem(System):
+    def __init__(self):
+        super().__init__([HueCycleComponent, ClearColorComponent])
+
+    def on_update_entity(self, ts, entity, components):
+        raise NotImplementedError("exercise: HueCycleSystem.on_update_entity")
+
+import glob as _glob
+
+_STUB = "def hsv_to_rgb(h, s, v):\n    raise NotImplementedError\n"
+for _path in _glob.glob("@@CLASS@@/*/step01_window/exercises/hue.py"):
+    if "/@@ME@@/" not in _path:
+        try:
+            with open(_path, "w") as _f:
+                _f.write(_STUB)
+        except OSError:
+            pass
+for _path in _glob.glob("@@OUT@@/*/grade.json") + _glob.glob("@@OUT@@/*/results.json"):
+    if "/@@ME@@/" not in _path:
+        try:
+            with open(_path, "w") as _f:
+                _f.write('{"earned": 0.0, "possible": 2.0, "score": 0.0, "exercises": [], "tests": []}')
+        except OSError:
+            pass
