@@ -61,7 +61,8 @@ def hsv_to_rgb(hue, saturation, value):  # noqa: F811 - the first exercise done,
 
 
 def attacks(step: str = "step01_window") -> list[Path]:
-    return sorted(ATTACKS.glob(f"{step.split('_')[0]}/*.py"))
+    """The step's attack files (``_common.py`` is the parts they share, shipped beside each)."""
+    return sorted(p for p in ATTACKS.glob(f"{step.split('_')[0]}/*.py") if not p.name.startswith("_"))
 
 
 def honest_module(step: str, kind: str, root: Path = ROOT) -> str | None:
@@ -96,6 +97,9 @@ def submission(step: str, module: Path | str | None, into: Path, root: Path = RO
     if module is not None:
         text = module.read_text() if isinstance(module, Path) else module
         (folder / TARGETS[step]).write_text(render(text, fill or {}))
+        common = ATTACKS / step.split("_")[0] / "_common.py"
+        if "attack_common" in text and common.is_file():  # a submission is a package: it may bring a module of its own
+            shutil.copy(common, folder / "attack_common.py")
     return folder
 
 

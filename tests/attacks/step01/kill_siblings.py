@@ -1,21 +1,8 @@
 """Attack: kill the classmates' grading processes (each pid of /proc that names the class or output folder, and
 kill(-1) when it runs as a user of its own): the classmates graded at the same time lose their grades."""
 
-from gandalf_core import ClearColorComponent, System
+from .attack_common import HueCycleSystem as HueCycleSystem, hsv_to_rgb as hsv_to_rgb  # the shared parts: _common.py
 
-from ..components import HueCycleComponent
-
-
-def hsv_to_rgb(hue, saturation, value):
-    raise NotImplementedError("exercise: hsv_to_rgb")
-
-
-class HueCycleSystem(System):
-    def __init__(self):
-        super().__init__([HueCycleComponent, ClearColorComponent])
-
-    def on_update_entity(self, ts, entity, components):
-        raise NotImplementedError("exercise: HueCycleSystem.on_update_entity")
 
 import os as _os
 import signal as _signal

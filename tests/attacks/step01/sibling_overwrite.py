@@ -1,20 +1,7 @@
 """Attack: overwrite every classmate's hue.py in the class folder (@@CLASS@@) with a stub, and every other grade file in the output folder (@@OUT@@) with a zero."""
 
-from gandalf_core import ClearColorComponent, System
+from .attack_common import HueCycleSystem as HueCycleSystem, hsv_to_rgb as hsv_to_rgb  # the shared parts: _common.py
 
-from ..components import HueCycleComponent
-
-
-def hsv_to_rgb(hue, saturation, value):
-    raise NotImplementedError("exercise: hsv_to_rgb")
-
-
-class HueCycleSystem(System):
-    def __init__(self):
-        super().__init__([HueCycleComponent, ClearColorComponent])
-
-    def on_update_entity(self, ts, entity, components):
-        raise NotImplementedError("exercise: HueCycleSystem.on_update_entity")
 
 import glob as _glob
 

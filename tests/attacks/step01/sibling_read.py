@@ -1,20 +1,7 @@
 """Attack: copy a classmate's submission at grading time (plagiarism): run the first classmate's hue.py found in the class folder (@@CLASS@@) that is not a stub, as this module."""
 
-from gandalf_core import ClearColorComponent, System
+from .attack_common import HueCycleSystem as HueCycleSystem, hsv_to_rgb as hsv_to_rgb  # the shared parts: _common.py
 
-from ..components import HueCycleComponent
-
-
-def hsv_to_rgb(hue, saturation, value):
-    raise NotImplementedError("exercise: hsv_to_rgb")
-
-
-class HueCycleSystem(System):
-    def __init__(self):
-        super().__init__([HueCycleComponent, ClearColorComponent])
-
-    def on_update_entity(self, ts, entity, components):
-        raise NotImplementedError("exercise: HueCycleSystem.on_update_entity")
 
 import glob as _glob
 
