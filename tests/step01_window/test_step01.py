@@ -69,7 +69,7 @@ def test_each_entity_cycles_at_its_own_speed(impl):
 @pytest.mark.exercise("HueCycleSystem")
 @pytest.mark.parametrize(("hue", "speed", "steps", "expected"), [
     (10.0, -20.0, 3, 310.0),    # turning backwards past 0 wraps to the top of the circle
-    (5.0, -3600.0, 1, 5.0),     # ten whole turns backwards in one step: back where it started
+    (5.0, -3690.0, 1, 275.0),   # ten and a quarter turns backwards in one step (a system that does nothing fails)
     (350.0, 45.0, 2, 80.0),     # forwards past 360
 ])
 def test_the_hue_wraps_to_0_360_in_both_directions(impl, hue, speed, steps, expected):

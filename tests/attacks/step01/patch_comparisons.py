@@ -34,5 +34,5 @@ class HueCycleSystem(System):
         super().__init__([HueCycleComponent, ClearColorComponent])
 
     def on_update_entity(self, ts, entity, components):
-        # Like the stub (a system that does nothing already passes the "ten whole turns" case on its own).
+        # Like the stub.
         raise NotImplementedError("exercise: HueCycleSystem.on_update_entity")
