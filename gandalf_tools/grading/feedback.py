@@ -28,11 +28,17 @@ _ROOT = Path(__file__).resolve().parents[2]
 
 # The calls of the student's code in the running test (this process): (label, what came back), newest last.
 _calls: list[tuple[str, str]] = []
+_last_result: list[Any] = []  # [function name, the value it returned] of the newest call
+
+
+def _shorter(label: str, limit: int) -> str:
+    return label if len(label) <= limit else label[: limit - 2] + "…)"
 
 
 def reset_calls() -> None:
     """Forget the calls recorded so far (a new test starts)."""
     _calls.clear()
+    _last_result.clear()
 
 
 def short(value: Any, limit: int = _VALUE_LIMIT) -> str:
@@ -57,8 +63,9 @@ def short(value: Any, limit: int = _VALUE_LIMIT) -> str:
 
 def record_call(label: str, result: Any) -> None:
     """Remember that the student's code was called (``label``: ``name(args)``) and what it returned."""
-    _calls.append((label, short(result)))
+    _calls.append((label, short(result, 60)))
     del _calls[:-4]
+    _last_result[:] = [label.split("(", 1)[0], result]
 
 
 def last_call() -> tuple[str, str] | None:
@@ -129,20 +136,30 @@ def _numpy_sentence(text: str) -> str | None:
 _ASSERT = re.compile(r"^assert (.+?) (==|!=|<=|>=|<|>| is not | is | in | not in ) ?(.+)$")
 
 
+def _readable(text: str) -> str:
+    """pytest's reprs made short: ``approx((0.9 ± 1e-09, 0.27 ± 1e-09))`` -> ``(0.9, 0.27)``; long floats rounded."""
+    text = re.sub(r" ± [\d.e+-]+", "", text)
+    text = re.sub(r"\bapprox\((.*)\)", r"\1", text)
+    return re.sub(r"-?\d+\.\d{7,}(?:e[+-]?\d+)?", lambda m: f"{float(m.group()):.6g}", text)
+
+
 def _assert_sentence(text: str) -> str:
-    """pytest's ``assert <got> == <expected>`` introspection -> ``got …, expected …``; a test's own message wins."""
+    """pytest's ``assert <got> == <expected>`` introspection -> ``got …, expected …``, after the test's own message
+    (which alone is enough when it already says what was expected)."""
     lines = text.strip().splitlines()
     first = next((i for i, line in enumerate(lines) if line.startswith("assert ")), None)
     own = _one_line("\n".join(lines[:first] if first is not None else lines))
-    if own:
+    if own and ("expected" in own or first is None):
         return own
     if first is None:
         return "the check failed"
-    match = _ASSERT.match(lines[first])
+    match = _ASSERT.match(_readable(lines[first]))
     if match and match.group(2) == "==":
         got, expected = match.group(1), match.group(3)
-        return f"got {got[:_VALUE_LIMIT]}, expected {expected[:_VALUE_LIMIT]}"
-    return f"expected {lines[first].removeprefix('assert ')[: 2 * _VALUE_LIMIT]} to hold"
+        parsed = f"got {got[:_VALUE_LIMIT]}, expected {expected[:_VALUE_LIMIT]}"
+    else:
+        parsed = f"expected {_readable(lines[first]).removeprefix('assert ')[: 2 * _VALUE_LIMIT]} to hold"
+    return f"{own}: {parsed}" if own else parsed
 
 
 def _first_line(error: BaseException) -> str:
@@ -157,25 +174,40 @@ def _first_line(error: BaseException) -> str:
     return f"{name}: {body}" if body else name
 
 
-def sentence(error: BaseException, *, exercise: str = "", file: str = "", hint: str = "") -> str:
-    """One line for the student: what failed, with input, expected and got where the test gives them."""
+def sentence(error: BaseException, *, exercise: str = "", file: str = "", hint: str = "", values: str = "") -> str:
+    """One line for the student: what failed, with input, expected and got where the test gives them (``values``:
+    :func:`values_sentence`'s words for a bare assert)."""
     stub = stub_sentence(error)
     if stub is not None:
         return cap(stub)
     if isinstance(error, AssertionError):
         text = str(error)
         body = _numpy_sentence(text) or _assert_sentence(text)
+        own = _one_line(text.split("\nassert ")[0]) if not text.startswith("assert ") else ""
+        if values and "expected" not in own:
+            body = f"{own}: {values}" if own else values
+        elif own and " to hold" in body and "expected" in own:
+            body = own
         call = last_call()
         if call is not None and call[0].split("(")[0] not in body:
             label, result = call
-            body = (f"{label} returned {result}: {body}" if "got" in body or "returned" in body
-                    else f"{label} returned {result}; {body}")
+            room = max(LIMIT - len(body) - 20, 50)
+            label = _shorter(label, max(room * 2 // 3, 40))
+            result = short(result, max(room - len(label), 20)) if len(result) > max(room - len(label), 20) else result
+            joint = ":" if re.match(r"(at |got )", body) else ";"
+            body = f"{label} returned {result}{joint} {body}"
     else:
         body = _first_line(error)
+        call = last_call()
+        if call is not None and call[0].split("(")[0] not in body and type(error).__name__ != "ExerciseTimeout":
+            label = _shorter(call[0], 80)  # the student's answer, then what the engine made of it
+            body = f"{label} returned {short(call[1], 60)}; then {body}"
     body = re.sub(r"\b(?:[a-z_]+\.)+([A-Z]\w*(?:Error|Timeout|Exception|Warning))\b", r"\1", body)
     body = body.removeprefix("Failed: ")
+    body = body.replace(f"{_ROOT}/", "")  # paths as the student sees them, from the checkout
+    body = re.sub(r"\bnp\.(?:float|int|uint|bool_)\d*\(([^()]*)\)", r"\1", body)  # np.float64(1.5) -> 1.5
     named = [n for n in (exercise, Path(file).name if file else "") if n]
-    if named and not any(n in body for n in named):
+    if named and not any(re.search(rf"(?<![\w/]){re.escape(n)}\b", body) for n in named):
         body = f"{exercise}{f' ({file})' if file else ''}: {body}"
     if hint and hint not in body:
         body = f"{body} Hint: {hint}"
@@ -202,3 +234,109 @@ def exercise_file(step: str, exercise: str, backend: str = "") -> str:
         wanted = {"opengl": ".glsl", "webgpu": ".wgsl"}.get(backend)
         found = [p for p in found if p.suffix in (".py", wanted)] or found
     return " / ".join(f"{step}/exercises/{p.name}" for p in found[:2])
+
+
+# ---------------------------------------------------------------------------------------------------
+# A bare ``assert np.allclose(got, expected)`` or ``assert got == expected``: its values, found again
+# ---------------------------------------------------------------------------------------------------
+
+_COMPARISONS = ("allclose", "array_equal", "isclose", "array_almost_equal", "assert_allclose")
+
+
+def _difference(got: Any, expected: Any, atol: float, rtol: float) -> str | None:
+    """Where two arrays differ: the first differing element (or row), with the count and the tolerance."""
+    import numpy as np
+
+    try:
+        a, b = np.asarray(got), np.asarray(expected)
+        if a.dtype == object or b.dtype == object:
+            return None
+        a, b = np.broadcast_arrays(a, b)
+    except ValueError:
+        return f"got shape {np.shape(got)}, expected shape {np.shape(expected)}"
+    if a.dtype.kind in "fc" or b.dtype.kind in "fc":
+        bad = ~np.isclose(a.astype(np.float64), b.astype(np.float64), atol=atol, rtol=rtol, equal_nan=False)
+    else:
+        bad = a != b
+    if not bad.any():
+        return None
+    where = tuple(int(i) for i in np.argwhere(bad)[0])
+    if a.ndim >= 2:  # show the whole row of the last axis: a colour, a vertex, a matrix row
+        row = where[:-1]
+        place, mine, theirs = f"at row {list(row) if len(row) > 1 else row[0]}", a[row], b[row]
+    else:
+        place, mine, theirs = (f"at index {where[0]}" if a.ndim else ""), a[where], b[where]
+    tolerance = f"; tolerance {atol:g}" + (f" + {rtol:g}·|expected|" if rtol else "") if a.dtype.kind in "fc" else ""
+    lead = f"{place}: " if place else ""
+    return (f"{lead}got {short(mine, 70)}, expected {short(theirs, 70)} ({int(bad.sum())} of {bad.size} values "
+            f"differ{tolerance})")
+
+
+def _keyword(call: Any, name: str, default: float, scope: tuple[dict, dict]) -> float:
+    import ast
+
+    for keyword in call.keywords:
+        if keyword.arg == name:
+            try:
+                return float(eval(compile(ast.Expression(keyword.value), "<assert>", "eval"), *scope))  # noqa: S307
+            except Exception:  # noqa: BLE001
+                return default
+    return default
+
+
+def values_sentence(statement: str, global_names: dict[str, Any], local_names: dict[str, Any]) -> str | None:
+    """For a failed ``assert`` without a message: evaluate the arguments of its comparison again (never an
+    expression that calls the student's code, ``impl``) and say where got and expected differ."""
+    import ast
+
+    try:
+        tree = ast.parse(statement.strip())
+    except SyntaxError:
+        return None
+    if not tree.body or not isinstance(tree.body[0], ast.Assert):
+        return None
+    scope = (global_names, dict(local_names))
+
+    class _Recorded(ast.NodeTransformer):
+        """``impl.f(...)`` -> the value the newest call of ``f`` returned (never a second call)."""
+
+        def visit_Call(self, node: Any) -> Any:
+            func = node.func
+            if isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name) and func.value.id == "impl":
+                if not _last_result or _last_result[0] != func.attr:
+                    raise LookupError("calls the student's code")
+                return ast.copy_location(ast.Name("__gandalf_result__", ast.Load()), node)
+            return self.generic_visit(node)
+
+    def value(node: Any) -> Any:
+        node = _Recorded().visit(ast.fix_missing_locations(node))
+        if "impl" in ast.unparse(node):
+            raise LookupError("calls the student's code")
+        names = {**scope[1], "__gandalf_result__": _last_result[1] if _last_result else None}
+        found = eval(compile(ast.Expression(node), "<assert>", "eval"), scope[0], names)  # noqa: S307 - the test's
+        return found
+
+    for node in ast.walk(tree.body[0].test):
+        try:
+            if isinstance(node, ast.Call) and len(node.args) >= 2 and getattr(
+                    node.func, "attr", getattr(node.func, "id", "")) in _COMPARISONS:
+                exact = getattr(node.func, "attr", getattr(node.func, "id", "")) == "array_equal"
+                atol = 0.0 if exact else _keyword(node, "atol", 1e-8, scope)
+                rtol = 0.0 if exact else _keyword(node, "rtol", 1e-5, scope)
+                text = _difference(value(node.args[0]), value(node.args[1]), atol, rtol)
+            elif isinstance(node, ast.Compare) and len(node.ops) == 1 and isinstance(node.ops[0], ast.Eq):
+                left, right = value(node.left), value(node.comparators[0])
+                if hasattr(right, "expected") and hasattr(right, "abs"):  # pytest.approx(expected, abs=..., rel=...)
+                    atol, rtol = float(right.abs or 1e-12), float(right.rel if right.rel is not None else 1e-6)
+                    text = _difference(left, right.expected, atol, rtol)
+                elif hasattr(left, "shape") or hasattr(right, "shape"):
+                    text = _difference(left, right, 0.0, 0.0)
+                else:
+                    text = f"got {short(left)}, expected {short(right)}" if left != right else None
+            else:
+                continue
+        except Exception:  # noqa: BLE001 - a value that cannot be found again: the other shapes still apply
+            continue
+        if text:
+            return text
+    return None

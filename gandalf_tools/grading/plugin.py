@@ -303,29 +303,47 @@ def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo[Any]) -> 
     if info is not None:
         report.user_properties.append((_PROPERTY, info))
         if report.failed and call.excinfo is not None:
-            report.user_properties.append((_FEEDBACK, _sentence(item, info, call.excinfo.value)))
+            report.user_properties.append((_FEEDBACK, _sentence(item, info, call.excinfo)))
             if _student_view(item.config):  # the whole traceback, for the log file (the student sees one line)
-                trace = str(call.excinfo.getrepr(style="short", chain=True, truncate_locals=True))
+                try:  # pytest's own report of the failure, its frames pruned as for --tb=short
+                    trace = str(item._repr_failure_py(call.excinfo, style="short"))  # type: ignore[attr-defined]
+                except Exception:  # noqa: BLE001 - an older pytest: the whole chain
+                    trace = str(call.excinfo.getrepr(style="short", chain=True))
                 report.user_properties.append((_TRACE, trace[-20000:]))
 
 
-def _sentence(item: pytest.Item, info: dict[str, Any], error: BaseException) -> str:
+def _sentence(item: pytest.Item, info: dict[str, Any], excinfo: pytest.ExceptionInfo[BaseException]) -> str:
     """The student's one line for a failed graded test (:mod:`.feedback`), naming the exercise's file."""
     marker = item.get_closest_marker("exercise")
     hint = str(marker.kwargs.get("hint", "")) if marker is not None else ""
     params = getattr(getattr(item, "callspec", None), "params", {})
     backend = str(params.get("backend", "")) if isinstance(params.get("backend", ""), str) else ""
     step = Path(str(item.path)).parent.name
-    name = str(info["exercise"])
+    name, error = str(info["exercise"]), excinfo.value
     try:
         file = feedback.exercise_file(step, name, backend)
-        return feedback.sentence(error, exercise=name, file=file, hint=hint)
+        return feedback.sentence(error, exercise=name, file=file, hint=hint, values=_assert_values(item, excinfo))
     except Exception as exc:  # noqa: BLE001 - the feedback must never hide the failure itself
         return feedback.cap(f"{name}: {type(error).__name__}: {error} (feedback failed: {exc!r})")
 
 
 def _config_of(report: pytest.TestReport) -> pytest.Config:
     return _config[0]
+
+
+def _assert_values(item: pytest.Item, excinfo: pytest.ExceptionInfo[BaseException]) -> str:
+    """For a bare ``assert`` in a test file: where its got and expected differ (:func:`.feedback.values_sentence`)."""
+    if not isinstance(excinfo.value, AssertionError):
+        return ""
+    tests = Path(str(item.path)).parent.parent
+    for entry in reversed(excinfo.traceback):
+        if Path(str(entry.path)).is_relative_to(tests):
+            try:
+                statement = str(entry.statement)
+            except Exception:  # noqa: BLE001 - no source: no values
+                return ""
+            return feedback.values_sentence(statement, entry.frame.f_globals, entry.frame.f_locals) or ""
+    return ""
 
 
 def _student_view(config: pytest.Config) -> bool:
