@@ -35,6 +35,10 @@ def _shorter(label: str, limit: int) -> str:
     return label if len(label) <= limit else label[: limit - 2] + "…)"
 
 
+def _clip(text: str, limit: int) -> str:
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
 def reset_calls() -> None:
     """Forget the calls recorded so far (a new test starts)."""
     _calls.clear()
@@ -63,6 +67,7 @@ def short(value: Any, limit: int = _VALUE_LIMIT) -> str:
 
 def record_call(label: str, result: Any) -> None:
     """Remember that the student's code was called (``label``: ``name(args)``) and what it returned."""
+    label = re.sub(r"<function (?:[\w.]+\.<locals>\.)?([\w.]+) at 0x[0-9a-f]+>", r"\1", label)  # a callback by name
     _calls.append((label, short(result, 60)))
     del _calls[:-4]
     _last_result[:] = [label.split("(", 1)[0], result]
@@ -182,8 +187,11 @@ def sentence(error: BaseException, *, exercise: str = "", file: str = "", hint: 
         return cap(stub)
     if isinstance(error, AssertionError):
         text = str(error)
-        body = _numpy_sentence(text) or _assert_sentence(text)
+        numpy = _numpy_sentence(text)
+        body = numpy or _assert_sentence(text)
         own = _one_line(text.split("\nassert ")[0]) if not text.startswith("assert ") else ""
+        if numpy:  # numpy's report: only the test's own err_msg is the test's words
+            own = numpy.split(": got ", 1)[0] if not numpy.startswith("got ") else ""
         if values and "expected" not in own:
             body = f"{own}: {values}" if own else values
         elif own and " to hold" in body and "expected" in own:
@@ -193,7 +201,7 @@ def sentence(error: BaseException, *, exercise: str = "", file: str = "", hint: 
             label, result = call
             room = max(LIMIT - len(body) - 20, 50)
             label = _shorter(label, max(room * 2 // 3, 40))
-            result = short(result, max(room - len(label), 20)) if len(result) > max(room - len(label), 20) else result
+            result = _clip(result, max(room - len(label), 20))
             joint = ":" if re.match(r"(at |got )", body) else ";"
             body = f"{label} returned {result}{joint} {body}"
     else:
@@ -201,7 +209,7 @@ def sentence(error: BaseException, *, exercise: str = "", file: str = "", hint: 
         call = last_call()
         if call is not None and call[0].split("(")[0] not in body and type(error).__name__ != "ExerciseTimeout":
             label = _shorter(call[0], 80)  # the student's answer, then what the engine made of it
-            body = f"{label} returned {short(call[1], 60)}; then {body}"
+            body = f"{label} returned {_clip(call[1], 60)}; then {body}"
     body = re.sub(r"\b(?:[a-z_]+\.)+([A-Z]\w*(?:Error|Timeout|Exception|Warning))\b", r"\1", body)
     body = body.removeprefix("Failed: ")
     body = body.replace(f"{_ROOT}/", "")  # paths as the student sees them, from the checkout
@@ -240,7 +248,8 @@ def exercise_file(step: str, exercise: str, backend: str = "") -> str:
 # A bare ``assert np.allclose(got, expected)`` or ``assert got == expected``: its values, found again
 # ---------------------------------------------------------------------------------------------------
 
-_COMPARISONS = ("allclose", "array_equal", "isclose", "array_almost_equal", "assert_allclose")
+_COMPARISONS = ("allclose", "array_equal", "isclose", "assert_array_almost_equal", "assert_allclose",
+                "assert_array_equal")
 
 
 def _difference(got: Any, expected: Any, atol: float, rtol: float) -> str | None:
@@ -293,7 +302,12 @@ def values_sentence(statement: str, global_names: dict[str, Any], local_names: d
         tree = ast.parse(statement.strip())
     except SyntaxError:
         return None
-    if not tree.body or not isinstance(tree.body[0], ast.Assert):
+    if not tree.body:
+        return None
+    checked = tree.body[0]
+    if isinstance(checked, ast.Expr) and isinstance(checked.value, ast.Call):  # np.testing.assert_allclose(...)
+        checked = ast.Assert(test=checked.value)
+    if not isinstance(checked, ast.Assert):
         return None
     scope = (global_names, dict(local_names))
 
@@ -316,13 +330,16 @@ def values_sentence(statement: str, global_names: dict[str, Any], local_names: d
         found = eval(compile(ast.Expression(node), "<assert>", "eval"), scope[0], names)  # noqa: S307 - the test's
         return found
 
-    for node in ast.walk(tree.body[0].test):
+    for node in ast.walk(checked.test):
         try:
             if isinstance(node, ast.Call) and len(node.args) >= 2 and getattr(
                     node.func, "attr", getattr(node.func, "id", "")) in _COMPARISONS:
-                exact = getattr(node.func, "attr", getattr(node.func, "id", "")) == "array_equal"
-                atol = 0.0 if exact else _keyword(node, "atol", 1e-8, scope)
-                rtol = 0.0 if exact else _keyword(node, "rtol", 1e-5, scope)
+                name = getattr(node.func, "attr", getattr(node.func, "id", ""))
+                exact = name in ("array_equal", "assert_array_equal")
+                atol = 0.0 if exact else _keyword(node, "atol", 0.0 if name == "assert_allclose" else 1e-8, scope)
+                rtol = 0.0 if exact else _keyword(node, "rtol", 1e-7 if name == "assert_allclose" else 1e-5, scope)
+                if name == "assert_array_almost_equal":
+                    atol, rtol = 1.5 * 10.0 ** -_keyword(node, "decimal", 6, scope), 0.0
                 text = _difference(value(node.args[0]), value(node.args[1]), atol, rtol)
             elif isinstance(node, ast.Compare) and len(node.ops) == 1 and isinstance(node.ops[0], ast.Eq):
                 left, right = value(node.left), value(node.comparators[0])

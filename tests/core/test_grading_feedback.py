@@ -1,7 +1,7 @@
 """Feedback that teaches: every failed graded test shows the student one sentence, the same everywhere.
 
-One graded run of every step's untouched stubs (``pytest --student -n 2``, as a student or a platform runs it)
-and one of a plausible wrong answer per step (a solution copy with one bug, graded through ``GANDALF_IMPL`` in the
+One graded run of every step's untouched stubs (``python -m gandalf_tools.grading --jobs 2``, as a student or a
+platform runs it) and one of a plausible wrong answer per step (``pytest --student -n 2``) (a solution copy with one bug, graded through ``GANDALF_IMPL`` in the
 sandbox like a submission). Each failed graded test's message must be one line of at most
 :data:`~gandalf_tools.grading.feedback.LIMIT` characters naming its function or file; a stub's says it is a stub and
 where; a wrong answer's holds the call with its input, the expected value and what came back. The terminal shows
@@ -40,12 +40,10 @@ WRONG = {
 SHADER_BUG = ("step07_advanced", "blur_kernel", "not-normalised")  # one of the course's shader mutants
 
 
-def _grade(args: list[str], folder: Path, env: dict[str, str] | None = None) -> dict[str, Any]:
-    out = folder / "grade.json"
-    command = [sys.executable, "-m", "pytest", "--student", "-p", "no:cacheprovider", "-q", "-m", "exercise",
-               "--grade-json", str(out), "--gradescope", str(folder / "results.json"), *args]
-    run = subprocess.run(command, cwd=ROOT, capture_output=True, text=True, timeout=600,
+def _grade(command: list[str], folder: Path, env: dict[str, str] | None = None) -> dict[str, Any]:
+    run = subprocess.run([sys.executable, *command], cwd=ROOT, capture_output=True, text=True, timeout=600,
                          env={**os.environ, **(env or {})})
+    out = folder / "grade.json"
     assert out.is_file(), f"no grade written (exit {run.returncode}):\n{run.stdout[-3000:]}\n{run.stderr[-3000:]}"
     grade = json.loads(out.read_text())
     grade["stdout"], grade["folder"] = run.stdout + run.stderr, folder
@@ -54,8 +52,10 @@ def _grade(args: list[str], folder: Path, env: dict[str, str] | None = None) -> 
 
 @pytest.fixture(scope="module")
 def stubs(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Any]:
-    """Every step's untouched stubs, graded once with two xdist workers."""
-    return _grade(["-n", "2", *[f"tests/{step}" for step in STEPS]], tmp_path_factory.mktemp("stubs"))
+    """Every step's untouched stubs, graded once by the student's command (the front end, two xdist workers)."""
+    folder = tmp_path_factory.mktemp("stubs")
+    return _grade(["-m", "gandalf_tools.grading", "--jobs", "2", "--json", str(folder / "grade.json"),
+                   "--gradescope", str(folder / "results.json"), *[f"tests/{step}" for step in STEPS]], folder)
 
 
 @pytest.fixture(scope="module")
@@ -73,7 +73,9 @@ def wrong(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Any]:
     only += ["--grade-only", exercise]
     steps = [*WRONG, step]
     overlay = {"GANDALF_IMPL": os.pathsep.join(overlays)}
-    return _grade(["-n", "2", *only, *[f"tests/{s}" for s in steps]], folder, overlay)
+    command = ["-m", "pytest", "--student", "-n", "2", "-p", "no:cacheprovider", "-q", "-m", "exercise",
+               "--grade-json", str(folder / "grade.json"), *only, *[f"tests/{s}" for s in steps]]
+    return _grade(command, folder, overlay)
 
 
 def _failed(grade: dict[str, Any]) -> list[dict[str, Any]]:
