@@ -1,12 +1,12 @@
 """Feedback that teaches: every failed graded test shows the student one sentence, the same everywhere.
 
 One graded run of every step's untouched stubs (``python -m gandalf_tools.grading --jobs 2``, as a student or a
-platform runs it) and one of a plausible wrong answer per step (``pytest --student -n 2``) (a solution copy with one bug, graded through ``GANDALF_IMPL`` in the
-sandbox like a submission). Each failed graded test's message must be one line of at most
-:data:`~gandalf_tools.grading.feedback.LIMIT` characters naming its function or file; a stub's says it is a stub and
-where; a wrong answer's holds the call with its input, the expected value and what came back. The terminal shows
-exactly those lines (no worker lines, no tracebacks), Gradescope's ``results.json`` the same words, and the full
-tracebacks go to the log file beside the grade.
+platform runs it) and one of a plausible wrong answer per step (``pytest --student -n 2``: a solution copy with one
+bug, graded through ``GANDALF_IMPL`` in the sandbox like a submission). Each failed graded test's message must be one
+line of at most :data:`~gandalf_tools.grading.feedback.LIMIT` characters naming its function or file; a stub's says
+it is a stub and where; a wrong answer's holds the call with its input, the expected value and what came back. The
+terminal shows exactly those lines (no worker lines, no tracebacks), Gradescope's ``results.json`` the same words, and
+the full tracebacks go to the log file beside the grade.
 """
 
 from __future__ import annotations
