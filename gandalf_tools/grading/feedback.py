@@ -167,10 +167,14 @@ def _assert_sentence(text: str) -> str:
     return f"{own}: {parsed}" if own else parsed
 
 
+#: The grader's own exceptions whose message is already a sentence (pytest's Failed, the budget, the sandbox's).
+_SENTENCES = ("Failed", "XFailed", "ExerciseTimeout", "StudentError")
+
+
 def _first_line(error: BaseException) -> str:
     text = str(error).strip()
     name = type(error).__name__
-    if type(error).__module__ not in ("builtins",) and name in ("Failed", "XFailed"):
+    if name in _SENTENCES and type(error).__module__ not in ("builtins",):  # already a sentence for the student
         return _one_line(text)
     lines = [line.strip() for line in text.splitlines() if line.strip()]
     first = lines[0] if lines else ""
