@@ -54,9 +54,9 @@ def difference_sentence(image: np.ndarray, expected: np.ndarray, mask: np.ndarra
     want = np.broadcast_to(np.asarray(expected, dtype=np.float64), got.shape)
     diff = np.where(mask[..., None], np.abs(got - want), -1.0).max(axis=-1)
     row, col = np.unravel_index(int(np.argmax(diff)), diff.shape)
-    return (f"the picture differs from its reference: mean error {mean:.2f} (allowed {mean_limit:g}), 99th percentile "
-            f"{p99:.1f} (allowed {p99_limit:g}) 8-bit steps; worst pixel (x {col}, y {row}) got "
-            f"{got[row, col].astype(int).tolist()}, expected {np.round(want[row, col]).astype(int).tolist()}")
+    return (f"worst pixel (x {col}, y {row}) got {got[row, col].astype(int).tolist()}, expected "
+            f"{np.round(want[row, col]).astype(int).tolist()}; mean error {mean:.2f} (allowed {mean_limit:g}), 99th "
+            f"percentile {p99:.1f} (allowed {p99_limit:g}) 8-bit steps")
 
 
 def assert_near_reference(image: np.ndarray, expected: np.ndarray, mask: np.ndarray) -> None:

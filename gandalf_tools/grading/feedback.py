@@ -167,6 +167,7 @@ def _assert_sentence(text: str) -> str:
     return f"{own}: {parsed}" if own else parsed
 
 
+_UNUSED_BINDINGS = re.compile(r"number of bindings in bind group|\d+ buffer\(s\) given: \d+ binding", re.I)
 #: The grader's own exceptions whose message is already a sentence (pytest's Failed, the budget, the sandbox's).
 _SENTENCES = ("Failed", "XFailed", "ExerciseTimeout", "StudentError")
 
@@ -215,6 +216,10 @@ def sentence(error: BaseException, *, exercise: str = "", file: str = "", hint: 
             label = _shorter(call[0], 80)  # the student's answer, then what the engine made of it
             body = f"{label} returned {_clip(call[1], 60)}; then {body}"
     body = re.sub(r"\b(?:[a-z_]+\.)+([A-Z]\w*(?:Error|Timeout|Exception|Warning))\b", r"\1", body)
+    if file.endswith((".glsl", ".wgsl")) and _UNUSED_BINDINGS.search(body):
+        # The shader compiler drops the inputs a function does not read yet: the engine's bindings no longer match.
+        body = (f"{exercise} in {file} is probably still a stub: its shader leaves inputs unused, so the engine's "
+                f"bindings do not match ({_clip(body, 110)})")
     body = body.removeprefix("Failed: ")
     body = body.replace(f"{_ROOT}/", "")  # paths as the student sees them, from the checkout
     body = re.sub(r"\bnp\.(?:float|int|uint|bool_)\d*\(([^()]*)\)", r"\1", body)  # np.float64(1.5) -> 1.5

@@ -379,8 +379,9 @@ def _to_student_view(config: pytest.Config, report: pytest.TestReport, message: 
     """Keep the full report for the log; show the student one line (no worker line, no traceback)."""
     trace = next((v for k, v in report.user_properties if k == _TRACE), None) or report.longreprtext
     _log.append(f"=== {report.nodeid} ({report.when})\n{message}\n\n{trace}\n")
-    short = report.nodeid.split("::", 1)[-1]
-    report.longrepr = _Sentence(short, message, str(config.getoption("tbstyle", "auto")))  # type: ignore[assignment]
+    short, style = report.nodeid.split("::", 1)[-1], str(config.getoption("tbstyle", "auto"))
+    if style in ("line", "auto", "no"):  # the student's view; an explicit --tb=long/short/native keeps the traceback
+        report.longrepr = _Sentence(short, message, style)  # type: ignore[assignment]
     report.sections = [(name, text) for name, text in report.sections if "teardown" not in name]
     if hasattr(report, "node"):
         del report.node  # xdist's "[gw0] linux -- Python ..." line

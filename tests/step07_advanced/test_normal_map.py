@@ -102,6 +102,6 @@ def test_flat_normal_map_gives_the_surface_normal(impl, backend):
     # (128, 128, 255) decodes to (0.004, 0.004, 1): colour (0.5, 0.5, 1) -> sRGB (188, 188, 255) within 1 step.
     mask = inner(covered)
     error = np.abs(image[mask][:, :3].astype(int) - [188, 188, 255]).max()
-    assert error <= 1, ("a flat normal map (every texel (128, 128, 255)) must shade like the surface normal: "
+    assert error <= 1, ("flat normal map (texels 128, 128, 255): "
                         + difference_sentence(image, [188.0, 188.0, 255.0], mask, float(error), float(error), 1, 1)
-                        + ". Hint: decode the texel (2 c - 1) and carry it through the TBN matrix")
+                        + ". Hint: decode 2 c - 1, then the TBN matrix")
