@@ -282,6 +282,8 @@ def _difference(got: Any, expected: Any, atol: float, rtol: float) -> str | None
     if a.ndim >= 2:  # show the whole row of the last axis: a colour, a vertex, a matrix row
         row = where[:-1]
         place, mine, theirs = f"at row {list(row) if len(row) > 1 else row[0]}", a[row], b[row]
+    elif a.ndim == 1 and a.size <= 4:  # a colour, a point: the whole of it
+        place, mine, theirs = "", tuple(a.tolist()), tuple(b.tolist())
     else:
         place, mine, theirs = (f"at index {where[0]}" if a.ndim else ""), a[where], b[where]
     tolerance = f"; tolerance {atol:g}" + (f" + {rtol:g}·|expected|" if rtol else "") if a.dtype.kind in "fc" else ""

@@ -123,6 +123,19 @@ def test_the_terminal_shows_the_same_one_line_per_failed_test(stubs: dict[str, A
         assert line in out.splitlines(), f"the terminal lacks the line {line!r}"
 
 
+def _page_examples() -> list[str]:
+    """The example lines of docs/grading.md's "One sentence per failed test"."""
+    page = (ROOT / "docs" / "grading.md").read_text()
+    part = page.split("**One sentence per failed test.**", 1)[1].split("**Scoring.**", 1)[0]
+    return re.findall(r"```text\n(.+?)\n```", part)
+
+
+def test_the_page_shows_lines_the_grader_prints(stubs: dict[str, Any], wrong: dict[str, Any]) -> None:
+    stub, bug = _page_examples()
+    assert stub in stubs["stdout"].splitlines()
+    assert bug in wrong["stdout"].splitlines(), "docs/grading.md's wrong-answer line is not what the grader prints"
+
+
 def test_gradescope_and_the_log_hold_the_same_words(stubs: dict[str, Any]) -> None:
     results = json.loads((stubs["folder"] / "results.json").read_text())
     outputs = {t["extra_data"]["nodeid"]: t["output"] for t in results["tests"]}
