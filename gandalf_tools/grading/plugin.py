@@ -588,7 +588,10 @@ def _log_path(config: pytest.Config) -> Path:
     for option in ("--grade-json", "--gradescope"):
         if config.getoption(option):
             return Path(config.getoption(option)).with_suffix(".tracebacks.log")
-    return Path(tempfile.gettempdir()) / "gandalf-grade.tracebacks.log"
+    # A fresh, unpredictable file (O_EXCL): a name fixed in the shared temporary folder could be a planted link.
+    fd, path = tempfile.mkstemp(prefix="gandalf-grade-", suffix=".tracebacks.log")
+    os.close(fd)
+    return Path(path)
 
 
 def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pytest.Config) -> None:

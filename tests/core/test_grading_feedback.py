@@ -171,3 +171,38 @@ def test_a_wrong_answer_says_input_expected_and_got(wrong: dict[str, Any]) -> No
             problems.append(f"{entry['test']}: {why}")
     assert not problems, f"{len(problems)} of {len(failed)} messages:\n" + "\n".join(problems[:40])
     assert "[gw" not in wrong["stdout"] and "Traceback" not in wrong["stdout"]
+
+
+# --- the shapes one by one (no grading run) -----------------------------------------------------------------------
+def test_a_stub_raised_in_process_names_its_function_and_file() -> None:
+    from step01_window.exercises import hue
+
+    with pytest.raises(NotImplementedError) as caught:
+        hue.hsv_to_rgb(0.0, 1.0, 1.0)
+    assert feedback.sentence(caught.value, exercise="hsv_to_rgb") == (
+        "hsv_to_rgb is still a stub: write it in step01_window/exercises/hue.py (its docstring says what it must do).")
+
+
+def test_numpy_and_pytest_reports_become_got_and_expected() -> None:
+    import numpy as np
+
+    feedback.reset_calls()
+    feedback.record_call("look_at((0, 0, 5), (0, 0, 0), (0, 1, 0))", np.eye(4) * 2)
+    with pytest.raises(AssertionError) as caught:
+        np.testing.assert_allclose(np.eye(4) * 2, np.eye(4), atol=1e-9)
+    text = feedback.sentence(caught.value, exercise="look_at", file="step04_camera/exercises/projection.py")
+    assert text.startswith("look_at((0, 0, 5), (0, 0, 0), (0, 1, 0)) returned [[2., 0.") and "\n" not in text
+    assert "got array([[2., 0., 0., 0.]" in text and "expected array([[1., 0., 0., 0.]" in text
+    # A bare assert: its comparison found again, the student's call replaced by the value it returned.
+    values = feedback.values_sentence("assert np.allclose(impl.look_at(eye, target, up), want, atol=1e-6)",
+                                      {"np": np}, {"want": np.eye(4), "eye": None, "target": None, "up": None})
+    assert values == ("at row 0: got [2., 0., 0., 0.], expected [1., 0., 0., 0.] (4 of 16 values differ; "
+                      "tolerance 1e-06 + 1e-05·|expected|)")
+    feedback.reset_calls()
+    assert feedback.values_sentence("assert np.allclose(impl.look_at(eye), want)", {"np": np}, {"want": 1}) is None
+
+
+def test_a_sentence_is_one_line_within_the_limit() -> None:
+    error = AssertionError("x" * 1000 + "\nassert False")
+    text = feedback.sentence(error, exercise="perspective", hint="the field of view is in degrees")
+    assert "\n" not in text and len(text) <= feedback.LIMIT and text.startswith("perspective: xxx")
