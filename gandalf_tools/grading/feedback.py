@@ -67,6 +67,8 @@ def short(value: Any, limit: int = _VALUE_LIMIT) -> str:
 
 def record_call(label: str, result: Any) -> None:
     """Remember that the student's code was called (``label``: ``name(args)``) and what it returned."""
+    if label.split("(", 1)[0].rsplit(".", 1)[-1].startswith("_"):
+        return  # a private helper of the student's package, called by the function the test called
     label = re.sub(r"<function (?:[\w.]+\.<locals>\.)?([\w.]+) at 0x[0-9a-f]+>", r"\1", label)  # a callback by name
     _calls.append((label, short(result, 60)))
     del _calls[:-4]
@@ -197,6 +199,8 @@ def sentence(error: BaseException, *, exercise: str = "", file: str = "", hint: 
         own = _one_line(text.split("\nassert ")[0]) if not text.startswith("assert ") else ""
         if numpy:  # numpy's report: only the test's own err_msg is the test's words
             own = numpy.split(": got ", 1)[0] if not numpy.startswith("got ") else ""
+        if values.startswith("expected `") and not re.search(r"expected (np\.)?False_? to hold", body):
+            values = ""  # pytest's own words show the values; the source adds nothing
         if values and "expected" not in own:
             body = f"{own}: {values}" if own else values
         elif own and " to hold" in body and "expected" in own:
@@ -367,4 +371,5 @@ def values_sentence(statement: str, global_names: dict[str, Any], local_names: d
             continue
         if text:
             return text
-    return None
+    source = " ".join(ast.unparse(checked.test).split())
+    return f"expected `{_clip(source, 120)}` to hold" if isinstance(checked.test, (ast.Call, ast.Compare)) else None

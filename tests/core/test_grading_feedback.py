@@ -199,7 +199,8 @@ def test_numpy_and_pytest_reports_become_got_and_expected() -> None:
     assert values == ("at row 0: got [2., 0., 0., 0.], expected [1., 0., 0., 0.] (4 of 16 values differ; "
                       "tolerance 1e-06 + 1e-05·|expected|)")
     feedback.reset_calls()
-    assert feedback.values_sentence("assert np.allclose(impl.look_at(eye), want)", {"np": np}, {"want": 1}) is None
+    assert feedback.values_sentence("assert np.allclose(impl.look_at(eye), want)", {"np": np}, {"want": 1}) == (
+        "expected `np.allclose(impl.look_at(eye), want)` to hold")  # never a second call of the student's code
 
 
 def test_a_sentence_is_one_line_within_the_limit() -> None:
