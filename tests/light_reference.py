@@ -46,7 +46,20 @@ def pixel_errors(image: np.ndarray, expected: np.ndarray, mask: np.ndarray) -> t
     return float(diff.mean()), float(np.percentile(diff, 99))
 
 
+def difference_sentence(image: np.ndarray, expected: np.ndarray, mask: np.ndarray, mean: float, p99: float,
+                        mean_limit: float = MEAN_TOLERANCE, p99_limit: float = P99_TOLERANCE) -> str:
+    """Where a rendered picture and its reference differ, in words: the errors against their bounds and the pixel
+    that differs most (got against expected)."""
+    got = image[..., :3].astype(np.float64)
+    want = np.broadcast_to(np.asarray(expected, dtype=np.float64), got.shape)
+    diff = np.where(mask[..., None], np.abs(got - want), -1.0).max(axis=-1)
+    row, col = np.unravel_index(int(np.argmax(diff)), diff.shape)
+    return (f"worst pixel (x {col}, y {row}) got {got[row, col].astype(int).tolist()}, expected "
+            f"{np.round(want[row, col]).astype(int).tolist()}; mean error {mean:.2f} (allowed {mean_limit:g}), 99th "
+            f"percentile {p99:.1f} (allowed {p99_limit:g}) 8-bit steps")
+
+
 def assert_near_reference(image: np.ndarray, expected: np.ndarray, mask: np.ndarray) -> None:
     """``image`` within :data:`MEAN_TOLERANCE` and :data:`P99_TOLERANCE` of ``expected`` over ``mask``."""
     mean, p99 = pixel_errors(image, expected, mask)
-    assert mean <= MEAN_TOLERANCE and p99 <= P99_TOLERANCE, f"mean error {mean:.2f}, 99th percentile {p99:.1f}"
+    assert mean <= MEAN_TOLERANCE and p99 <= P99_TOLERANCE, difference_sentence(image, expected, mask, mean, p99)

@@ -44,11 +44,13 @@ from typing import Any
 
 import pytest
 
-from . import remote, sandbox, watchdog
+from . import feedback, remote, sandbox, watchdog
 
 IMPL_ENV = "GANDALF_IMPL"
 _PROPERTY = "gandalf_grade"
 _NOT_HERE = "gandalf_not_here"  # set by tests/conftest.py on a test this machine cannot run (a missing capability)
+_FEEDBACK = "gandalf_feedback"  # a failed graded test's sentence for the student (built where the exception is)
+_TRACE = "gandalf_trace"  # its full traceback, for the grade's log file
 _MESSAGE_LIMIT = 4000
 
 # nodeid -> {"step", "exercise", "points"} for every graded test collected in this run.
@@ -58,6 +60,9 @@ _outcomes: dict[str, dict[str, Any]] = {}
 _overlays: dict[str, ModuleType] = {}
 # step package -> (its sandbox, the stand-in of the student's package) for this run.
 _sandboxes: dict[str, tuple[Any, ModuleType]] = {}
+# The full report of each failed graded test in the student's view (written to the grade's log file).
+_log: list[str] = []
+_config: list[pytest.Config] = []  # this run's config (the report hooks are not given it)
 # Test modules that failed to import (a course bug: their graded tests are missing from the grade), nodeid -> message.
 _collection_errors: dict[str, str] = {}
 
@@ -81,6 +86,12 @@ def pytest_addoption(parser: pytest.Parser) -> None:
         metavar="SECONDS",
         help=f"with --student: seconds one call of the student's function may take; a function that runs past it "
         f"fails that test and every later call at once, saying so (default {watchdog.DEFAULT_BUDGET:g}; 0: none)",
+    )
+    group.addoption(
+        "--grade-log",
+        metavar="PATH",
+        help="with --student: write the full traceback of each failed graded test to PATH (default: beside "
+        "--grade-json or --gradescope, else in the temporary folder); the student's view holds one line per test",
     )
     group.addoption(
         "--grade-in-process",
@@ -224,6 +235,10 @@ def pytest_configure(config: pytest.Config) -> None:
     _graded.clear()
     _outcomes.clear()
     _collection_errors.clear()
+    _log.clear()
+    _config[:] = [config]
+    if _student_view(config) and getattr(config.option, "tbstyle", None) == "auto":
+        config.option.tbstyle = "line"  # the student's view: one line per failed test (--tb=long shows more)
     watchdog.reset()
     config._gandalf_collect_dir = None  # type: ignore[attr-defined]
     if not _is_worker(config) and config.pluginmanager.hasplugin("xdist"):
@@ -280,11 +295,96 @@ def pytest_collection_finish(session: pytest.Session) -> None:
 
 @pytest.hookimpl(hookwrapper=True)
 def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo[Any]) -> Any:
+    if call.when == "setup":
+        feedback.reset_calls()
     outcome = yield
     report = outcome.get_result()
     info = _exercise_of(item)
     if info is not None:
         report.user_properties.append((_PROPERTY, info))
+        if report.failed and call.excinfo is not None:
+            report.user_properties.append((_FEEDBACK, _sentence(item, info, call.excinfo)))
+            if _student_view(item.config):  # the whole traceback, for the log file (the student sees one line)
+                try:  # pytest's own report of the failure, its frames pruned as for --tb=short
+                    trace = str(item._repr_failure_py(call.excinfo, style="short"))  # type: ignore[attr-defined]
+                except Exception:  # noqa: BLE001 - an older pytest: the whole chain
+                    trace = str(call.excinfo.getrepr(style="short", chain=True))
+                report.user_properties.append((_TRACE, trace[-20000:]))
+
+
+def _sentence(item: pytest.Item, info: dict[str, Any], excinfo: pytest.ExceptionInfo[BaseException]) -> str:
+    """The student's one line for a failed graded test (:mod:`.feedback`), naming the exercise's file."""
+    marker = item.get_closest_marker("exercise")
+    hint = str(marker.kwargs.get("hint", "")) if marker is not None else ""
+    params = getattr(getattr(item, "callspec", None), "params", {})
+    backend = str(params.get("backend", "")) if isinstance(params.get("backend", ""), str) else ""
+    step = Path(str(item.path)).parent.name
+    name, error = str(info["exercise"]), excinfo.value
+    try:
+        file = feedback.exercise_file(step, name, backend)
+        return feedback.sentence(error, exercise=name, file=file, hint=hint, values=_assert_values(item, excinfo))
+    except Exception as exc:  # noqa: BLE001 - the feedback must never hide the failure itself
+        return feedback.cap(f"{name}: {type(error).__name__}: {error} (feedback failed: {exc!r})")
+
+
+def _config_of(report: pytest.TestReport) -> pytest.Config:
+    return _config[0]
+
+
+def _assert_values(item: pytest.Item, excinfo: pytest.ExceptionInfo[BaseException]) -> str:
+    """For a bare ``assert`` in a test file: where its got and expected differ (:func:`.feedback.values_sentence`)."""
+    if not isinstance(excinfo.value, AssertionError):
+        return ""
+    tests = Path(str(item.path)).parent.parent
+    for entry in reversed(excinfo.traceback):
+        if Path(str(entry.path)).is_relative_to(tests):
+            try:
+                statement = str(entry.statement)
+            except Exception:  # noqa: BLE001 - no source: no values
+                return ""
+            return feedback.values_sentence(statement, entry.frame.f_globals, entry.frame.f_locals) or ""
+    return ""
+
+
+def _student_view(config: pytest.Config) -> bool:
+    """Whether this run grades a student's code (one line per failed graded test instead of tracebacks)."""
+    return bool(config.getoption("--student") or os.environ.get(IMPL_ENV))
+
+
+class _Crash:
+    """A failed test's one line where pytest looks for the crash (``-rf`` summary, ``--tb=line``, JUnit XML)."""
+
+    def __init__(self, test: str, message: str) -> None:
+        self.test, self.message = test, message
+
+    def __str__(self) -> str:
+        return f"{self.test}: {self.message}"
+
+
+class _Sentence:
+    """A report's ``longrepr`` in the student's view: the one line, and nothing of the traceback."""
+
+    def __init__(self, test: str, message: str, style: str) -> None:
+        self.reprcrash, self.message, self.style = _Crash(test, message), message, style
+
+    def toterminal(self, out: Any) -> None:
+        if self.style != "line":  # --tb=line prints the crash line itself
+            out.line(self.message, red=True)
+
+    def __str__(self) -> str:
+        return self.message
+
+
+def _to_student_view(config: pytest.Config, report: pytest.TestReport, message: str) -> None:
+    """Keep the full report for the log; show the student one line (no worker line, no traceback)."""
+    trace = next((v for k, v in report.user_properties if k == _TRACE), None) or report.longreprtext
+    _log.append(f"=== {report.nodeid} ({report.when})\n{message}\n\n{trace}\n")
+    short, style = report.nodeid.split("::", 1)[-1], str(config.getoption("tbstyle", "auto"))
+    if style in ("line", "auto", "no"):  # the student's view; an explicit --tb=long/short/native keeps the traceback
+        report.longrepr = _Sentence(short, message, style)  # type: ignore[assignment]
+    report.sections = [(name, text) for name, text in report.sections if "teardown" not in name]
+    if hasattr(report, "node"):
+        del report.node  # xdist's "[gw0] linux -- Python ..." line
 
 
 def _message(report: pytest.TestReport) -> str:
@@ -329,7 +429,12 @@ def pytest_runtest_logreport(report: pytest.TestReport) -> None:
                 prefix = "skipped: "
             elif report.when not in ("setup", "call", "teardown"):
                 prefix = "the test process crashed (os._exit, a segfault or a hard timeout): "
-            entry["message"] = prefix + _message(report)
+            sentence = next((v for k, v in report.user_properties if k == _FEEDBACK), None)
+            entry["message"] = (prefix + sentence) if sentence and not report.skipped else prefix + _message(report)
+    if report.failed and _config and _student_view(_config_of(report)):
+        text = feedback.cap(entry["message"] or "failed") if entry["message"] else "failed"
+        entry["message"] = text
+        _to_student_view(_config_of(report), report, text)
 
 
 @pytest.hookimpl(optionalhook=True)
@@ -475,6 +580,20 @@ def pytest_sessionstart(session: pytest.Session) -> None:
     session.config._gandalf_start = time.perf_counter()  # type: ignore[attr-defined]
 
 
+def _log_path(config: pytest.Config) -> Path:
+    """Where the full tracebacks go: ``--grade-log``, else beside the grade file, else the temporary folder."""
+    chosen = config.getoption("--grade-log")
+    if chosen:
+        return Path(chosen)
+    for option in ("--grade-json", "--gradescope"):
+        if config.getoption(option):
+            return Path(config.getoption(option)).with_suffix(".tracebacks.log")
+    # A fresh, unpredictable file (O_EXCL): a name fixed in the shared temporary folder could be a planted link.
+    fd, path = tempfile.mkstemp(prefix="gandalf-grade-", suffix=".tracebacks.log")
+    os.close(fd)
+    return Path(path)
+
+
 def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pytest.Config) -> None:
     if _is_worker(config) or config.getoption("collectonly"):
         return
@@ -500,6 +619,11 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
             tr.write_line(f"NOT GRADED HERE: {nodeid}: {entry['not_here']}")
     for nodeid, message in result["collection_errors"].items():
         tr.write_line(f"NOT GRADED: {nodeid} failed to import, its tests are missing from the total ({message})")
+    if _log:
+        log = _log_path(config)
+        log.parent.mkdir(parents=True, exist_ok=True)
+        log.write_text("\n".join(_log))
+        tr.write_line(f"full tracebacks of the failed tests: {log}")
     path = config.getoption("--grade-json")
     if path:
         Path(path).write_text(json.dumps({"mode": which, **result}, indent=2))

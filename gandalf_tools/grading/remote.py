@@ -27,7 +27,7 @@ from typing import Any
 
 import numpy as np
 
-from . import wire
+from . import feedback, wire
 from .sandbox import ALLOWED_MODULE, Sandbox, SandboxFailure
 from .watchdog import ExerciseTimeout, describe_call
 
@@ -73,6 +73,7 @@ def _raise(error: dict[str, Any], label: str) -> None:
                 exc = cls(message)
             except Exception:  # noqa: BLE001 - an exception type with another signature
                 continue
+            exc.gandalf_where = str(error.get("where") or "")  # type: ignore[attr-defined]  # the stub's file
             raise exc
     if "FieldError" == error.get("name"):
         from gandalf_core.components.fields import FieldError
@@ -112,8 +113,10 @@ class RemoteFunction:
         self.__name__ = self.__qualname__ = target.rsplit(".", 1)[-1]
 
     def __call__(self, *args: Any, **kwargs: Any) -> Any:
-        return self.session.call({"op": "call", "target": self.target, "args": list(args), "kwargs": kwargs},
-                                 lambda: describe_call(self.__name__, args, kwargs), self.target)
+        result = self.session.call({"op": "call", "target": self.target, "args": list(args), "kwargs": kwargs},
+                                   lambda: describe_call(self.__name__, args, kwargs), self.target)
+        feedback.record_call(describe_call(self.__name__, args, kwargs), result)  # for a failed check's sentence
+        return result
 
     def __repr__(self) -> str:
         return f"<the student's {self.target} (sandboxed)>"

@@ -25,6 +25,8 @@ from collections.abc import Callable
 from types import ModuleType
 from typing import Any
 
+from . import feedback
+
 #: Seconds a student's function may run in one call (``--grade-call-budget``): far above what any exercise's
 #: reference needs (the slowest takes well under 0.5 s a call on a 2-core machine).
 DEFAULT_BUDGET = 5.0
@@ -117,12 +119,13 @@ def _wrap(fn: Callable[..., Any], name: str, budget: float) -> Callable[..., Any
         depth = getattr(_depth, "value", 0)
         if depth:  # only the outermost student call runs the clock
             return fn(*args, **kwargs)
-        message = f"{_describe(name, args, kwargs)} did not return within {budget:g} s (a loop that never ends?)"
+        label = _describe(name, args, kwargs)
+        message = f"{label} did not return within {budget:g} s (a loop that never ends?)"
         _depth.value = 1
         _watcher.arm(budget)
         try:
             try:
-                return fn(*args, **kwargs)
+                result = fn(*args, **kwargs)
             finally:
                 _watcher.disarm()  # first: no interrupt may land after the call has ended
         except ExerciseTimeout:
@@ -130,6 +133,8 @@ def _wrap(fn: Callable[..., Any], name: str, budget: float) -> Callable[..., Any
             raise ExerciseTimeout(message) from None
         finally:
             _depth.value = 0
+        feedback.record_call(label, result)  # for a failed check's sentence: what was called, what came back
+        return result
 
     setattr(guarded, _GUARDED, True)
     return guarded

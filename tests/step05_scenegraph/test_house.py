@@ -240,8 +240,12 @@ def test_house_turns_at_its_speed(impl):
     scene.add_system(impl.HouseRotationSystem())
     for _ in range(10):
         scene.update(0.1)  # no app: the system must still turn (no input to read)
-    assert _angle_about_y(scene.get_component(fast, TransformComponent).quaternion, 90.0)
-    assert _angle_about_y(scene.get_component(slow, TransformComponent).quaternion, -20.0)
+    for entity, speed, degrees in ((fast, 90.0, 90.0), (slow, -30.0, -20.0)):
+        q = scene.get_component(entity, TransformComponent).quaternion
+        want = quat_from_axis_angle((0.0, 1.0, 0.0), math.radians(degrees))
+        assert _angle_about_y(q, degrees), (
+            f"HouseRotationSystem, speed {speed:g}°/s, after 10 updates of 0.1 s: got the quaternion "
+            f"{np.round(q, 4).tolist()}, expected {np.round(want, 4).tolist()} ({degrees:g}° about +y, or -q)")
     angle = scene.get_component(fast, HouseRotationComponent).angle
     assert 0.0 <= angle < 360.0 and angle == pytest.approx(90.0, abs=1e-9)
 

@@ -75,8 +75,11 @@ def test_semi_implicit_euler_one_step(impl):
 def test_semi_implicit_euler_keeps_energy_bounded(impl):
     # omega*dt = 0.05: the energy of the symplectic method oscillates within about omega*dt/2 and never drifts.
     energy = _energy_over(impl.semi_implicit_euler_step)
-    assert np.all(np.abs(energy - 1.0) < 0.05), f"energy ranged {energy.min():.4f} .. {energy.max():.4f}"
-    assert abs(energy[-1000:].mean() - energy[:1000].mean()) < 1e-3, "energy must not drift"
+    assert np.all(np.abs(energy - 1.0) < 0.05), (
+        f"over 10,000 steps of dt 0.05 from x = 1, v = 0 the energy ranged {energy.min():.4g} .. {energy.max():.4g}; "
+        "expected it to stay within 1 ± 0.05. Hint: update v with the acceleration first, then x with the NEW v")
+    drift = abs(energy[-1000:].mean() - energy[:1000].mean())
+    assert drift < 1e-3, f"the mean energy drifted by {drift:.3g} over 10,000 steps; expected less than 1e-3"
 
 
 @pytest.mark.exercise("semi_implicit_euler_step")

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from light_reference import pixel_errors
+from light_reference import difference_sentence, pixel_errors
 from step07_helpers import inner, render, sample_bilinear, to_srgb8
 
 from gandalf_core import Scene, TransformComponent
@@ -91,7 +91,7 @@ def test_normal_mapped_quad_matches_the_numpy_reference(impl, backend, mirrored,
     expected, covered = reference_quad(mesh, texture, angle)
     image = render(backend, impl, quad_scene(mesh, texture, angle), size=SIZE)
     mean, p99 = pixel_errors(image, expected, inner(covered))
-    assert mean <= 1.0 and p99 <= 3.0, f"mean error {mean:.2f}, 99th percentile {p99:.1f}"
+    assert mean <= 1.0 and p99 <= 3.0, difference_sentence(image, expected, inner(covered), mean, p99, 1.0, 3.0)
 
 
 @pytest.mark.exercise("normal_map")
@@ -100,4 +100,8 @@ def test_flat_normal_map_gives_the_surface_normal(impl, backend):
     image = render(backend, impl, quad_scene(quad(False), flat, 30.0), size=SIZE)
     _, covered = reference_quad(quad(False), flat, 30.0)
     # (128, 128, 255) decodes to (0.004, 0.004, 1): colour (0.5, 0.5, 1) -> sRGB (188, 188, 255) within 1 step.
-    assert np.abs(image[inner(covered)][:, :3].astype(int) - [188, 188, 255]).max() <= 1
+    mask = inner(covered)
+    error = np.abs(image[mask][:, :3].astype(int) - [188, 188, 255]).max()
+    assert error <= 1, ("flat normal map (texels 128, 128, 255): "
+                        + difference_sentence(image, [188.0, 188.0, 255.0], mask, float(error), float(error), 1, 1)
+                        + ". Hint: decode 2 c - 1, then the TBN matrix")

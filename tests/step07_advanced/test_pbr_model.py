@@ -20,7 +20,7 @@ import importlib
 
 import numpy as np
 import pytest
-from light_reference import pixel_errors
+from light_reference import difference_sentence, pixel_errors
 from step07_helpers import EYE, FOV, brdf_lut_texture, inner, to_srgb8, with_reference_files
 
 from gandalf_core import Application, Scene, TransformComponent
@@ -139,9 +139,8 @@ def test_image_based_light_matches_the_split_sum(impl, backend, metallic, roughn
     expected, hit = reference_ibl_sphere(color, metallic, roughness)
     mean, p99 = pixel_errors(image, expected, inner(hit))
     assert mean <= 1.0 and p99 <= 3.0, (
-        f"metallic {metallic}, roughness {roughness}: mean error {mean:.2f}, 99th percentile {p99:.1f} (8-bit steps; "
-        "allowed 1.0 and 3). Hint: F0 = mix(0.04, base, metallic); diffuse = base (1 - metallic)(1 - F) with "
-        "F = fresnel_schlick_roughness(n·v, F0, roughness)")
+        f"metallic {metallic}, roughness {roughness}: {difference_sentence(image, expected, inner(hit), mean, p99)}. "
+        "Hint: F0 = mix(0.04, base, metallic); diffuse = base (1 - metallic)(1 - F), F = fresnel_schlick_roughness")
 
 
 # --- engine: explicit cube-map levels (their rendering: test_pbr_model_reference.py) --------------------

@@ -1,0 +1,375 @@
+"""The student's view of a failed graded test: one sentence, in words.
+
+Each failed graded test gets one line (the same in the terminal, the grade JSON, Gradescope's ``results.json``
+and the batch report), built here from the test's exception:
+
+* an untouched stub (``NotImplementedError("exercise: X")``, from the sandbox or in process) says which function
+  is still a stub and in which file: ``hsv_to_rgb is still a stub: write it in step01_window/exercises/hue.py``;
+* a wrong answer says what was called with which input, what came back and what was expected: the last call of
+  the student's code in the test (:func:`record_call`), then the test's own message, or a numpy comparison's
+  ``x``/``y`` arrays, or pytest's ``assert left == right``;
+* anything else keeps its first line, without module paths.
+
+A sentence that does not name the exercise's function or file is prefixed with it (``brdf (step07_advanced/
+exercises/brdf.glsl): ...``), and every sentence is capped at :data:`LIMIT` characters. The full traceback goes to
+the grade's log file, never to the student's view.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+from typing import Any
+
+#: The longest sentence the student sees for one failed test.
+LIMIT = 300
+_VALUE_LIMIT = 90
+_ROOT = Path(__file__).resolve().parents[2]
+
+# The calls of the student's code in the running test (this process): (label, what came back), newest last.
+_calls: list[tuple[str, str]] = []
+_last_result: list[Any] = []  # [function name, the value it returned] of the newest call
+
+
+def _shorter(label: str, limit: int) -> str:
+    return label if len(label) <= limit else label[: limit - 2] + "…)"
+
+
+def _clip(text: str, limit: int) -> str:
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
+def reset_calls() -> None:
+    """Forget the calls recorded so far (a new test starts)."""
+    _calls.clear()
+    _last_result.clear()
+
+
+def short(value: Any, limit: int = _VALUE_LIMIT) -> str:
+    """``repr(value)`` on one line, numbers rounded, cut to ``limit`` characters."""
+    try:
+        import numpy as np
+
+        if isinstance(value, np.ndarray):
+            with np.printoptions(precision=4, suppress=True, threshold=12, edgeitems=2):
+                text = np.array2string(value, separator=", ")
+        elif isinstance(value, (tuple, list)) and value and all(isinstance(v, float) for v in value):
+            text = "(" + ", ".join(f"{v:.4g}" for v in value) + (",)" if len(value) == 1 else ")")
+        elif isinstance(value, float):
+            text = f"{value:.6g}"
+        else:
+            text = repr(value)
+    except Exception:  # noqa: BLE001 - a value whose repr fails says so
+        text = f"<a {type(value).__name__}>"
+    text = " ".join(text.split())
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
+def record_call(label: str, result: Any) -> None:
+    """Remember that the student's code was called (``label``: ``name(args)``) and what it returned."""
+    if label.split("(", 1)[0].rsplit(".", 1)[-1].startswith("_"):
+        return  # a private helper of the student's package, called by the function the test called
+    label = re.sub(r"<function (?:[\w.]+\.<locals>\.)?([\w.]+) at 0x[0-9a-f]+>", r"\1", label)  # a callback by name
+    _calls.append((label, short(result, 60)))
+    del _calls[:-4]
+    _last_result[:] = [label.split("(", 1)[0], result]
+
+
+def last_call() -> tuple[str, str] | None:
+    return _calls[-1] if _calls else None
+
+
+def _one_line(text: str) -> str:
+    return " ".join(part.strip() for part in text.strip().splitlines() if part.strip())
+
+
+def cap(text: str, limit: int = LIMIT) -> str:
+    text = _one_line(text)
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
+def _shown_path(where: str) -> str:
+    """``…/step01_window/exercises/hue.py:21`` -> ``step01_window/exercises/hue.py``."""
+    path = where.rsplit(":", 1)[0] if re.search(r":\d+$", where) else where
+    parts = Path(path).parts
+    step = next((i for i in range(len(parts) - 1, -1, -1) if parts[i].startswith("step")), None)
+    return "/".join(parts[step:]) if step is not None else path
+
+
+def stub_sentence(error: BaseException) -> str | None:
+    """The sentence for an untouched stub's ``NotImplementedError`` (also behind a ``raise ... from``), or None."""
+    seen = 0
+    while error is not None and seen < 8:
+        if isinstance(error, NotImplementedError):
+            name = str(error).removeprefix("exercise:").strip()
+            where = getattr(error, "gandalf_where", "")
+            if not where:
+                import traceback
+
+                frames = [f for f in traceback.extract_tb(error.__traceback__) if "exercises" in Path(f.filename).parts]
+                where = frames[-1].filename if frames else ""
+                name = name or (frames[-1].name if frames else "")
+            if where or str(error).startswith("exercise:"):
+                shown = f"write it in {_shown_path(where)}" if where else "write it in the step's exercises/ folder"
+                return f"{name or 'this exercise'} is still a stub: {shown} (its docstring says what it must do)."
+        error, seen = error.__cause__ or error.__context__, seen + 1  # type: ignore[assignment]
+    return None
+
+
+_NUMPY = re.compile(r"^(Not equal to tolerance.*|Arrays are not .*|Items are not equal.*)$", re.M)
+
+
+def _numpy_sentence(text: str) -> str | None:
+    """numpy.testing's multi-line report -> ``gave X, expected Y (tolerance; N of M values differ by up to D)``."""
+    head = _NUMPY.search(text)
+    if head is None:
+        return None
+    x = re.search(r"^\s*(?:x|ACTUAL): (.*?)(?=^\s*(?:y|DESIRED): |\Z)", text, re.M | re.S)
+    y = re.search(r"^\s*(?:y|DESIRED): (.*)", text, re.M | re.S)
+    mismatch = re.search(r"Mismatched elements: (\d+) / (\d+)", text)
+    largest = re.search(r"Max absolute difference[^:]*: *(\S+)", text)
+    lines = [line.strip() for line in text[head.end():].splitlines()]
+    note = next((line for line in lines if line and not line.startswith(
+        ("Mismatch", "Max ", "x:", "y:", "ACTUAL", "DESIRED", "(shapes")) and line[:1] not in "[(-0123456789"), "")
+    got = _one_line(x.group(1)) if x else "?"
+    expected = _one_line(y.group(1)) if y else "?"
+    detail = head.group(1).replace("Not equal to tolerance ", "within ").replace("Arrays are not ", "")
+    extra = f"; {mismatch.group(1)} of {mismatch.group(2)} values differ" if mismatch else ""
+    extra += f" by up to {largest.group(1)}" if largest else ""
+    text = f"got {got[:_VALUE_LIMIT]}, expected {expected[:_VALUE_LIMIT]} ({detail}{extra})"
+    return f"{note}: {text}" if note else text
+
+
+_ASSERT = re.compile(r"^assert (.+?) (==|!=|<=|>=|<|>| is not | is | in | not in ) ?(.+)$")
+
+
+def _readable(text: str) -> str:
+    """pytest's reprs made short: ``approx((0.9 ± 1e-09, 0.27 ± 1e-09))`` -> ``(0.9, 0.27)``; long floats rounded."""
+    text = re.sub(r" ± [\d.e+-]+", "", text)
+    text = re.sub(r"\bapprox\((.*)\)", r"\1", text)
+    return re.sub(r"-?\d+\.\d{7,}(?:e[+-]?\d+)?", lambda m: f"{float(m.group()):.6g}", text)
+
+
+def _assert_sentence(text: str) -> str:
+    """pytest's ``assert <got> == <expected>`` introspection -> ``got …, expected …``, after the test's own message
+    (which alone is enough when it already says what was expected)."""
+    lines = text.strip().splitlines()
+    first = next((i for i, line in enumerate(lines) if line.startswith("assert ")), None)
+    own = _one_line("\n".join(lines[:first] if first is not None else lines))
+    if own and ("expected" in own or first is None):
+        return own
+    if first is None:
+        return "the check failed"
+    match = _ASSERT.match(_readable(lines[first]))
+    if match and match.group(2) == "==":
+        got, expected = match.group(1), match.group(3)
+        parsed = f"got {got[:_VALUE_LIMIT]}, expected {expected[:_VALUE_LIMIT]}"
+    else:
+        parsed = f"expected {_readable(lines[first]).removeprefix('assert ')[: 2 * _VALUE_LIMIT]} to hold"
+    return f"{own}: {parsed}" if own else parsed
+
+
+_UNUSED_BINDINGS = re.compile(r"number of bindings in bind group|\d+ buffer\(s\) given: \d+ binding", re.I)
+#: The grader's own exceptions whose message is already a sentence (pytest's Failed, the budget, the sandbox's).
+_SENTENCES = ("Failed", "XFailed", "ExerciseTimeout", "StudentError")
+
+
+def _first_line(error: BaseException) -> str:
+    text = str(error).strip()
+    name = type(error).__name__
+    if name in _SENTENCES and type(error).__module__ not in ("builtins",):  # already a sentence for the student
+        return _one_line(text)
+    lines = [line.strip() for line in text.splitlines() if line.strip()]
+    first = lines[0] if lines else ""
+    # A driver's error ("Validation Error / Caused by: / In ... / <what>") says what went wrong in its last line.
+    body = f"{first} {lines[-1]}" if len(lines) > 1 and "Caused by" in text else first
+    return f"{name}: {body}" if body else name
+
+
+def sentence(error: BaseException, *, exercise: str = "", file: str = "", hint: str = "", values: str = "") -> str:
+    """One line for the student: what failed, with input, expected and got where the test gives them (``values``:
+    :func:`values_sentence`'s words for a bare assert)."""
+    stub = stub_sentence(error)
+    if stub is not None:
+        return cap(stub)
+    if isinstance(error, AssertionError):
+        text = str(error)
+        numpy = _numpy_sentence(text)
+        body = numpy or _assert_sentence(text)
+        own = _one_line(text.split("\nassert ")[0]) if not text.startswith("assert ") else ""
+        if numpy:  # numpy's report: only the test's own err_msg is the test's words
+            own = numpy.split(": got ", 1)[0] if not numpy.startswith("got ") else ""
+        if values.startswith("expected `") and not re.search(r"expected (np\.)?False_? to hold", body):
+            values = ""  # pytest's own words show the values; the source adds nothing
+        if values and "expected" not in own:
+            body = f"{own}: {values}" if own else values
+        elif own and " to hold" in body and "expected" in own:
+            body = own
+        call = last_call()
+        if call is not None and call[0].split("(")[0] not in body:
+            label, result = call
+            room = max(LIMIT - len(body) - 20, 50)
+            label = _shorter(label, max(room * 2 // 3, 40))
+            result = _clip(result, max(room - len(label), 20))
+            joint = ":" if re.match(r"(at |got )", body) else ";"
+            body = f"{label} returned {result}{joint} {body}"
+    else:
+        body = _first_line(error)
+        call = last_call()
+        if call is not None and call[0].split("(")[0] not in body and type(error).__name__ != "ExerciseTimeout":
+            label = _shorter(call[0], 80)  # the student's answer, then what the engine made of it
+            body = f"{label} returned {_clip(call[1], 60)}; then {body}"
+    body = re.sub(r"\b(?:[a-z_]+\.)+([A-Z]\w*(?:Error|Timeout|Exception|Warning))\b", r"\1", body)
+    if file.endswith((".glsl", ".wgsl")) and _UNUSED_BINDINGS.search(body):
+        # The shader compiler drops the inputs a function does not read yet: the engine's bindings no longer match.
+        body = (f"{exercise} in {file} is probably still a stub: its shader leaves inputs unused, so the engine's "
+                f"bindings do not match ({_clip(body, 110)})")
+    body = body.removeprefix("Failed: ")
+    body = body.replace(f"{_ROOT}/", "")  # paths as the student sees them, from the checkout
+    body = re.sub(r"\bnp\.(?:float|int|uint|bool_)\d*\(([^()]*)\)", r"\1", body)  # np.float64(1.5) -> 1.5
+    named = [n for n in (exercise, Path(file).name if file else "") if n]
+    if named and not any(re.search(rf"(?<![\w/]){re.escape(n)}\b", body) for n in named):
+        body = f"{exercise}{f' ({file})' if file else ''}: {body}"
+    if hint and hint not in body:
+        body = f"{body} Hint: {hint}"
+    return cap(body)
+
+
+def exercise_file(step: str, exercise: str, backend: str = "") -> str:
+    """The exercise's file, as the student sees it (``step07_advanced/exercises/brdf.glsl``), or ``""``."""
+    folder = _ROOT / step / "exercises"
+    if not folder.is_dir() or not exercise:
+        return ""
+    word = re.compile(rf"\b{re.escape(exercise.split('.')[0])}\b")
+    found = []
+    for path in sorted(folder.iterdir()):
+        if path.suffix not in (".py", ".glsl", ".wgsl") or path.name == "__init__.py":
+            continue
+        if path.stem == exercise or word.search(path.read_text(errors="replace")):
+            found.append(path)
+    if not found:  # a name that joins words ("reflect_refract"): the files that hold each of them
+        parts = [part for part in exercise.split("_") if len(part) > 2]
+        found = [p for p in sorted(folder.iterdir()) if p.suffix in (".py", ".glsl", ".wgsl")
+                 and p.name != "__init__.py" and all(part in p.read_text(errors="replace") for part in parts)]
+    if backend:
+        wanted = {"opengl": ".glsl", "webgpu": ".wgsl"}.get(backend)
+        found = [p for p in found if p.suffix in (".py", wanted)] or found
+    return " / ".join(f"{step}/exercises/{p.name}" for p in found[:2])
+
+
+# ---------------------------------------------------------------------------------------------------
+# A bare ``assert np.allclose(got, expected)`` or ``assert got == expected``: its values, found again
+# ---------------------------------------------------------------------------------------------------
+
+_COMPARISONS = ("allclose", "array_equal", "isclose", "assert_array_almost_equal", "assert_allclose",
+                "assert_array_equal")
+
+
+def _difference(got: Any, expected: Any, atol: float, rtol: float) -> str | None:
+    """Where two arrays differ: the first differing element (or row), with the count and the tolerance."""
+    import numpy as np
+
+    try:
+        a, b = np.asarray(got), np.asarray(expected)
+        if a.dtype == object or b.dtype == object:
+            return None
+        a, b = np.broadcast_arrays(a, b)
+    except ValueError:
+        return f"got shape {np.shape(got)}, expected shape {np.shape(expected)}"
+    if a.dtype.kind in "fc" or b.dtype.kind in "fc":
+        bad = ~np.isclose(a.astype(np.float64), b.astype(np.float64), atol=atol, rtol=rtol, equal_nan=False)
+    else:
+        bad = a != b
+    if not bad.any():
+        return None
+    where = tuple(int(i) for i in np.argwhere(bad)[0])
+    if a.ndim >= 2:  # show the whole row of the last axis: a colour, a vertex, a matrix row
+        row = where[:-1]
+        place, mine, theirs = f"at row {list(row) if len(row) > 1 else row[0]}", a[row], b[row]
+    elif a.ndim == 1 and a.size <= 4:  # a colour, a point: the whole of it
+        place, mine, theirs = "", tuple(a.tolist()), tuple(b.tolist())
+    else:
+        place, mine, theirs = (f"at index {where[0]}" if a.ndim else ""), a[where], b[where]
+    tolerance = f"; tolerance {atol:g}" + (f" + {rtol:g}·|expected|" if rtol else "") if a.dtype.kind in "fc" else ""
+    lead = f"{place}: " if place else ""
+    return (f"{lead}got {short(mine, 70)}, expected {short(theirs, 70)} ({int(bad.sum())} of {bad.size} values "
+            f"differ{tolerance})")
+
+
+def _keyword(call: Any, name: str, default: float, scope: tuple[dict, dict]) -> float:
+    import ast
+
+    for keyword in call.keywords:
+        if keyword.arg == name:
+            try:
+                return float(eval(compile(ast.Expression(keyword.value), "<assert>", "eval"), *scope))  # noqa: S307
+            except Exception:  # noqa: BLE001
+                return default
+    return default
+
+
+def values_sentence(statement: str, global_names: dict[str, Any], local_names: dict[str, Any]) -> str | None:
+    """For a failed ``assert`` without a message: evaluate the arguments of its comparison again (never an
+    expression that calls the student's code, ``impl``) and say where got and expected differ."""
+    import ast
+
+    try:
+        tree = ast.parse(statement.strip())
+    except SyntaxError:
+        return None
+    if not tree.body:
+        return None
+    checked = tree.body[0]
+    if isinstance(checked, ast.Expr) and isinstance(checked.value, ast.Call):  # np.testing.assert_allclose(...)
+        checked = ast.Assert(test=checked.value)
+    if not isinstance(checked, ast.Assert):
+        return None
+    scope = (global_names, dict(local_names))
+
+    class _Recorded(ast.NodeTransformer):
+        """``impl.f(...)`` -> the value the newest call of ``f`` returned (never a second call)."""
+
+        def visit_Call(self, node: Any) -> Any:
+            func = node.func
+            if isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name) and func.value.id == "impl":
+                if not _last_result or _last_result[0] != func.attr:
+                    raise LookupError("calls the student's code")
+                return ast.copy_location(ast.Name("__gandalf_result__", ast.Load()), node)
+            return self.generic_visit(node)
+
+    def value(node: Any) -> Any:
+        node = _Recorded().visit(ast.fix_missing_locations(node))
+        if "impl" in ast.unparse(node):
+            raise LookupError("calls the student's code")
+        names = {**scope[1], "__gandalf_result__": _last_result[1] if _last_result else None}
+        found = eval(compile(ast.Expression(node), "<assert>", "eval"), scope[0], names)  # noqa: S307 - the test's
+        return found
+
+    for node in ast.walk(checked.test):
+        try:
+            if isinstance(node, ast.Call) and len(node.args) >= 2 and getattr(
+                    node.func, "attr", getattr(node.func, "id", "")) in _COMPARISONS:
+                name = getattr(node.func, "attr", getattr(node.func, "id", ""))
+                exact = name in ("array_equal", "assert_array_equal")
+                atol = 0.0 if exact else _keyword(node, "atol", 0.0 if name == "assert_allclose" else 1e-8, scope)
+                rtol = 0.0 if exact else _keyword(node, "rtol", 1e-7 if name == "assert_allclose" else 1e-5, scope)
+                if name == "assert_array_almost_equal":
+                    atol, rtol = 1.5 * 10.0 ** -_keyword(node, "decimal", 6, scope), 0.0
+                text = _difference(value(node.args[0]), value(node.args[1]), atol, rtol)
+            elif isinstance(node, ast.Compare) and len(node.ops) == 1 and isinstance(node.ops[0], ast.Eq):
+                left, right = value(node.left), value(node.comparators[0])
+                if hasattr(right, "expected") and hasattr(right, "abs"):  # pytest.approx(expected, abs=..., rel=...)
+                    atol, rtol = float(right.abs or 1e-12), float(right.rel if right.rel is not None else 1e-6)
+                    text = _difference(left, right.expected, atol, rtol)
+                elif hasattr(left, "shape") or hasattr(right, "shape"):
+                    text = _difference(left, right, 0.0, 0.0)
+                else:
+                    text = f"got {short(left)}, expected {short(right)}" if left != right else None
+            else:
+                continue
+        except Exception:  # noqa: BLE001 - a value that cannot be found again: the other shapes still apply
+            continue
+        if text:
+            return text
+    source = " ".join(ast.unparse(checked.test).split())
+    return f"expected `{_clip(source, 120)}` to hold" if isinstance(checked.test, (ast.Call, ast.Compare)) else None
