@@ -66,8 +66,12 @@ ELEVATION = 18.0
 DISTANCE = 40.0
 VIEW_HEIGHT = 3.6
 TARGET = (0.0, 0.0, 0.0)
+#: The camera's up vector and the unit vector from TARGET towards the camera (the strips, their labels and the
+#: camera are all placed along these two).
+VIEW_UP = (0.0, math.cos(math.radians(ELEVATION)), -math.sin(math.radians(ELEVATION)))
+TOWARDS_CAMERA = (0.0, math.sin(math.radians(ELEVATION)), math.cos(math.radians(ELEVATION)))
 #: The strips' spacing along the camera's up vector (world units): their projected depth plus a gap.
-SPACING = STRIP[1] * math.sin(math.radians(ELEVATION)) + 0.16
+SPACING = STRIP[1] * TOWARDS_CAMERA[1] + 0.16
 #: Where the light comes from (a unit vector is made of it): low, from the back left, so the bricks cast light
 #: and shade on their sides.
 SUN = (-0.55, 0.55, -0.35)
@@ -149,9 +153,7 @@ def label_texture(text: str) -> TextureData:
 def add_labels(scene: Scene, methods: tuple[str, ...]) -> None:
     """Name each strip's method on a label over its top left corner (an unlit quad facing the camera, a little
     in front of the strip so that it is never hidden)."""
-    e = math.radians(ELEVATION)
-    up, towards_camera = (0.0, math.cos(e), -math.sin(e)), (0.0, math.sin(e), math.cos(e))
-    half_height = STRIP[1] / 2 * math.sin(e)  # the strip's half height in the picture
+    half_height = STRIP[1] / 2 * TOWARDS_CAMERA[1]  # the strip's half height in the picture
     x = -STRIP[0] / 2 + LABEL_SIZE[0] / 2 + 0.08
     lift = half_height - LABEL_SIZE[1] / 2 - 0.04
     scene.assets.mesh("label", _strip_mesh())
@@ -160,7 +162,7 @@ def add_labels(scene: Scene, methods: tuple[str, ...]) -> None:
         if name not in scene.assets.textures:
             scene.assets.texture(name, label_texture(LABELS[method]))
             scene.assets.material(name, MaterialData("gandalf.unlit", [name]))
-        position = tuple(centre[j] + lift * up[j] + 1.0 * towards_camera[j] + (x if j == 0 else 0.0)
+        position = tuple(centre[j] + lift * VIEW_UP[j] + 1.0 * TOWARDS_CAMERA[j] + (x if j == 0 else 0.0)
                          for j in range(3))
         scene.create_entity(InfoComponent(f"{LABELS[method]} label"),
                             TransformComponent(position, rotation=(90.0 - ELEVATION, 0.0, 0.0),
@@ -170,16 +172,13 @@ def add_labels(scene: Scene, methods: tuple[str, ...]) -> None:
 
 def camera_eye() -> tuple[float, float, float]:
     """Where the camera stands: DISTANCE from TARGET, ELEVATION degrees above the strips' planes."""
-    e = math.radians(ELEVATION)
-    return (TARGET[0], TARGET[1] + DISTANCE * math.sin(e), TARGET[2] + DISTANCE * math.cos(e))
+    return (TARGET[0], TARGET[1] + DISTANCE * TOWARDS_CAMERA[1], TARGET[2] + DISTANCE * TOWARDS_CAMERA[2])
 
 
 def strip_positions() -> list[tuple[float, float, float]]:
     """The centres of the four strips, top of the picture to bottom: stacked along the camera's up vector, so
     none hides another and all are seen at the same angle."""
-    e = math.radians(ELEVATION)
-    up = (0.0, math.cos(e), -math.sin(e))
-    return [tuple(TARGET[j] + (1.5 - k) * SPACING * up[j] for j in range(3)) for k in range(len(METHODS))]
+    return [tuple(TARGET[j] + (1.5 - k) * SPACING * VIEW_UP[j] for j in range(3)) for k in range(len(METHODS))]
 
 
 def build_scene(impl: ModuleType | None = None, *, methods: tuple[str, ...] = METHODS,
