@@ -7,16 +7,17 @@ imports it.
   the student's package as ``<step>/exercises``, the step packages' other modules (links, never ``solutions/``),
   the engine, the server (``sandbox_child.py``) and its own temp folder and bytecode cache. Python runs isolated
   (``-I``) with that folder first on ``sys.path`` and as its working folder; the checkout is not on ``sys.path``.
-* **Who it is.** When the grader runs as root (Gradescope does), the process runs as a user of its own (a uid
-  without a name, one per sandbox), in its own pid namespace and a mount namespace where ``/tmp``, ``/home``,
-  ``/root``, the checkout's top folder and the like are covered by empty read-only folders and only what it needs is
-  put back read-only (the engine, the step packages with ``solutions/`` covered again, the virtual environment,
-  Python): no solution, test, git history, output folder or other submission is there to read. As any other user,
-  when the system allows it, the same covers are made in a user namespace (the same uid, mapped to its root), with
-  Python read-only too, the graders' bytecode cache and the folders of ``GANDALF_SANDBOX_HIDE`` covered, its own pid
-  namespace, and every capability dropped before the student's code runs (so that it cannot undo a mount); where
-  the system allows no namespaces, the student's process can read and write what its user can (``isolation()``
-  says which applies; the grade records it; ``GANDALF_SANDBOX_ISOLATION`` asks for a weaker one, to check it).
+* **Who it is.** When the grader runs as root (Gradescope does), the process runs as a user of its own (a uid without
+  a name, one per sandbox), in its own pid namespace and a mount namespace where every top folder but the system's
+  (``/usr``, ``/etc``, ...), so ``/tmp``, ``/home``, ``/root``, ``/opt`` and any other where a copy of the course may
+  lie, is covered by an empty read-only folder and only what it needs is put back read-only (the engine, the step
+  packages with ``solutions/`` covered again, the virtual environment, Python): no solution, test, git history, output
+  folder or other submission is there to read. As any other user, when the system allows it, the same covers are made
+  in a user namespace (the same uid, mapped to its root), with Python read-only too, the graders' bytecode cache and
+  the folders of ``GANDALF_SANDBOX_HIDE`` covered, its own pid namespace, and every capability dropped before the
+  student's code runs (so that it cannot undo a mount); where the system allows no namespaces, the student's process
+  can read and write what its user can (``isolation()`` says which applies; the grade records it;
+  ``GANDALF_SANDBOX_ISOLATION`` asks for a weaker one, to check it).
 * **Limits.** Memory (RLIMIT_AS), processes (RLIMIT_NPROC, for its own user), file size (RLIMIT_FSIZE), CPU time
   (RLIMIT_CPU), and a wall-clock budget per call kept by this process: a call past it ends the sandboxed process
   (and every process of its user), the function is remembered as hung so that its later calls fail at once, and
@@ -295,10 +296,15 @@ class Sandbox:
                   Path(sys.prefix).resolve(), Path(sys.base_prefix).resolve(), Path(sys.executable).resolve().parent]
         system = {"usr", "lib", "lib32", "lib64", "libx32", "bin", "sbin", "etc", "proc", "dev", "sys", "run", "var",
                   "boot", ""}
+        # Every top folder but the system's: another copy of the course may lie anywhere (``/work``, ``/data``,
+        # ``/autograder``), not only beside this one.
         tops = {Path("/", p.resolve().parts[1]) for p in [*needed, private, Path(tempfile.gettempdir())]
                 if len(p.resolve().parts) > 1}
+        tops |= {Path("/", p.name) for p in Path("/").iterdir() if not p.is_symlink()}
+        tops |= {p.resolve() for p in Path("/").iterdir() if p.is_symlink()}
         tops |= {Path(p) for p in ("/tmp", "/home", "/root", "/srv", "/mnt", "/media", "/opt", "/var/tmp")}
-        covers = sorted(p for p in tops if p.is_dir() and p.parts[1] not in system or p == Path("/var/tmp"))
+        covers = sorted(p for p in tops if p.is_dir() and len(p.parts) > 1
+                        and (p.parts[1] not in system or p == Path("/var/tmp")))
         needed = [p for p in dict.fromkeys(needed) if p.is_dir() and any(c in p.parents for c in covers)]
         if self.uid is not None:  # as root: a folder of its own in the system's /run
             stage = Path("/run") / f"gandalf-stage-{self.uid}"

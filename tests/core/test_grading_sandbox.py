@@ -90,6 +90,16 @@ def whoami():
     return (os.getuid(), os.getcwd())
 
 
+def top_folders():
+    seen = {}
+    for name in sorted(os.listdir("/")):
+        try:
+            seen[name] = sorted(os.listdir("/" + name))
+        except OSError as exc:
+            seen[name] = ["unreadable: " + type(exc).__name__]
+    return seen
+
+
 def warn():
     import warnings
     warnings.warn("watch out", UserWarning)
@@ -176,6 +186,29 @@ def test_the_student_process_cannot_reach_the_solutions(student):
     uid, cwd = student.whoami()
     assert uid != os.getuid() or sandbox.isolation() == "mount"
     assert not Path(cwd).resolve().is_relative_to(ROOT)
+
+
+def test_every_top_folder_but_the_systems_shows_only_the_way_to_what_it_needs(student):
+    """Another copy of the course may lie in any top folder (``/work``, ``/data``, ``/autograder``), not only beside
+    this checkout: inside the sandbox each top folder but the system's holds nothing but the way to the engine, the
+    step packages, Python and the sandbox's own folder."""
+    if sandbox.isolation() == "process":
+        pytest.skip("no namespaces here: the student's process sees what its user can (the grade records it)")
+    import sys
+    import tempfile
+
+    system = {"usr", "lib", "lib32", "lib64", "libx32", "bin", "sbin", "etc", "proc", "dev", "sys", "run", "var", "boot"}
+    needed = [ROOT, Path(sys.prefix), Path(sys.base_prefix), Path(sys.executable).parent, Path(tempfile.gettempdir())]
+    ways: dict[str, set[str]] = {}
+    for path in needed:
+        parts = path.resolve().parts
+        if len(parts) > 2:
+            ways.setdefault(parts[1], set()).add(parts[2])
+    for top, inside in student.top_folders().items():
+        if top in system or not Path("/", top).is_dir() or Path("/", top).is_symlink():
+            continue
+        extra = [name for name in inside if name not in ways.get(top, set()) and not name.startswith("gandalf-sandbox-")]
+        assert extra == [], f"/{top} shows {extra} to the student's process"
 
 
 def test_a_hung_function_fails_at_once_later_and_the_others_go_on(student):
