@@ -463,7 +463,12 @@ def borrow_environment(folder: Path, python: str = sys.executable) -> Path:
     first on its path, as its editable install would put it; ``./run.sh`` then uses the environment as is."""
     venv = Path(folder) / ".venv"
     subprocess.run([python, "-m", "venv", "--without-pip", str(venv)], check=True)
-    probe = "import site, sys; print('\\n'.join(p for p in sys.path if p.endswith('-packages')))"
+    # Installed packages: the site folders, and folders on PYTHONPATH that hold installed distributions
+    # (``pip install --target``), never the course checkout itself.
+    probe = ("import os, sys; from pathlib import Path\n"
+             "extra = [p for p in os.environ.get('PYTHONPATH', '').split(os.pathsep)\n"
+             "         if p and any(Path(p).glob('*.dist-info'))]\n"
+             "print('\\n'.join(p for p in sys.path if p.endswith('-packages') or p in extra))")
     paths = subprocess.run([python, "-c", probe], capture_output=True, text=True, check=True).stdout.split()
     site = next(venv.glob("lib/python*/site-packages"))
     # The release itself first (as its own editable install would put it), then the borrowed folders: plain folder

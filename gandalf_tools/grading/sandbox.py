@@ -88,6 +88,10 @@ def _namespaces_work(*flags: str) -> bool:
 ISOLATION_ENV = "GANDALF_SANDBOX_ISOLATION"
 MODES = ("user+mount", "mount", "process")
 
+#: The system's top folders, left as they are in the student's mount namespace (every other is covered).
+SYSTEM_FOLDERS = frozenset({"usr", "lib", "lib32", "lib64", "libx32", "bin", "sbin", "etc", "proc", "dev", "sys", "run",
+                            "var", "boot"})
+
 
 def isolation() -> str:
     """How the student's process is kept from the checkout here: "user+mount" (its own uid, the solutions and
@@ -294,8 +298,6 @@ class Sandbox:
         step packages (their ``solutions/`` covered again below), the virtual environment and Python itself."""
         needed = [ROOT / "gandalf_core", *_step_dirs(list(self.step_dirs.values())),
                   Path(sys.prefix).resolve(), Path(sys.base_prefix).resolve(), Path(sys.executable).resolve().parent]
-        system = {"usr", "lib", "lib32", "lib64", "libx32", "bin", "sbin", "etc", "proc", "dev", "sys", "run", "var",
-                  "boot", ""}
         # Every top folder but the system's: another copy of the course may lie anywhere (``/work``, ``/data``,
         # ``/autograder``), not only beside this one.
         tops = {Path("/", p.resolve().parts[1]) for p in [*needed, private, Path(tempfile.gettempdir())]
@@ -304,7 +306,7 @@ class Sandbox:
         tops |= {p.resolve() for p in Path("/").iterdir() if p.is_symlink()}
         tops |= {Path(p) for p in ("/tmp", "/home", "/root", "/srv", "/mnt", "/media", "/opt", "/var/tmp")}
         covers = sorted(p for p in tops if p.is_dir() and len(p.parts) > 1
-                        and (p.parts[1] not in system or p == Path("/var/tmp")))
+                        and (p.parts[1] not in SYSTEM_FOLDERS or p == Path("/var/tmp")))
         needed = [p for p in dict.fromkeys(needed) if p.is_dir() and any(c in p.parents for c in covers)]
         if self.uid is not None:  # as root: a folder of its own in the system's /run
             stage = Path("/run") / f"gandalf-stage-{self.uid}"
