@@ -123,11 +123,23 @@ def _editable_roots() -> set[Path]:
     return roots
 
 
+def site_folders() -> list[Path]:
+    """The folders this Python imports installed packages from: its site folders and folders of installed
+    distributions on its path (``pip install --target``, a borrowed environment's), never the checkout itself."""
+    found = []
+    for entry in sys.path:
+        path = Path(entry).resolve() if entry else None
+        if path and path.is_dir() and path != ROOT.resolve() and (
+                entry.endswith("-packages") or any(path.glob("*.dist-info"))):
+            found.append(path)
+    return list(dict.fromkeys(found))
+
+
 def hidden_paths(extra: list[str] | tuple[str, ...] = ()) -> list[Path]:
     """The folders the student's process must not see: solutions, tests and git data of every checkout the
     grader knows, plus ``extra`` and ``$GANDALF_SANDBOX_HIDE`` (output folders, other submissions)."""
     paths: set[Path] = set()
-    for root in {ROOT, *_editable_roots()}:
+    for root in {ROOT, *_editable_roots(), *site_folders()}:  # an installed wheel holds solutions/ too
         paths |= set(root.glob("step*/solutions")) | {root / "tests"}
         git = root / ".git"
         if git.is_file() and git.read_text().startswith("gitdir:"):
@@ -295,9 +307,11 @@ class Sandbox:
         """Shell lines (run as root in the new mount namespace) that cover every folder where checkouts, submissions,
         outputs and temp files live (``/tmp``, ``/home``, ``/root``, the checkout's top folder, ...) with an empty
         read-only folder, then put back only what the student's process needs: its private folder, the engine, the
-        step packages (their ``solutions/`` covered again below), the virtual environment and Python itself."""
+        step packages (their ``solutions/`` covered again below), the virtual environment, the site folders it imports
+        packages from (``solutions/`` of an installed course covered too) and Python itself."""
         needed = [ROOT / "gandalf_core", *_step_dirs(list(self.step_dirs.values())),
-                  Path(sys.prefix).resolve(), Path(sys.base_prefix).resolve(), Path(sys.executable).resolve().parent]
+                  Path(sys.prefix).resolve(), Path(sys.base_prefix).resolve(), Path(sys.executable).resolve().parent,
+                  *site_folders()]
         # Every top folder but the system's: another copy of the course may lie anywhere (``/work``, ``/data``,
         # ``/autograder``), not only beside this one.
         tops = {Path("/", p.resolve().parts[1]) for p in [*needed, private, Path(tempfile.gettempdir())]

@@ -197,7 +197,8 @@ def test_every_top_folder_but_the_systems_shows_only_the_way_to_what_it_needs(st
     import sys
     import tempfile
 
-    needed = [ROOT, Path(sys.prefix), Path(sys.base_prefix), Path(sys.executable).parent, Path(tempfile.gettempdir())]
+    needed = [ROOT, Path(sys.prefix), Path(sys.base_prefix), Path(sys.executable).parent, Path(tempfile.gettempdir()),
+              *sandbox.site_folders()]
     ways: dict[str, set[str]] = {}
     for path in needed:
         parts = path.resolve().parts
@@ -209,6 +210,35 @@ def test_every_top_folder_but_the_systems_shows_only_the_way_to_what_it_needs(st
         extra = [name for name in inside
                  if name not in ways.get(top, set()) and not name.startswith("gandalf-sandbox-")]
         assert extra == [], f"/{top} shows {extra} to the student's process"
+
+
+def test_an_installed_course_beside_the_packages_shows_no_solutions(tmp_path, monkeypatch):
+    """A wheel of the course installed in a site folder (``pip install --target``) holds ``solutions/`` too: the
+    site folder is put back for the student's process, its solutions stay covered."""
+    if sandbox.isolation() == "process":
+        pytest.skip("no namespaces here: the student's process sees what its user can (the grade records it)")
+    site = tmp_path / "site"
+    (site / "gandalf_graphics_course-1.0.dist-info").mkdir(parents=True)
+    (site / "step01_window" / "solutions").mkdir(parents=True)
+    (site / "step01_window" / "solutions" / "hue.py").write_text("SECRET = 1\n")
+    (site / "installed.py").write_text("VISIBLE = 1\n")
+    monkeypatch.syspath_prepend(str(site))
+    assert site.resolve() in sandbox.site_folders()
+    folder = tmp_path / "submission" / "exercises"
+    folder.mkdir(parents=True)
+    (folder / "__init__.py").write_text(textwrap.dedent(PACKAGE))
+    box = sandbox.Sandbox("step01_window", folder)
+    try:
+        package = remote.install("step01_window", folder, box, budget=5.0)
+        assert package.read(str(site / "installed.py")) == "VISIBLE = 1\n"
+        assert package.read(str(site / "step01_window" / "solutions" / "hue.py")).startswith("unreadable")
+    finally:
+        box.stop()
+        import importlib
+        import sys
+
+        sys.modules.pop("step01_window.exercises", None)
+        importlib.import_module("step01_window").exercises = importlib.import_module("step01_window.exercises")
 
 
 def test_a_hung_function_fails_at_once_later_and_the_others_go_on(student):
