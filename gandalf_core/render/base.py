@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from ..resources.assets import Assets
+from .capture import NOT_RECORDING
 from .frame import PASS_SHADERS, DrawBatch, FrameData, instance_capacity
 from .library import ResourceLib
 from .patches import check_patch_draw
@@ -45,6 +46,9 @@ class Renderer(ABC):
     backend: str
     #: The buffer of the frame's instance rows (grown by :meth:`_instance_capacity`).
     _instance_buffer: Any = None
+    #: A :class:`~gandalf_core.render.capture.FrameRecorder` while a frame is captured, else None: the pass and draw
+    #: loops call it (see :meth:`_recorded`), so a frame that is not captured pays one attribute test per draw.
+    recorder: Any = None
 
     def __init__(self, width: int, height: int, window: Any = None) -> None:
         if int(width) <= 0 or int(height) <= 0:
@@ -181,6 +185,14 @@ class Renderer(ABC):
                                 "bytes; an indirect draw reads 16 (vertex count, instance count, first vertex, "
                                 "first instance)")
         return buffer
+
+    def _recorded(self, pass_name: str, where: Any, shader: Any, batch: Any = None, material: Any = None,
+                  mesh: Any = None, reverse_z: bool = False, sky: str | None = None) -> Any:
+        """The capture's ``with`` around one draw call (nothing unless a frame is being captured)."""
+        recorder = self.recorder
+        if recorder is None:
+            return NOT_RECORDING
+        return recorder.draw(pass_name, where, shader, batch, material, mesh, reverse_z, sky)
 
     def pass_shader(self, kind: str) -> Any:
         """The shader of one of the engine's own passes (``"sky"``, ``"shadow"``: :data:`.frame.PASS_SHADERS`),

@@ -18,6 +18,7 @@ from ...resources import MaterialData, ResourceError
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_has
 from ..base import Renderer
+from ..capture import NOT_RECORDING
 from ..capabilities import FLOOR, Needs
 from ..errors import ShaderCompileError
 from ..frame import FRAME_FLOATS, INSTANCE_STRIDE, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
@@ -152,9 +153,13 @@ class WebGPURenderer(Renderer):
                  for batch, material, mesh in self.resolve_draws(data, assets)]
         sky = self._sky_draw(data.skybox, assets, data.reverse_z) if data.skybox is not None else None
         encoder = self.device.create_command_encoder()
+        recorder = self.recorder  # a frame capture (render/capture.py), or None
+        if recorder is not None:
+            recorder.begin_frame(data.frame, data.lights, encoder)
         frame_group = self._frame_group
         if data.shadows:
             frame_group = self._draw_shadow_map(encoder, draws)
+        target = f"frame {self.width}x{self.height} ({self._target_format}, {DEPTH_FORMAT})"
         # --8<-- [start:clear]
         rpass = encoder.begin_render_pass(
             color_attachments=[{
@@ -165,6 +170,7 @@ class WebGPURenderer(Renderer):
                 "view": self.depth_view, "depth_clear_value": 0.0 if data.reverse_z else 1.0,
                 "depth_load_op": "clear", "depth_store_op": "store",
             },
+            timestamp_writes=recorder.begin_target(target, encoder) if recorder is not None else None,
         )
         rpass.set_bind_group(0, frame_group)
         # --8<-- [end:clear]
@@ -173,7 +179,8 @@ class WebGPURenderer(Renderer):
             pipeline, bind_group = sky
             rpass.set_pipeline(pipeline)
             rpass.set_bind_group(1, bind_group)
-            rpass.draw(3)
+            with self._recorded("sky", rpass, self.pass_shader("sky"), reverse_z=data.reverse_z, sky=data.skybox):
+                rpass.draw(3)
             self.stats["draw_calls"] += 1
 
         for batch, material, mesh, (pipeline, attributes) in draws:
@@ -183,12 +190,19 @@ class WebGPURenderer(Renderer):
             rpass.set_pipeline(pipeline)
             if material.bind_group is not None:
                 rpass.set_bind_group(1, material.bind_group)
-            self._draw_batch(rpass, material.shader, mesh, attributes, batch)
+            with self._recorded("transparent" if batch.transparent else "opaque", rpass, material.shader, batch,
+                                material, mesh, data.reverse_z):
+                self._draw_batch(rpass, material.shader, mesh, attributes, batch)
         if sky is not None:
             draw_sky()
-        for overlay in self.overlays:  # last, in the same pass: no second pass over the frame
-            overlay(self, rpass)
+        with recorder.overlay(rpass) if recorder is not None and self.overlays else NOT_RECORDING:
+            for overlay in self.overlays:  # last, in the same pass: no second pass over the frame
+                overlay(self, rpass)
+        if recorder is not None:
+            recorder.end_target(rpass)
         rpass.end()
+        if recorder is not None:
+            recorder.end_frame(encoder)
         if surface_texture is not None and not direct:
             self._present.draw(encoder, self.color_view, surface_texture.create_view())
         queue.submit([encoder.finish()])
@@ -250,17 +264,22 @@ class WebGPURenderer(Renderer):
             self.stats["shadow_maps_created"] += 1
         _texture, view, frame_group = self._shadow
         shader = self.pass_shader("shadow")
+        recorder = self.recorder
+        target = f"shadow map {SHADOW_MAP_SIZE}x{SHADOW_MAP_SIZE} ({DEPTH_FORMAT})"
         rpass = encoder.begin_render_pass(color_attachments=[], depth_stencil_attachment={
             "view": view, "depth_clear_value": 1.0, "depth_load_op": "clear", "depth_store_op": "store",
-        })
+        }, timestamp_writes=recorder.begin_target(target, encoder) if recorder is not None else None)
         # The stand-in group: the map itself must not be bound while this pass writes it.
         rpass.set_bind_group(0, self._frame_group)
-        for batch, _material, mesh, _pipeline in draws:
+        for batch, material, mesh, _pipeline in draws:
             if batch.transparent:
                 continue
             pipeline, attributes = self._shadow_pipeline(shader, mesh)
             rpass.set_pipeline(pipeline)
-            self._draw_batch(rpass, shader, mesh, attributes, batch)
+            with self._recorded("shadow", rpass, shader, batch, material, mesh):
+                self._draw_batch(rpass, shader, mesh, attributes, batch)
+        if recorder is not None:
+            recorder.end_target(rpass)
         rpass.end()
         self.stats["shadow_passes"] += 1
         return frame_group
