@@ -51,6 +51,8 @@ class DrawRecord:
     blocks: dict[str, dict[str, Any]]  # block name -> {"binding": ..., "values": {field: value}}
     textures: list[dict[str, Any]]
     buffers: list[dict[str, Any]]
+    mirrored: bool = False  # its instances' world matrices flip handedness (clockwise front faces)
+    sky: str | None = None  # the sky pass's cube texture
     entities: list[uuid.UUID] = field(default_factory=list)
     gpu_ms: float | None = None
 
@@ -80,6 +82,8 @@ class FrameCapture:
     timing: str
     #: GPU milliseconds of each render() call of the frame, first timestamp to last (None without a timer).
     frame_gpu_ms: list[float] = field(default_factory=list)
+    #: Whether the (last) render() call drew with reverse-Z.
+    reverse_z: bool = False
 
     @property
     def draws(self) -> list[DrawRecord]:
@@ -112,6 +116,7 @@ class FrameRecorder:
         self._target_stamps: list[int | None] | None = None
         self._pass_start: int | None = None
         self._drew_in_target = False
+        self.reverse_z = False
 
     # --- hooks the renderers call ---------------------------------------------------------------------
     def begin_frame(self, frame: bytes, lights: bytes, where: Any = None) -> None:
@@ -170,6 +175,8 @@ class FrameRecorder:
         if self._pass is None or self._pass.name != pass_name:
             self._open_pass(pass_name, where)
         record = self._describe(pass_name, shader, batch, material, mesh, reverse_z, sky)
+        if pass_name != "shadow":
+            self.reverse_z = reverse_z
         self._pass.draws.append(record)
         label = f"draw {record.index}"
         self._span_begin(label, where)
@@ -195,7 +202,7 @@ class FrameRecorder:
                     d.gpu_ms = ms.get(f"draw {d.index}")
             frame_ms = [ms[label] for label in self._frames if label in ms]
             self.timer.release()
-        return FrameCapture(self.renderer.backend, self.passes, self.timing, frame_ms)
+        return FrameCapture(self.renderer.backend, self.passes, self.timing, frame_ms, self.reverse_z)
 
     # --- inside -------------------------------------------------------------------------------------
     def _span_begin(self, label: str, where: Any) -> None:

@@ -122,8 +122,8 @@ def describe_draw(renderer: Any, index: int, pass_name: str, shader: Any, batch:
             buffers.append({"slot": f"storage {i}", "name": name, "bytes": size})
     elif sky is not None:
         textures = [_texture_info(renderer, "sky cube", sky)]
-    if renderer.stats.get("shadow_maps_created") and not shadow and material is not None and \
-            engine_blocks.get("Lights", {}).get("values", {}).get("shadow", [0])[0]:
+    samples_shadow = ("u_shadow_map" in shader.uniforms) if gl else ("shadow_map" in shader.source.text)
+    if samples_shadow and not shadow and engine_blocks.get("Lights", {}).get("values", {}).get("shadow", [0])[0]:
         textures.append({"slot": "shadow map", "name": "shadow map", "kind": "depth",
                          "size": (SHADOW_MAP_SIZE, SHADOW_MAP_SIZE), "levels": 1})
     layout: list[str] = []
@@ -154,5 +154,5 @@ def describe_draw(renderer: Any, index: int, pass_name: str, shader: Any, batch:
         vertex_count=mesh.data.vertex_count if mesh is not None else 3,
         index_count=mesh.data.index_count if mesh is not None and mesh.index_buffer is not None else 0,
         layout=layout, state=state, blocks={k: v for k, v in blocks.items() if v is not None},
-        textures=textures, buffers=buffers,
+        textures=textures, buffers=buffers, mirrored=bool(batch is not None and batch.mirrored), sky=sky,
     )

@@ -69,3 +69,20 @@ def inspector_app(backend: str, **kwargs: bool) -> tuple[Application, dict[str, 
     scene, entities = inspector_scene(**kwargs)
     app.add_scene(scene)
     return app, entities
+
+
+#: A world point of each object that the camera sees of it (nothing in front): a cube's top, the pane's middle,
+#: the floor beside the cubes.
+VISIBLE_POINT = {"floor": (3.0, 0.0, -2.5), "red cube": (-2.0, 1.0, 0.0), "green cube": (0.0, 1.0, 0.0),
+                 "blue cube": (2.0, 1.0, 0.0), "pane": (0.0, 1.0, 2.0)}
+
+
+def pixel_of(app: Application, point: tuple[float, float, float]) -> tuple[int, int]:
+    """The pixel (column, row from the top) where ``app``'s primary camera sees world ``point``."""
+    from gandalf_core.render import RenderSystem
+
+    system = next(s for s in app.scene.systems if isinstance(s, RenderSystem))
+    view, projection, _eye, _rz = system.camera()
+    clip = projection @ view @ np.array([*point, 1.0])
+    ndc = clip[:3] / clip[3]
+    return int((ndc[0] + 1) / 2 * app.renderer.width), int((1 - ndc[1]) / 2 * app.renderer.height)
