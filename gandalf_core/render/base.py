@@ -16,8 +16,8 @@ from typing import Any
 import numpy as np
 
 from ..resources.assets import Assets
-from .capture import NOT_RECORDING
 from .frame import PASS_SHADERS, DrawBatch, FrameData, instance_capacity
+from .frame_records import NOT_RECORDING
 from .library import ResourceLib
 from .patches import check_patch_draw
 from .shader_files import engine_shader_files

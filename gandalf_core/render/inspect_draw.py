@@ -12,8 +12,8 @@ import ctypes
 from typing import Any
 
 from ..resources.blocks import BLOCK_BINDINGS, WGSL_BINDINGS
-from .capture import DrawRecord
 from .frame import INSTANCE_STRIDE, SHADOW_MAP_SIZE
+from .frame_records import DrawRecord
 
 _GL_ENUMS = {
     0x0200: "GL_NEVER", 0x0201: "GL_LESS", 0x0202: "GL_EQUAL", 0x0203: "GL_LEQUAL", 0x0204: "GL_GREATER",

@@ -136,11 +136,10 @@ def _replay_gl(renderer: Any, draws: list[DrawRecord], data: Any, assets: Any, x
         for draw in draws:
             if draw.mesh is None:  # the sky
                 sky = renderer._prepare_sky(draw.sky, assets)
-                for batch in _instances(draw):
-                    query = ctx.query(samples=True)
-                    with query:
-                        renderer._draw_sky(sky, data.reverse_z)
-                    results.append(((draw, None), query))
+                query = ctx.query(samples=True)
+                with query:
+                    renderer._draw_sky(sky, data.reverse_z)
+                results.append(((draw, None), query))
                 continue
             material = renderer.materials.get(draw.material)
             mesh = renderer.meshes.get(draw.mesh)

@@ -17,9 +17,9 @@ from ...resources import MaterialData, ResourceError
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
 from ..base import Renderer
-from ..capture import NOT_RECORDING
 from ..capabilities import FLOOR, GL_FLOOR, CapabilityError, Needs, check, opengl_offer
 from ..frame import FRAME_FLOATS, INSTANCE_STRIDE, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
+from ..frame_records import NOT_RECORDING
 from ..texture_checks import check_target_size
 from . import raw_gl
 from .libs import (

@@ -18,10 +18,10 @@ from ...resources import MaterialData, ResourceError
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_has
 from ..base import Renderer
-from ..capture import NOT_RECORDING
 from ..capabilities import FLOOR, Needs
 from ..errors import ShaderCompileError
 from ..frame import FRAME_FLOATS, INSTANCE_STRIDE, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
+from ..frame_records import NOT_RECORDING
 from ..shader_files import engine_shader_files, load_shader
 from ..texture_checks import check_target_size
 from .device import request_device
