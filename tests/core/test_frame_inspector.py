@@ -162,3 +162,30 @@ def test_unpack_is_the_inverse_of_pack() -> None:
     assert layout.pack(unpacked) == layout.pack(values)
     with pytest.raises(LayoutError, match="block 'B'"):
         layout.unpack(b"\0" * 8)
+
+
+def test_the_texture_viewer_reads_every_source_face_and_level(backend: str) -> None:
+    """Frame colour equals the captured picture; each sky face at level 0 equals its pixels, a level's size halves;
+    the frame depth at a picked pixel equals the pick's depth; the shadow map holds nearer depths than its clear."""
+    from gandalf_core.render.texture_readback import display_rgba, read_source, texture_sources
+
+    app, _entities, _capture, _ = _captured(backend)
+    try:
+        renderer = app.renderer
+        sources = {s.name: s for s in texture_sources(renderer)}
+        assert set(sources) == {"frame colour", "frame depth", "shadow map", "sky"}
+        assert sources["sky"].faces == 6 and sources["sky"].levels == 3
+        assert np.array_equal(read_source(renderer, "frame colour"), app.capture())
+        faces = app.scene.assets.textures["sky"].faces
+        for face in range(6):
+            assert np.array_equal(read_source(renderer, "sky", face, 0), faces[face]), face
+            assert read_source(renderer, "sky", face, 2).shape == (1, 1, 4)
+        x, y = pixel_of(app, VISIBLE_POINT["green cube"])
+        assert read_source(renderer, "frame depth")[y, x] == pytest.approx(pick(app, x, y).depth, abs=1e-7)
+        shadow = read_source(renderer, "shadow map")
+        assert shadow.shape == (2048, 2048) and shadow.min() < 0.9 and shadow.max() == 1.0
+        assert display_rgba(shadow).dtype == np.uint8
+        with pytest.raises(ValueError, match="'sky' has 6 face"):
+            read_source(renderer, "sky", 6, 0)
+    finally:
+        app.close()

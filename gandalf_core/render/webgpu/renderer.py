@@ -129,7 +129,8 @@ class WebGPURenderer(Renderer):
             usage=usage.RENDER_ATTACHMENT | usage.COPY_SRC | usage.TEXTURE_BINDING,
         )
         self._depth = self.device.create_texture(
-            size=(self.width, self.height, 1), format=DEPTH_FORMAT, usage=usage.RENDER_ATTACHMENT
+            size=(self.width, self.height, 1), format=DEPTH_FORMAT,
+            usage=usage.RENDER_ATTACHMENT | usage.COPY_SRC,  # COPY_SRC: read back by the texture viewer
         )
         self.color_view = self._color.create_view()
         self.depth_view = self._depth.create_view()
@@ -257,7 +258,8 @@ class WebGPURenderer(Renderer):
         if self._shadow is None:
             texture = self.device.create_texture(
                 size=(SHADOW_MAP_SIZE, SHADOW_MAP_SIZE, 1), format=DEPTH_FORMAT,
-                usage=wgpu.TextureUsage.RENDER_ATTACHMENT | wgpu.TextureUsage.TEXTURE_BINDING, label="shadow map",
+                usage=wgpu.TextureUsage.RENDER_ATTACHMENT | wgpu.TextureUsage.TEXTURE_BINDING
+                | wgpu.TextureUsage.COPY_SRC, label="shadow map",
             )
             view = texture.create_view()
             self._shadow = (texture, view, self._create_frame_group(view))
