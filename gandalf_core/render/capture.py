@@ -30,13 +30,15 @@ from .inspect_draw import describe_draw
 from .render_system import RenderSystem
 
 __all__ = ["NOT_RECORDING", "DrawRecord", "FrameCapture", "FrameRecorder", "PassRecord", "capture_frame",
-           "name_entities"]
+           "compute_recorded", "name_entities"]
 
 class FrameRecorder:
     """Receives a renderer's pass and draw hooks while one frame is captured (see :func:`capture_frame`)."""
 
     def __init__(self, renderer: Any, timing: bool = True) -> None:
         self.renderer = renderer
+        # Compute code reaches the capture through its context or device (see compute_recorded).
+        _ACTIVE[id(renderer.ctx if renderer.backend == "opengl" else renderer.device)] = self
         self.timer: GpuTimer | None = gpu_timer(renderer) if timing else None
         self.timing = (self.timer.reason if self.timer is not None else "not asked for")
         self.passes: list[PassRecord] = []
@@ -119,6 +121,27 @@ class FrameRecorder:
         self._span_end(where)
 
     @contextmanager
+    def dispatch(self, label: str, workgroups: tuple[int, ...], shader: str, buffers: list[tuple[str, int]],
+                 where: Any) -> Iterator[None]:
+        """Around one compute dispatch (see :func:`compute_recorded`)."""
+        if self._pass is None or self._pass.name != "compute":
+            self._target = "compute"
+            self._open_pass("compute", where)
+        groups = tuple(int(g) for g in workgroups) + (1,) * (3 - len(workgroups))
+        record = DrawRecord(index=self._draws, pass_name="compute", mesh=None, material=None, shader=label,
+                            shader_files=[shader] if shader else [], instances=1, first_instance=0, rows=[],
+                            vertex_count=0, index_count=0, layout=[], state={"workgroups": groups}, blocks={},
+                            textures=[], buffers=[{"slot": f"storage {i}", "name": n, "bytes": b}
+                                                  for i, (n, b) in enumerate(buffers)])
+        self._draws += 1
+        self._pass.draws.append(record)
+        self._span_begin(f"draw {record.index}", where)
+        yield
+        self._span_end(where)
+        if self.renderer.backend == "webgpu":  # the dispatch's pass ends with it: the next one is timed anew
+            self._close_pass(where)
+
+    @contextmanager
     def overlay(self, where: Any = None) -> Iterator[None]:
         """Around the overlays (the editor's GUI), drawn into the frame's target."""
         self._open_pass("overlay", where)
@@ -129,6 +152,8 @@ class FrameRecorder:
     def finish(self) -> FrameCapture:
         """The capture, with the GPU times read back (waits for the GPU once)."""
         frame_ms: list[float] = []
+        for key in [k for k, recorder in _ACTIVE.items() if recorder is self]:
+            del _ACTIVE[key]
         if self.timer is not None:
             ms = self.timer.results()
             for i, p in enumerate(self.passes):
@@ -172,6 +197,25 @@ class FrameRecorder:
         self._draws += 1
         return describe_draw(self.renderer, index, pass_name, shader, batch, material, mesh, reverse_z,
                              self._blocks, sky)
+
+
+#: The recorder capturing a frame of each context or device (by id), while it captures.
+_ACTIVE: dict[int, FrameRecorder] = {}
+
+
+def compute_recorded(context: Any, label: str, workgroups: tuple[int, ...], *, shader: str = "",
+                     buffers: list[tuple[str, int]] = (), where: Any = None) -> Any:
+    """The capture's ``with`` around a compute dispatch on ``context`` (a moderngl context, or a wgpu device with
+    the compute pass encoder as ``where``): it lists the dispatch, its workgroups and buffers in a ``compute`` pass
+    of the captured frame and times it. Nothing happens unless a frame of that context is being captured::
+
+        with compute_recorded(ctx, "particles", (groups,), buffers=[("particles", buf.size)]):
+            program.run(group_x=groups)
+    """
+    recorder = _ACTIVE.get(id(context))
+    if recorder is None:
+        return NOT_RECORDING
+    return recorder.dispatch(label, workgroups, shader, list(buffers), where)
 
 
 def capture_frame(app: Any, timing: bool = True, dt: float | None = None) -> FrameCapture:
