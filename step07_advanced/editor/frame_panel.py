@@ -35,6 +35,17 @@ def _number(value: Any) -> str:
     return str(value)
 
 
+def _short_path(path: str) -> str:
+    """A shader file's path from the working folder when it lies below it (the course's files), else as it is."""
+    import os
+
+    try:
+        relative = os.path.relpath(path)
+    except ValueError:
+        return path
+    return path if relative.startswith("..") else relative
+
+
 def _ms(value: float | None) -> str:
     return f"{value:.3f} ms" if value is not None else "- ms"
 
@@ -60,6 +71,7 @@ class FramePanelSystem(PanelSystem):
         self.error = ""
         self._was_shown = False
         self._focus_frames = 0
+        self._open_viewer = False
         # texture viewer
         self.source = "frame colour"
         self.face = 0
@@ -83,6 +95,7 @@ class FramePanelSystem(PanelSystem):
         """Show ``source`` (a texture name, "frame colour", "frame depth" or "shadow map") in the viewer."""
         self.source, self.face, self.level = source, int(face), int(level)
         self._view_key = None
+        self._open_viewer = True  # the viewer's header opens to show it
 
     # --- between frames -------------------------------------------------------------------------------
     def on_update_system(self, ts: float) -> None:
@@ -215,8 +228,12 @@ class FramePanelSystem(PanelSystem):
             imgui.text_disabled(f"GPU timing: {self.capture.timing}")
             self._tree()
             self._details()
+        if self._open_viewer:
+            imgui.set_next_item_open(True)
+            self._open_viewer = False
         if imgui.collapsing_header("Texture viewer"):
             self._texture_viewer()
+        self.remember("frame/viewer")
 
     def _viewport_click(self) -> None:
         rect = self._viewport_rect
@@ -266,15 +283,19 @@ class FramePanelSystem(PanelSystem):
         for line in d.layout:
             imgui.bullet_text(line)
         imgui.text(f"material '{d.material}', shader '{d.shader}'")
-        for path in d.shader_files:
-            imgui.bullet_text(path)
-        if imgui.tree_node("pipeline state"):
+        if d.shader_files and imgui.tree_node(f"{_short_path(d.shader_files[0])} (+{len(d.shader_files) - 1} "
+                                              "more)##files"):
+            for path in d.shader_files[1:]:
+                imgui.bullet_text(_short_path(path))
+            imgui.tree_pop()
+        if imgui.tree_node_ex("pipeline state", imgui.TreeNodeFlags_.default_open):
             for key, value in d.state.items():
                 imgui.text(f"{key:14} {value}")
             imgui.tree_pop()
         self.remember("frame/state")
         for block, content in d.blocks.items():
-            if imgui.tree_node(f"{block} block ({content['binding']})##{block}"):
+            flags = imgui.TreeNodeFlags_.default_open if block == "Material" else 0
+            if imgui.tree_node_ex(f"{block} block ({content['binding']})##{block}", flags):
                 self._block_fields(block, content["values"])
                 imgui.tree_pop()
             self.remember(f"frame/block/{block}")

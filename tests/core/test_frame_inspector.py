@@ -189,3 +189,75 @@ def test_the_texture_viewer_reads_every_source_face_and_level(backend: str) -> N
             read_source(renderer, "sky", 6, 0)
     finally:
         app.close()
+
+
+# --- the two debugging recipes of the editor page ------------------------------------------------------
+GLOW_WGSL = """
+#include "frame.wgsl"
+#include "instance.wgsl"
+#include "material.wgsl"
+@vertex fn vs_main(@location(0) position: vec3<f32>, inst: Instance) -> @builtin(position) vec4<f32> {
+    return frame.projection * frame.view * instance_model(inst) * vec4<f32>(position, 1.0);
+}
+@fragment fn fs_main() -> @location(0) vec4<f32> { return vec4<f32>(material.color.rgb * material.glow, 1.0); }
+"""
+GLOW_VERT = """#version 330 core
+#include "frame.glsl"
+#include "instance.glsl"
+layout(location = 0) in vec3 a_position;
+void main() { gl_Position = u_projection * u_view * instance_model() * vec4(a_position, 1.0); }
+"""
+GLOW_FRAG = """#version 330 core
+#include "material.glsl"
+out vec4 f_color;
+void main() { f_color = vec4(material.color.rgb * material.glow, 1.0); }
+"""
+#: 'glow' has a default (0): a material that forgets it builds, and draws black.
+GLOW_MATERIAL = [("color", "vec4"), ("glow", "float", 0.0), ("_pad", "vec3", 0.0)]
+
+
+def test_recipe_a_missing_uniform_shows_as_its_decoded_default(backend: str) -> None:
+    """The red cube draws black; a pick on it names its material, whose decoded block shows glow = 0 (the default
+    it fell back to), where the green cube's shows the glow it was given."""
+    from gandalf_core.resources import MaterialData
+
+    app, entities = inspector_app(backend, sky=False, shadows=False, pane=False)
+    try:
+        if backend == "opengl":
+            app.renderer.shaders.build("glow", GLOW_VERT, GLOW_FRAG, material=GLOW_MATERIAL)
+        else:
+            app.renderer.shaders.build("glow", GLOW_WGSL, material=GLOW_MATERIAL)
+        assets = app.scene.assets
+        assets.material("red", MaterialData("glow", color=(0.9, 0.1, 0.1)))  # glow forgotten
+        assets.material("green", MaterialData("glow", color=(0.1, 0.8, 0.2), params={"glow": 1.5}))
+        app.run(frames=2)
+        x, y = pixel_of(app, VISIBLE_POINT["red cube"])
+        assert app.capture()[y, x, :3].max() == 0, "the red cube should draw black"
+        picked = pick(app, x, y)
+        assert picked.entity == entities["red cube"] and picked.material == "red"
+        capture = capture_frame(app)
+        blocks = {d.material: d.blocks["Material"]["values"] for d in capture.draws}
+        assert blocks["red"]["glow"] == 0.0 and blocks["green"]["glow"] == 1.5
+    finally:
+        app.close()
+
+
+def test_recipe_a_wrong_depth_test_shows_in_the_pipeline_state(backend: str) -> None:
+    """The floor's material turns its depth test off: drawn after the blue cube it covers it. A pick on the blue
+    cube's top names the floor, and the floor's draw shows a compare that always passes."""
+    from gandalf_core.resources import MaterialData
+
+    app, entities = inspector_app(backend, sky=False, shadows=False, pane=False)
+    try:
+        assets = app.scene.assets
+        floor = assets.materials["floor"]
+        assets.material("floor", MaterialData(floor.shader, color=floor.color, params=floor.params, depth_test=False))
+        app.run(frames=2)
+        picked = pick(app, *pixel_of(app, VISIBLE_POINT["blue cube"]))
+        assert picked.entity == entities["floor"], picked.describe()
+        capture = capture_frame(app)
+        state = {d.material: d.state for d in capture.draws}
+        assert state["floor"]["depth_compare"] == ("GL_ALWAYS" if backend == "opengl" else "always")
+        assert state["blue"]["depth_compare"] == ("GL_LEQUAL" if backend == "opengl" else "less-equal")
+    finally:
+        app.close()
