@@ -23,8 +23,8 @@ sys.path.insert(0, str(ROOT / "scripts"))
 
 def shoot(backend: str, width: int, height: int, out: Path) -> Path:
     import numpy as np
-
     from editor_screenshots import build_scene
+
     from gandalf_core import Application, InfoComponent
     from gandalf_core.components import LightComponent
     from step07_advanced.editor import enable_editor
