@@ -35,8 +35,11 @@ __all__ = ["NOT_RECORDING", "DrawRecord", "FrameCapture", "FrameRecorder", "Pass
 class FrameRecorder:
     """Receives a renderer's pass and draw hooks while one frame is captured (see :func:`capture_frame`)."""
 
-    def __init__(self, renderer: Any, timing: bool = True) -> None:
+    def __init__(self, renderer: Any, timing: bool = True, describe: bool = True) -> None:
+        """``timing``: GPU times (:mod:`.gpu_timing`); ``describe``: each draw's state, blocks and resources (False:
+        names, counts and times only, what a benchmark reading per-pass GPU times needs, at little cost)."""
         self.renderer = renderer
+        self.describe = describe
         # Compute code reaches the capture through its context or device (see compute_recorded).
         _ACTIVE[id(renderer.ctx if renderer.backend == "opengl" else renderer.device)] = self
         self.timer: GpuTimer | None = gpu_timer(renderer) if timing else None
@@ -195,6 +198,12 @@ class FrameRecorder:
                   reverse_z: bool, sky: str | None) -> DrawRecord:
         index = self._draws
         self._draws += 1
+        if not self.describe:
+            return DrawRecord(index, pass_name, mesh.name if mesh is not None else None,
+                              material.name if material is not None else None, shader.name, [],
+                              batch.count if batch is not None else 1, batch.first_instance if batch is not None else 0,
+                              [int(r) for r in batch.rows] if batch is not None else [], 0, 0, [], {}, {}, [], [],
+                              bool(batch is not None and batch.mirrored), sky)
         return describe_draw(self.renderer, index, pass_name, shader, batch, material, mesh, reverse_z,
                              self._blocks, sky)
 
@@ -218,10 +227,13 @@ def compute_recorded(context: Any, label: str, workgroups: tuple[int, ...], *, s
     return recorder.dispatch(label, workgroups, shader, list(buffers), where)
 
 
-def capture_frame(app: Any, timing: bool = True, dt: float | None = None) -> FrameCapture:
-    """Run one frame of ``app`` with its renderer recording, and return the capture (entities named)."""
+def capture_frame(app: Any, timing: bool = True, dt: float | None = None, describe: bool = True) -> FrameCapture:
+    """Run one frame of ``app`` with its renderer recording, and return the capture (entities named).
+
+    A benchmark that wants GPU milliseconds per pass: ``capture_frame(app, describe=False)``, then
+    ``{p.name: p.gpu_ms for p in capture.passes}`` and ``capture.frame_gpu_ms``."""
     renderer = app.renderer
-    recorder = FrameRecorder(renderer, timing)
+    recorder = FrameRecorder(renderer, timing, describe)
     renderer.recorder = recorder
     try:
         app.step(dt)

@@ -261,3 +261,17 @@ def test_recipe_a_wrong_depth_test_shows_in_the_pipeline_state(backend: str) -> 
         assert state["blue"]["depth_compare"] == ("GL_LEQUAL" if backend == "opengl" else "less-equal")
     finally:
         app.close()
+
+
+def test_a_timing_only_capture_gives_the_same_passes_and_draws(backend: str, timed: None) -> None:
+    """What a benchmark reads (``describe=False``): the same passes and draws, with GPU times, no details."""
+    app, _entities, full, _ = _captured(backend)
+    try:
+        light = capture_frame(app, describe=False)
+        assert light.pass_names() == full.pass_names()
+        assert [(d.mesh, d.material, d.instances) for d in light.draws] == \
+            [(d.mesh, d.material, d.instances) for d in full.draws]
+        assert all(p.gpu_ms is not None for p in light.passes) and light.frame_gpu_ms
+        assert all(d.blocks == {} and d.state == {} for d in light.draws)
+    finally:
+        app.close()
