@@ -29,8 +29,9 @@ COLORS = {"red": (0.9, 0.1, 0.1), "green": (0.1, 0.8, 0.2), "blue": (0.15, 0.2, 
 SHININESS = {"red": 8.0, "green": 16.0, "blue": 64.0, "floor": 4.0}
 
 
-def inspector_scene(sky: bool = True, shadows: bool = True, pane: bool = True) -> tuple[Scene, dict[str, object]]:
-    """The scene and its entities by name."""
+def inspector_scene(sky: bool = True, shadows: bool = True, pane: bool = True,
+                    one_material: bool = False) -> tuple[Scene, dict[str, object]]:
+    """The scene and its entities by name (``one_material``: the three cubes all green, one instanced draw)."""
     scene = Scene("inspector")
     scene.assets.mesh("floor", plane(10.0, 1))
     scene.assets.mesh("cube", cube(1.0))
@@ -47,6 +48,8 @@ def inspector_scene(sky: bool = True, shadows: bool = True, pane: bool = True) -
             continue
         mesh = "floor" if name == "floor" else "pane" if name == "pane" else "cube"
         rotation = (-60.0, 0.0, 0.0) if name == "pane" else (0.0, 0.0, 0.0)
+        if one_material and mesh == "cube":
+            material = "green"
         entities[name] = scene.create_entity(TransformComponent(position, rotation=rotation), MeshComponent(mesh),
                                              MaterialComponent(material))
     if sky:

@@ -275,3 +275,18 @@ def test_a_timing_only_capture_gives_the_same_passes_and_draws(backend: str, tim
         assert all(d.blocks == {} and d.state == {} for d in light.draws)
     finally:
         app.close()
+
+
+def test_picking_tells_the_instances_of_one_instanced_draw_apart(backend: str) -> None:
+    """The three cubes share one material: one draw of three instances; a pick names each cube's own entity."""
+    app, entities = inspector_app(backend, sky=False, shadows=False, pane=False, one_material=True)
+    try:
+        app.run(frames=2)
+        capture = capture_frame(app)
+        (cubes,) = [d for d in capture.draws if d.mesh == "cube"]
+        assert cubes.instances == 3
+        for name in ("red cube", "green cube", "blue cube"):
+            picked = pick(app, *pixel_of(app, VISIBLE_POINT[name]))
+            assert picked.draw.index == cubes.index and picked.entity == entities[name], picked.describe()
+    finally:
+        app.close()
