@@ -78,6 +78,36 @@ def display_rgba(texels: np.ndarray) -> np.ndarray:
     return np.ascontiguousarray(np.dstack([grey8, grey8, grey8, np.full_like(grey8, 255)]))
 
 
+def upload_display(renderer: Any, rgba: np.ndarray, texture: Any = None) -> tuple[Any, Any]:
+    """``rgba`` (from :func:`display_rgba`) in a plain RGBA8 texture a GUI can show: ``(texture, shown)``, where
+    ``shown`` is what a GUI renderer registers (the GL texture, the wgpu texture's view). ``texture`` (one this
+    function made, of the same size) is written again instead of making a new one."""
+    height, width = rgba.shape[:2]
+    if renderer.backend == "opengl":
+        renderer.make_current()
+        if texture is None:
+            texture = renderer.ctx.texture((width, height), 4)
+        texture.write(np.ascontiguousarray(rgba).tobytes())
+        return texture, texture
+    import wgpu
+
+    if texture is None:
+        texture = renderer.device.create_texture(size=(width, height, 1), format="rgba8unorm", label="texture viewer",
+                                                 usage=wgpu.TextureUsage.TEXTURE_BINDING | wgpu.TextureUsage.COPY_DST)
+    renderer.device.queue.write_texture({"texture": texture, "mip_level": 0, "origin": (0, 0, 0)},
+                                        np.ascontiguousarray(rgba), {"offset": 0, "bytes_per_row": 4 * width},
+                                        (width, height, 1))
+    return texture, texture.create_view()
+
+
+def release_display(texture: Any) -> None:
+    """Free a texture :func:`upload_display` made."""
+    if hasattr(texture, "release"):
+        texture.release()
+    else:
+        texture.destroy()
+
+
 # --- OpenGL ---------------------------------------------------------------------------------------
 _GL_TEXTURE_2D, _GL_TEXTURE_CUBE_MAP, _GL_CUBE_FACE0 = 0x0DE1, 0x8513, 0x8515
 _GL_BINDING = {_GL_TEXTURE_2D: 0x8069, _GL_TEXTURE_CUBE_MAP: 0x8514}

@@ -162,34 +162,24 @@ class FramePanelSystem(PanelSystem):
         self.editor.invalidate_gui()
 
     def _upload(self, rgba: np.ndarray) -> None:
-        """The viewer's image as a texture the GUI can show (replaced when its size changes)."""
-        renderer = self.editor.app.renderer
-        height, width = rgba.shape[:2]
-        if self._display is None or self._display_size != (width, height):
-            self._forget_display()
-            if renderer.backend == "opengl":
-                renderer.make_current()
-                self._display = renderer.ctx.texture((width, height), 4)
-            else:
-                import wgpu
+        """The viewer's image as a texture the GUI can show (made again when its size changes)."""
+        from gandalf_core.render.texture_readback import upload_display
 
-                self._display = renderer.device.create_texture(
-                    size=(width, height, 1), format="rgba8unorm",
-                    usage=wgpu.TextureUsage.TEXTURE_BINDING | wgpu.TextureUsage.COPY_DST, label="texture viewer")
-            self._display_size = (width, height)
-            shown = self._display if renderer.backend == "opengl" else self._display.create_view()
+        size = rgba.shape[1::-1]
+        if self._display is not None and self._display_size != size:
+            self._forget_display()
+        self._display, shown = upload_display(self.editor.app.renderer, rgba, self._display)
+        if self._display_ref is None:
+            self._display_size = size
             self._display_key, self._display_ref = self.editor._gui.texture_ref(shown)
-        if renderer.backend == "opengl":
-            self._display.write(rgba.tobytes())
-        else:
-            renderer.device.queue.write_texture({"texture": self._display, "mip_level": 0, "origin": (0, 0, 0)},
-                                                rgba, {"offset": 0, "bytes_per_row": 4 * width}, (width, height, 1))
 
     def _forget_display(self) -> None:
+        from gandalf_core.render.texture_readback import release_display
+
         if self._display_key is not None:
             self.editor._gui.forget_texture(self._display_key)
         if self._display is not None:
-            self._display.release() if hasattr(self._display, "release") else self._display.destroy()
+            release_display(self._display)
         self._display = self._display_ref = self._display_key = None
 
     def on_destroy_system(self) -> None:
