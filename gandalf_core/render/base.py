@@ -17,7 +17,6 @@ import numpy as np
 
 from ..resources.assets import Assets
 from .frame import PASS_SHADERS, DrawBatch, FrameData, instance_capacity
-from .frame_records import NOT_RECORDING
 from .library import ResourceLib
 from .patches import check_patch_draw
 from .shader_files import engine_shader_files
@@ -47,7 +46,7 @@ class Renderer(ABC):
     #: The buffer of the frame's instance rows (grown by :meth:`_instance_capacity`).
     _instance_buffer: Any = None
     #: A :class:`~gandalf_core.render.capture.FrameRecorder` while a frame is captured, else None: the pass and draw
-    #: loops call it (see :meth:`_recorded`), so a frame that is not captured pays one attribute test per draw.
+    #: loops call it, so a frame that is not captured pays one test of a local variable per draw.
     recorder: Any = None
 
     def __init__(self, width: int, height: int, window: Any = None) -> None:
@@ -185,14 +184,6 @@ class Renderer(ABC):
                                 "bytes; an indirect draw reads 16 (vertex count, instance count, first vertex, "
                                 "first instance)")
         return buffer
-
-    def _recorded(self, pass_name: str, where: Any, shader: Any, batch: Any = None, material: Any = None,
-                  mesh: Any = None, reverse_z: bool = False, sky: str | None = None) -> Any:
-        """The capture's ``with`` around one draw call (nothing unless a frame is being captured)."""
-        recorder = self.recorder
-        if recorder is None:
-            return NOT_RECORDING
-        return recorder.draw(pass_name, where, shader, batch, material, mesh, reverse_z, sky)
 
     def pass_shader(self, kind: str) -> Any:
         """The shader of one of the engine's own passes (``"sky"``, ``"shadow"``: :data:`.frame.PASS_SHADERS`),

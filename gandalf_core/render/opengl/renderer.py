@@ -210,9 +210,12 @@ class OpenGLRenderer(Renderer):
                 sky = None
             self._apply_state(material.data, data.reverse_z, batch.mirrored)
             material.apply()
-            with self._recorded("transparent" if batch.transparent else "opaque", None, material.shader, batch,
-                                material, mesh, data.reverse_z):
+            if recorder is None:
                 self._draw_batch(material.shader, mesh, batch)
+            else:  # a frame capture: one record per draw
+                with recorder.draw("transparent" if batch.transparent else "opaque", None, material.shader, batch,
+                                   material, mesh, data.reverse_z):
+                    self._draw_batch(material.shader, mesh, batch)
         if sky is not None:
             self._draw_sky(sky, data.reverse_z, data.skybox)
         self._clip_depth(False)  # overlays and other GL code expect OpenGL's default
@@ -271,12 +274,17 @@ class OpenGLRenderer(Renderer):
         ctx.disable(moderngl.BLEND | moderngl.CULL_FACE)  # both faces cast: open meshes and planes too
         ctx.enable(moderngl.DEPTH_TEST)
         ctx.depth_func = "<="
+        recorder = self.recorder
         for batch, material, mesh in draws:
-            if not batch.transparent:
-                with self._recorded("shadow", None, shader, batch, material, mesh):
+            if batch.transparent:
+                continue
+            if recorder is None:
+                self._draw_batch(shader, mesh, batch)
+            else:
+                with recorder.draw("shadow", None, shader, batch, material, mesh):
                     self._draw_batch(shader, mesh, batch)
-        if self.recorder is not None:
-            self.recorder.end_target()
+        if recorder is not None:
+            recorder.end_target()
         texture.use(location=ENGINE_SAMPLERS["u_shadow_map"])
         self.stats["shadow_passes"] += 1
     # --8<-- [end:shadow_pass]
@@ -293,7 +301,8 @@ class OpenGLRenderer(Renderer):
         vao, texture = sky
         self._apply_state(SKY_STATE, reverse_z)
         texture.use(location=0)
-        with self._recorded("sky", None, self._sky[0], reverse_z=reverse_z, sky=name):
+        with NOT_RECORDING if self.recorder is None else self.recorder.draw("sky", None, self._sky[0],
+                                                                            reverse_z=reverse_z, sky=name):
             vao.render(moderngl.TRIANGLES, vertices=3)
         self.stats["draw_calls"] += 1
 

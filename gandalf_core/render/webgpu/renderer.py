@@ -180,7 +180,8 @@ class WebGPURenderer(Renderer):
             pipeline, bind_group = sky
             rpass.set_pipeline(pipeline)
             rpass.set_bind_group(1, bind_group)
-            with self._recorded("sky", rpass, self.pass_shader("sky"), reverse_z=data.reverse_z, sky=data.skybox):
+            with NOT_RECORDING if recorder is None else recorder.draw(
+                    "sky", rpass, self.pass_shader("sky"), reverse_z=data.reverse_z, sky=data.skybox):
                 rpass.draw(3)
             self.stats["draw_calls"] += 1
 
@@ -191,9 +192,12 @@ class WebGPURenderer(Renderer):
             rpass.set_pipeline(pipeline)
             if material.bind_group is not None:
                 rpass.set_bind_group(1, material.bind_group)
-            with self._recorded("transparent" if batch.transparent else "opaque", rpass, material.shader, batch,
-                                material, mesh, data.reverse_z):
+            if recorder is None:
                 self._draw_batch(rpass, material.shader, mesh, attributes, batch)
+            else:  # a frame capture: one record per draw
+                with recorder.draw("transparent" if batch.transparent else "opaque", rpass, material.shader, batch,
+                                   material, mesh, data.reverse_z):
+                    self._draw_batch(rpass, material.shader, mesh, attributes, batch)
         if sky is not None:
             draw_sky()
         with recorder.overlay(rpass) if recorder is not None and self.overlays else NOT_RECORDING:
@@ -278,8 +282,11 @@ class WebGPURenderer(Renderer):
                 continue
             pipeline, attributes = self._shadow_pipeline(shader, mesh)
             rpass.set_pipeline(pipeline)
-            with self._recorded("shadow", rpass, shader, batch, material, mesh):
+            if recorder is None:
                 self._draw_batch(rpass, shader, mesh, attributes, batch)
+            else:
+                with recorder.draw("shadow", rpass, shader, batch, material, mesh):
+                    self._draw_batch(rpass, shader, mesh, attributes, batch)
         if recorder is not None:
             recorder.end_target(rpass)
         rpass.end()
