@@ -152,11 +152,21 @@ class FrameRecorder:
         self._close_pass(where)
 
     # --- the result ----------------------------------------------------------------------------------
+    def abandon(self) -> None:
+        """Give up a capture whose frame never ran (or failed): no read-back, the timer's queries freed."""
+        self._unregister()
+        if self.timer is not None:
+            self.timer.release()
+            self.timer = None
+
+    def _unregister(self) -> None:
+        for key in [k for k, recorder in _ACTIVE.items() if recorder is self]:
+            del _ACTIVE[key]
+
     def finish(self) -> FrameCapture:
         """The capture, with the GPU times read back (waits for the GPU once)."""
         frame_ms: list[float] = []
-        for key in [k for k, recorder in _ACTIVE.items() if recorder is self]:
-            del _ACTIVE[key]
+        self._unregister()
         if self.timer is not None:
             ms = self.timer.results()
             for i, p in enumerate(self.passes):
@@ -237,6 +247,9 @@ def capture_frame(app: Any, timing: bool = True, dt: float | None = None, descri
     renderer.recorder = recorder
     try:
         app.step(dt)
+    except BaseException:
+        recorder.abandon()
+        raise
     finally:
         renderer.recorder = None
     capture = recorder.finish()

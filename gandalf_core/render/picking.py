@@ -75,11 +75,14 @@ def pick_frame(renderer: Any, data: Any, scene: Any, x: int, y: int) -> Pick:
         raise ValueError(f"pick: pixel ({x}, {y}) lies outside the {renderer.width}x{renderer.height} frame")
     recorder = FrameRecorder(renderer, timing=False)
     overlays, renderer.overlays = renderer.overlays, []  # the scene alone: no GUI drawn over it
-    renderer.recorder = recorder
+    previous, renderer.recorder = renderer.recorder, recorder
     try:
         renderer.render(data, scene.assets)
+    except BaseException:
+        recorder.abandon()
+        raise
     finally:
-        renderer.recorder = None
+        renderer.recorder = previous  # a capture the editor has armed goes on with the next frame
         renderer.overlays = overlays
     capture = recorder.finish()
     name_entities(capture, scene)

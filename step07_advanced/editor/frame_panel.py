@@ -110,15 +110,15 @@ class FramePanelSystem(PanelSystem):
             name_entities(self.capture, self.scene)
             self.selected_draw = None
             self.editor.invalidate_gui()
-        if self._want_capture:
-            self._want_capture = False
-            self._recorder = FrameRecorder(renderer)
-            renderer.recorder = self._recorder
-        if self._want_pick is not None:
+        if self._want_pick is not None:  # before a capture is armed: a pick draws a frame of its own
             x, y = self._want_pick
             self._want_pick = None
             self.editor.attempt(self._pick, x, y, ts)
             self.editor.invalidate_gui()
+        if self._want_capture:
+            self._want_capture = False
+            self._recorder = FrameRecorder(renderer)
+            renderer.recorder = self._recorder
         if self.panel_shown():
             self._refresh_texture()
 
@@ -183,8 +183,9 @@ class FramePanelSystem(PanelSystem):
         self._display = self._display_ref = self._display_key = None
 
     def on_destroy_system(self) -> None:
-        if self._recorder is not None:
+        if self._recorder is not None:  # armed, its frame not run: given up
             self.editor.app.renderer.recorder = None
+            self._recorder.abandon()
             self._recorder = None
         self._forget_display()
 

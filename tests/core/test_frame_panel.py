@@ -93,3 +93,17 @@ def test_the_texture_viewer_shows_a_cube_face_and_reads_out_texels(app) -> None:
     system.view_texture("frame depth")
     app.run(frames=2)
     assert system.texels.shape == (editor.viewport.target.size[1], editor.viewport.target.size[0])
+
+
+def test_a_capture_armed_when_the_editor_goes_leaves_nothing_behind(app) -> None:
+    from gandalf_core.render import capture
+
+    editor = enable_editor(app)
+    editor.show_panel("frame")
+    app.run(frames=2)
+    editor.panel_system("frame").request_capture()
+    app.scene.run_system(editor.panel_system("frame"), 1 / 60)  # armed: the next render would record
+    assert app.renderer.recorder is not None
+    editor.disable()
+    assert app.renderer.recorder is None and not capture._ACTIVE
+    app.run(frames=2)
