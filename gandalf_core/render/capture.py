@@ -109,12 +109,13 @@ class FrameRecorder:
 
     @contextmanager
     def draw(self, pass_name: str, where: Any, shader: Any, batch: Any = None, material: Any = None,
-             mesh: Any = None, reverse_z: bool = False, sky: str | None = None) -> Iterator[None]:
+             mesh: Any = None, reverse_z: bool = False, sky: str | None = None,
+             pipeline: Any = None) -> Iterator[None]:
         """Around one draw call: records it (state, blocks, resources) and times it (``sky``: the sky pass's cube
-        texture)."""
+        texture; ``pipeline``: WebGPU's pipeline, whose creation state the record shows)."""
         if self._pass is None or self._pass.name != pass_name:
             self._open_pass(pass_name, where)
-        record = self._describe(pass_name, shader, batch, material, mesh, reverse_z, sky)
+        record = self._describe(pass_name, shader, batch, material, mesh, reverse_z, sky, pipeline)
         if pass_name != "shadow":
             self.reverse_z = reverse_z
         self._pass.draws.append(record)
@@ -205,7 +206,7 @@ class FrameRecorder:
             self._pass = None
 
     def _describe(self, pass_name: str, shader: Any, batch: Any, material: Any, mesh: Any,
-                  reverse_z: bool, sky: str | None) -> DrawRecord:
+                  reverse_z: bool, sky: str | None, pipeline: Any = None) -> DrawRecord:
         index = self._draws
         self._draws += 1
         if not self.describe:
@@ -215,7 +216,7 @@ class FrameRecorder:
                               [int(r) for r in batch.rows] if batch is not None else [], 0, 0, [], {}, {}, [], [],
                               bool(batch is not None and batch.mirrored), sky)
         return describe_draw(self.renderer, index, pass_name, shader, batch, material, mesh, reverse_z,
-                             self._blocks, sky)
+                             self._blocks, sky, pipeline)
 
 
 #: The recorder capturing a frame of each context or device (by id), while it captures.

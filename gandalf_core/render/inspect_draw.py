@@ -2,8 +2,8 @@
 
 Called by :class:`~gandalf_core.render.capture.FrameRecorder` only while a frame is captured. OpenGL's state is read
 back from the context (``glGet``) at the moment of the draw, so a state the renderer did not mean to leave shows as
-it was; WebGPU's pipelines cannot be read back, so their state is the one the renderer's pipeline key stands for
-(the material's blend, depth and cull, reverse-Z, mirrored winding).
+it was; WebGPU's pipelines cannot be read back, so their state is the one each was created with (the renderer keeps
+the descriptors' primitive, depth-stencil and target parts by pipeline).
 """
 
 from __future__ import annotations
@@ -49,14 +49,21 @@ def _gl_state() -> dict[str, Any]:
     return state
 
 
-def _wgpu_state(data: Any, reverse_z: bool, mirrored: bool, shadow: bool) -> dict[str, Any]:
-    if shadow:
-        return {"depth_compare": "less-equal", "depth_write": True, "cull": "none", "front_face": "ccw",
-                "blend": "none (depth only)"}
-    compare = ("greater-equal" if reverse_z else "less-equal") if data.depth_test else "always"
-    return {"depth_compare": compare, "depth_write": bool(data.depth_write), "cull": data.cull,
-            "front_face": "cw" if mirrored else "ccw",
-            "blend": "none" if data.blend == "opaque" else data.blend}
+def _wgpu_state(renderer: Any, pipeline: Any) -> dict[str, Any]:
+    """The state ``pipeline`` was created with (the renderer keeps it: a GPU pipeline cannot be read back)."""
+    created = renderer.pipeline_states.get(id(pipeline)) if pipeline is not None else None
+    if created is None:
+        return {"pipeline": "not recorded"}
+    primitive, depth, targets = created["primitive"], created["depth_stencil"], created["targets"]
+    blend = targets[0].get("blend") if targets else None
+    return {
+        "depth_compare": depth["depth_compare"], "depth_write": bool(depth["depth_write_enabled"]),
+        "cull": primitive.get("cull_mode", "none"), "front_face": primitive.get("front_face", "ccw"),
+        "blend": ("none (depth only)" if not targets else "none" if blend is None else
+                  f"{blend['color']['src_factor']}, {blend['color']['dst_factor']} / alpha "
+                  f"{blend['alpha']['src_factor']}, {blend['alpha']['dst_factor']}"),
+        "topology": primitive["topology"],
+    }
 
 
 def _texture_info(renderer: Any, slot: str, name: str) -> dict[str, Any]:
@@ -79,23 +86,19 @@ def _shader_files(renderer: Any, shader: Any) -> list[str]:
 
 
 def describe_draw(renderer: Any, index: int, pass_name: str, shader: Any, batch: Any, material: Any, mesh: Any,
-                  reverse_z: bool, engine_blocks: dict[str, dict[str, Any]], sky: str | None = None) -> DrawRecord:
+                  reverse_z: bool, engine_blocks: dict[str, dict[str, Any]], sky: str | None = None,
+                  pipeline: Any = None) -> DrawRecord:
     """The record of one draw (see :class:`~gandalf_core.render.capture.DrawRecord`)."""
     gl = renderer.backend == "opengl"
     shadow = pass_name == "shadow"
     data = material.data if material is not None else None
     # --- pipeline state ---
-    if gl:
-        state = _gl_state()
-    else:
-        from .frame import SKY_STATE
-
-        state = _wgpu_state(data if data is not None else SKY_STATE, reverse_z,
-                            bool(batch is not None and batch.mirrored), shadow)
+    state = _gl_state() if gl else _wgpu_state(renderer, pipeline)
     patch = getattr(shader, "patch_vertices", None) if gl else None
     indirect = mesh is not None and mesh.data.indirect is not None
-    state["topology"] = ("patches" if patch else "triangles") if gl else "triangle-list"
-    if indirect:
+    if gl:
+        state["topology"] = "patches" if patch else "triangles"
+    if indirect and "topology" in state:
         state["topology"] += " (indirect)"
     state["patch_size"] = patch if patch else (mesh.data.patch_size if mesh is not None else None)
     # --- uniform blocks ---

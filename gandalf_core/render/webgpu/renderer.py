@@ -102,6 +102,9 @@ class WebGPURenderer(Renderer):
         self.buffers = BufferLib(self.device, self.stats)
         self.materials = MaterialLib(self.device, self.shaders, self.textures, self.stats, self.buffers)
         self._pipelines: dict[tuple[Any, ...], Any] = {}
+        #: What each pipeline was created with (by id): its primitive, depth-stencil and colour target states, which
+        #: a frame capture shows (a GPU pipeline cannot be read back).
+        self.pipeline_states: dict[int, dict[str, Any]] = {}
         # Released or replaced textures take the bind groups that use them along (rebuilt on their next use).
         self.textures.on_forget.append(self._forget_materials_using)
         self.textures.on_forget.append(lambda name: self._sky_materials.pop(name, None))
@@ -181,7 +184,8 @@ class WebGPURenderer(Renderer):
             rpass.set_pipeline(pipeline)
             rpass.set_bind_group(1, bind_group)
             with NOT_RECORDING if recorder is None else recorder.draw(
-                    "sky", rpass, self.pass_shader("sky"), reverse_z=data.reverse_z, sky=data.skybox):
+                    "sky", rpass, self.pass_shader("sky"), reverse_z=data.reverse_z, sky=data.skybox,
+                    pipeline=pipeline):
                 rpass.draw(3)
             self.stats["draw_calls"] += 1
 
@@ -196,7 +200,7 @@ class WebGPURenderer(Renderer):
                 self._draw_batch(rpass, material.shader, mesh, attributes, batch)
             else:  # a frame capture: one record per draw
                 with recorder.draw("transparent" if batch.transparent else "opaque", rpass, material.shader, batch,
-                                   material, mesh, data.reverse_z):
+                                   material, mesh, data.reverse_z, pipeline=pipeline):
                     self._draw_batch(rpass, material.shader, mesh, attributes, batch)
         if sky is not None:
             draw_sky()
@@ -285,7 +289,7 @@ class WebGPURenderer(Renderer):
             if recorder is None:
                 self._draw_batch(rpass, shader, mesh, attributes, batch)
             else:
-                with recorder.draw("shadow", rpass, shader, batch, material, mesh):
+                with recorder.draw("shadow", rpass, shader, batch, material, mesh, pipeline=pipeline):
                     self._draw_batch(rpass, shader, mesh, attributes, batch)
         if recorder is not None:
             recorder.end_target(rpass)
@@ -300,15 +304,16 @@ class WebGPURenderer(Renderer):
         pipeline = self._pipelines.get(key)
         if pipeline is None:
             buffers = self._buffer_layouts(mesh, attributes)
+            # Both faces cast, so open meshes and single planes throw shadows too.
+            primitive = {"topology": "triangle-list", "cull_mode": "none"}
+            depth = {"format": DEPTH_FORMAT, "depth_write_enabled": True, "depth_compare": "less-equal"}
             pipeline = self._pipelines[key] = self._checked(shader, mesh, lambda: self.device.create_render_pipeline(
                 layout=self.device.create_pipeline_layout(bind_group_layouts=[self.frame_layout]),
                 vertex={"module": shader.module, "entry_point": shader.vertex_entry, "buffers": buffers},
                 fragment={"module": shader.module, "entry_point": shader.fragment_entry, "targets": []},
-                # Both faces cast, so open meshes and single planes throw shadows too.
-                primitive={"topology": "triangle-list", "cull_mode": "none"},
-                depth_stencil={"format": DEPTH_FORMAT, "depth_write_enabled": True, "depth_compare": "less-equal"},
-                label="shadow pipeline",
+                primitive=primitive, depth_stencil=depth, label="shadow pipeline",
             ))
+            self.pipeline_states[id(pipeline)] = {"primitive": primitive, "depth_stencil": depth, "targets": []}
             self.stats["pipelines_created"] += 1
         return pipeline, attributes
     # --8<-- [end:shadow_pass]
@@ -394,16 +399,16 @@ class WebGPURenderer(Renderer):
         if data.blend != "opaque":
             target["blend"] = _BLEND[data.blend]
         compare = ("greater-equal" if reverse_z else "less-equal") if data.depth_test else "always"
+        # A mirrored instance's triangles wind the other way round on screen.
+        primitive = {"topology": "triangle-list", "front_face": "cw" if mirrored else "ccw", "cull_mode": data.cull}
+        depth = {"format": DEPTH_FORMAT, "depth_write_enabled": data.depth_write, "depth_compare": compare}
         pipeline = self.device.create_render_pipeline(
             layout=self.device.create_pipeline_layout(bind_group_layouts=layouts),
             vertex={"module": shader.module, "entry_point": shader.vertex_entry, "buffers": buffers},
             fragment={"module": shader.module, "entry_point": shader.fragment_entry, "targets": [target]},
-            # A mirrored instance's triangles wind the other way round on screen.
-            primitive={"topology": "triangle-list", "front_face": "cw" if mirrored else "ccw",
-                       "cull_mode": data.cull},
-            depth_stencil={"format": DEPTH_FORMAT, "depth_write_enabled": data.depth_write, "depth_compare": compare},
-            label=f"{shader.name} pipeline",
+            primitive=primitive, depth_stencil=depth, label=f"{shader.name} pipeline",
         )
+        self.pipeline_states[id(pipeline)] = {"primitive": primitive, "depth_stencil": depth, "targets": [target]}
         self.stats["pipelines_created"] += 1
         return pipeline
 
@@ -455,6 +460,7 @@ class WebGPURenderer(Renderer):
         for lib in (self.materials, self.buffers, self.meshes, self.shaders, self.textures):
             lib.release()
         self._pipelines.clear()
+        self.pipeline_states.clear()
         self._sky_materials.clear()
         if self._instance_buffer is not None:
             self._instance_buffer.destroy()
