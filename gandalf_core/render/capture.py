@@ -5,13 +5,15 @@ its pass and draw loops call (one call where a render pass begins and ends, one 
 the overlays): capturing costs only the captured frame. :func:`capture_frame` captures the next frame of an
 application and returns a :class:`FrameCapture`:
 
-* passes in order: ``shadow`` (the shadow map), ``opaque``, ``sky``, ``transparent``, ``overlay`` (the editor's GUI),
-  each with the target it draws into; a frame rendered twice (the editor's viewport, then the window) lists both;
+* passes in order: ``compute`` (dispatches of code that uses :func:`compute_recorded`), ``shadow`` (the shadow map),
+  ``opaque``, ``sky``, ``transparent``, ``overlay`` (the editor's GUI), each with the target it draws into; a frame
+  rendered twice (the editor's viewport, then the window) lists both;
 * per draw: the entities of its instances, the mesh (vertex and index counts, the vertex layout), the material, the
   shader and its files, the pipeline state (blend, depth compare and writes, cull, front face, topology, patch size;
-  in OpenGL read back from the context as it was when the draw ran), the bound uniform blocks **decoded by field
-  name** from their one declaration (:meth:`~gandalf_core.resources.layout.BlockLayout.unpack` of the bytes
-  written: read back from the GL buffers, the bytes queued to the WebGPU ones), the bound textures and buffers;
+  in OpenGL read back from the context as it was when the draw ran, in WebGPU as the pipeline was created), the
+  bound uniform blocks **decoded by field name** from their one declaration
+  (:meth:`~gandalf_core.resources.layout.BlockLayout.unpack` of the bytes written: read back from the GL buffers,
+  the bytes queued to the WebGPU ones), the bound textures and buffers;
 * GPU milliseconds per pass and per draw when the device can time them (:mod:`.gpu_timing`), with
   :attr:`FrameCapture.timing` saying which timer ran or why none did.
 """
