@@ -45,6 +45,9 @@ class Renderer(ABC):
     backend: str
     #: The buffer of the frame's instance rows (grown by :meth:`_instance_capacity`).
     _instance_buffer: Any = None
+    #: A :class:`~gandalf_core.render.capture.FrameRecorder` while a frame is captured, else None: the pass and draw
+    #: loops call it, so a frame that is not captured pays one test of a local variable per draw.
+    recorder: Any = None
 
     def __init__(self, width: int, height: int, window: Any = None) -> None:
         if int(width) <= 0 or int(height) <= 0:

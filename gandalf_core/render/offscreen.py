@@ -114,8 +114,8 @@ class OffscreenTarget:
             size=(*self.size, 1), format=COLOR_FORMAT,
             usage=usage.RENDER_ATTACHMENT | usage.COPY_SRC | usage.TEXTURE_BINDING, label="offscreen colour",
         )
-        depth = device.create_texture(size=(*self.size, 1), format=DEPTH_FORMAT, usage=usage.RENDER_ATTACHMENT,
-                                      label="offscreen depth")
+        depth = device.create_texture(size=(*self.size, 1), format=DEPTH_FORMAT,
+                                      usage=usage.RENDER_ATTACHMENT | usage.COPY_SRC, label="offscreen depth")
         self._own = {"_color": color, "_depth": depth, "color_view": color.create_view(),
                      "depth_view": depth.create_view()}
         # The same bytes in a plain rgba8unorm texture (read without sRGB decoding): what a GUI that blends bytes

@@ -399,6 +399,33 @@ class BlockLayout:
         shape, dtype, offset, strides = plan
         return np.ndarray(shape, dtype, buffer=block, offset=offset, strides=strides)
 
+    def unpack(self, data: bytes | np.ndarray) -> dict[str, Any]:
+        """The values of a block's bytes by field name, as :meth:`pack` takes them (the inverse of :meth:`pack`):
+        numbers, lists for vectors and arrays, ``(n, n)`` nested lists for matrices (maths convention), dicts for
+        structs. What a frame inspector shows of a block as written."""
+        raw = np.frombuffer(bytes(data), dtype=np.uint8)
+        if len(raw) < self.size:
+            raise LayoutError(f"block '{self.name}': {len(raw)} bytes given, the block has {self.size}")
+        block = raw[: _round_up(4, self.size)].copy()
+        return self._unpack_fields(block, self.fields, 0)
+
+    def _unpack_fields(self, block: np.ndarray, fields: tuple[FieldInfo, ...], base: int) -> dict[str, Any]:
+        out: dict[str, Any] = {}
+        for f in fields:
+            t, offset = f.type, base + f.offset
+            if isinstance(t, Struct):
+                out[f.name] = self._unpack_fields(block, f.members, offset)
+            elif isinstance(t, Array) and isinstance(t.elem, Struct):
+                out[f.name] = [self._unpack_fields(block, f.members, offset + i * f.stride) for i in range(t.count)]
+            else:
+                leaf = t.elem if isinstance(t, Array) else t
+                shape, strides = leaf.shape, _leaf_strides(leaf, self.rules)
+                if isinstance(t, Array):
+                    shape, strides = (t.count, *shape), (f.stride, *strides)
+                value = np.ndarray(shape, leaf.dtype, buffer=block, offset=offset, strides=strides)
+                out[f.name] = value.item() if value.ndim == 0 else value.tolist()
+        return out
+
     def _prepare(self) -> None:
         """The defaults, written once (fields without one stay zero until given), and the fields that can be
         written straight into the block's float32 words: float leaves and arrays with no padding inside."""

@@ -16,10 +16,12 @@ from typing import Any
 from gandalf_core.ecs import Component
 
 #: The panel kinds the editor's systems draw.
-PANEL_KINDS = ("menu", "viewport", "hierarchy", "inspector", "systems", "content", "console", "stats", "file")
+PANEL_KINDS = ("menu", "viewport", "hierarchy", "inspector", "systems", "content", "console", "stats", "file", "frame")
+#: Panels that start hidden (the View menu shows them).
+HIDDEN_AT_START = frozenset({"frame"})
 
 
-_TITLES = {"menu": "Menu bar", "content": "Content browser", "file": "Scene file"}
+_TITLES = {"menu": "Menu bar", "content": "Content browser", "file": "Scene file", "frame": "Frame inspector"}
 
 
 def _pair(name: str, value: Sequence[float]) -> tuple[float, float]:

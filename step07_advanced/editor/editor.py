@@ -24,7 +24,7 @@ from gandalf_core.ecs import Scene, System
 
 from .actions import EditorActions
 from .commands import Command, CommandStack
-from .components import EditorPanelComponent
+from .components import HIDDEN_AT_START, EditorPanelComponent
 from .console_log import EditorLog
 
 #: The editor of each application that has one enabled.
@@ -50,6 +50,7 @@ def _default_layout(width: int, height: int) -> list[tuple[str, str | None, tupl
         ("systems", None, (left + mid, top + 0.46 * h), (right, 0.24 * h)),
         ("stats", None, (left + mid, top + 0.70 * h), (right, 0.17 * h)),
         ("file", None, (left + mid, top + 0.87 * h), (right, 0.13 * h)),
+        ("frame", None, (left + mid, top), (right, h)),  # hidden at start, over the right column
     ]
 
 
@@ -148,7 +149,7 @@ class Editor(EditorActions):
                 if system.updates_each_frame:
                     scene.move_system(system, render[0])
         renderer = self.app.renderer
-        panels = [EditorPanelComponent(kind, title, position=pos, size=size)
+        panels = [EditorPanelComponent(kind, title, kind not in HIDDEN_AT_START, position=pos, size=size)
                   for kind, title, pos, size in _default_layout(renderer.width, renderer.height)]
         self._installed[id(scene)] = (scene, [scene.create_entity(p) for p in panels], systems)
     # --8<-- [end:install]

@@ -12,6 +12,7 @@ from imgui_bundle import imgui
 from .components import EditorPanelComponent, is_editor_entity
 from .console_panel import ConsolePanelSystem
 from .content_panel import ContentPanelSystem
+from .frame_panel import FramePanelSystem
 from .hierarchy_panel import HierarchyPanelSystem
 from .inspector_panel import InspectorPanelSystem, _edited
 from .menu_bar import MenuBarSystem
@@ -71,7 +72,7 @@ class FilePanelSystem(PanelSystem):
 #: into its texture during the frame's update).
 PANEL_SYSTEMS: tuple[type[PanelSystem], ...] = (
     MenuBarSystem, ViewportPanelSystem, HierarchyPanelSystem, InspectorPanelSystem, SystemsPanelSystem,
-    ContentPanelSystem, ConsolePanelSystem, StatsPanelSystem, FilePanelSystem,
+    ContentPanelSystem, ConsolePanelSystem, StatsPanelSystem, FilePanelSystem, FramePanelSystem,
 )
 
 __all__ = ["PANEL_SYSTEMS", "PanelSystem", "_edited"]

@@ -13,6 +13,7 @@ import moderngl
 import numpy as np
 
 from gandalf_core.render.capabilities import require_opengl
+from gandalf_core.render.capture import compute_recorded
 from gandalf_core.render.shader_files import load_shader
 
 from .particles import WORKGROUP_SIZE, SimParams
@@ -38,7 +39,10 @@ class GLParticleKernel:
         self.params.write(params.pack())
         self.params.bind_to_uniform_block(SIM_BINDING)  # the kernel's SimParams block
         self.particles.bind_to_storage_buffer(1)
-        self.program.run(group_x=-(-self.count // WORKGROUP_SIZE))
+        groups = -(-self.count // WORKGROUP_SIZE)
+        with compute_recorded(self.ctx, "particles", (groups,), shader=COMPUTE_GLSL.name,
+                              buffers=[("particles", self.particles.size)]):  # listed in a frame capture
+            self.program.run(group_x=groups)
         # Make the kernel's writes visible to the next dispatch and to the read-back.
         self.ctx.memory_barrier()
 

@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 import wgpu
 
+from gandalf_core.render.capture import compute_recorded
 from gandalf_core.render.shader_files import load_shader
 
 from .particles import WORKGROUP_SIZE, SimParams
@@ -51,7 +52,10 @@ class WGPUParticleKernel:
         compute = encoder.begin_compute_pass()
         compute.set_pipeline(self.pipeline)
         compute.set_bind_group(0, self.bind_group)
-        compute.dispatch_workgroups(-(-self.count // WORKGROUP_SIZE))
+        groups = -(-self.count // WORKGROUP_SIZE)
+        with compute_recorded(self.device, "particles", (groups,), shader=COMPUTE_WGSL.name,
+                              buffers=[("particles", self.particles.size)], where=compute):  # listed in a capture
+            compute.dispatch_workgroups(groups)
         compute.end()
         queue.submit([encoder.finish()])
 

@@ -19,6 +19,7 @@ from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
 from ..base import Renderer
 from ..capabilities import FLOOR, GL_FLOOR, CapabilityError, Needs, check, opengl_offer
 from ..frame import FRAME_FLOATS, INSTANCE_STRIDE, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
+from ..frame_records import NOT_RECORDING
 from ..texture_checks import check_target_size
 from . import raw_gl
 from .libs import (
@@ -178,6 +179,9 @@ class OpenGLRenderer(Renderer):
         # scratch texture unit, which on some drivers is the unit the shadow map is bound to.
         draws = self.resolve_draws(data, assets)
         sky = self._prepare_sky(data.skybox, assets) if data.skybox is not None else None
+        recorder = self.recorder  # a frame capture (render/capture.py), or None
+        if recorder is not None:
+            recorder.begin_frame(self._frame_ubo.read(), self._lights_ubo.read())
         if data.shadows:
             self._clip_depth(False)  # the shadow map is projected for OpenGL's [-1, 1]
             self._draw_shadow_map(draws)
@@ -195,22 +199,33 @@ class OpenGLRenderer(Renderer):
         self.ctx.enable_direct(GL_FRAMEBUFFER_SRGB)
         fbo.depth_mask = True
         r, g, b, a = (float(x) for x in data.clear_color)
+        if recorder is not None:
+            recorder.begin_target(f"frame {self.width}x{self.height} (GL_SRGB8_ALPHA8, depth)")
         fbo.clear(r, g, b, a, depth=0.0 if data.reverse_z else 1.0)
         # --8<-- [end:clear]
         self._state = None
         for batch, material, mesh in draws:
             if batch.transparent and sky is not None:  # the sky goes behind blended surfaces
-                self._draw_sky(sky, data.reverse_z)
+                self._draw_sky(sky, data.reverse_z, data.skybox)
                 sky = None
             self._apply_state(material.data, data.reverse_z, batch.mirrored)
             material.apply()
-            self._draw_batch(material.shader, mesh, batch)
+            if recorder is None:
+                self._draw_batch(material.shader, mesh, batch)
+            else:  # a frame capture: one record per draw
+                with recorder.draw("transparent" if batch.transparent else "opaque", None, material.shader, batch,
+                                   material, mesh, data.reverse_z):
+                    self._draw_batch(material.shader, mesh, batch)
         if sky is not None:
-            self._draw_sky(sky, data.reverse_z)
+            self._draw_sky(sky, data.reverse_z, data.skybox)
         self._clip_depth(False)  # overlays and other GL code expect OpenGL's default
-        for overlay in self.overlays:
-            overlay(self)
-            self._state = None  # an overlay may change any GL state
+        with recorder.overlay() if recorder is not None and self.overlays else NOT_RECORDING:
+            for overlay in self.overlays:
+                overlay(self)
+                self._state = None  # an overlay may change any GL state
+        if recorder is not None:
+            recorder.end_target()
+            recorder.end_frame()
         self._present()
 
     def _draw_batch(self, shader: GLShader, mesh: GLMesh, batch: DrawBatch) -> None:
@@ -251,15 +266,25 @@ class OpenGLRenderer(Renderer):
         texture, framebuffer = self._shadow
         shader = self.pass_shader("shadow")
         framebuffer.use()
+        if self.recorder is not None:
+            self.recorder.begin_target(f"shadow map {SHADOW_MAP_SIZE}x{SHADOW_MAP_SIZE} (depth)")
         framebuffer.depth_mask = True
         framebuffer.clear(depth=1.0)
         ctx = self.ctx
         ctx.disable(moderngl.BLEND | moderngl.CULL_FACE)  # both faces cast: open meshes and planes too
         ctx.enable(moderngl.DEPTH_TEST)
         ctx.depth_func = "<="
-        for batch, _material, mesh in draws:
-            if not batch.transparent:
+        recorder = self.recorder
+        for batch, material, mesh in draws:
+            if batch.transparent:
+                continue
+            if recorder is None:
                 self._draw_batch(shader, mesh, batch)
+            else:
+                with recorder.draw("shadow", None, shader, batch, material, mesh):
+                    self._draw_batch(shader, mesh, batch)
+        if recorder is not None:
+            recorder.end_target()
         texture.use(location=ENGINE_SAMPLERS["u_shadow_map"])
         self.stats["shadow_passes"] += 1
     # --8<-- [end:shadow_pass]
@@ -271,12 +296,14 @@ class OpenGLRenderer(Renderer):
             self._sky = (shader, self.ctx.vertex_array(shader.program, []))
         return self._sky[1], self.resolve_sky(texture_name, assets)
 
-    def _draw_sky(self, sky: tuple[moderngl.VertexArray, Any], reverse_z: bool) -> None:
+    def _draw_sky(self, sky: tuple[moderngl.VertexArray, Any], reverse_z: bool, name: str = "") -> None:
         """A full-screen triangle at the far plane, after the opaque geometry."""
         vao, texture = sky
         self._apply_state(SKY_STATE, reverse_z)
         texture.use(location=0)
-        vao.render(moderngl.TRIANGLES, vertices=3)
+        with NOT_RECORDING if self.recorder is None else self.recorder.draw("sky", None, self._sky[0],
+                                                                            reverse_z=reverse_z, sky=name):
+            vao.render(moderngl.TRIANGLES, vertices=3)
         self.stats["draw_calls"] += 1
 
     def _upload_instances(self, instances: np.ndarray) -> None:

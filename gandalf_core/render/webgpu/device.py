@@ -9,6 +9,7 @@ from typing import Any
 import wgpu
 
 from ..capabilities import FLOOR, Needs, check, webgpu_offer
+from ..gpu_timing import timing_features
 
 
 def _quiet_runtime_dir() -> None:
@@ -35,5 +36,7 @@ def request_device(canvas_context: Any = None, needs: Needs = FLOOR) -> tuple[An
             "no WebGPU adapter found: install a Vulkan driver (on Debian: mesa-vulkan-drivers libvulkan1)"
         )
     check(needs, webgpu_offer(adapter))
-    return adapter, adapter.request_device_sync(required_features=list(needs.features),
+    # GPU timing (gpu_timing.py) only when asked for: a device without it behaves as a browser's would.
+    features = list(dict.fromkeys([*needs.features, *timing_features(adapter.features)]))
+    return adapter, adapter.request_device_sync(required_features=features,
                                                 required_limits=needs.device_limits(adapter.limits))

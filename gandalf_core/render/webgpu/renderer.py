@@ -21,6 +21,7 @@ from ..base import Renderer
 from ..capabilities import FLOOR, Needs
 from ..errors import ShaderCompileError
 from ..frame import FRAME_FLOATS, INSTANCE_STRIDE, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
+from ..frame_records import NOT_RECORDING
 from ..shader_files import engine_shader_files, load_shader
 from ..texture_checks import check_target_size
 from .device import request_device
@@ -101,6 +102,9 @@ class WebGPURenderer(Renderer):
         self.buffers = BufferLib(self.device, self.stats)
         self.materials = MaterialLib(self.device, self.shaders, self.textures, self.stats, self.buffers)
         self._pipelines: dict[tuple[Any, ...], Any] = {}
+        #: What each pipeline was created with (by id): its primitive, depth-stencil and colour target states, which
+        #: a frame capture shows (a GPU pipeline cannot be read back).
+        self.pipeline_states: dict[int, dict[str, Any]] = {}
         # Released or replaced textures take the bind groups that use them along (rebuilt on their next use).
         self.textures.on_forget.append(self._forget_materials_using)
         self.textures.on_forget.append(lambda name: self._sky_materials.pop(name, None))
@@ -128,7 +132,8 @@ class WebGPURenderer(Renderer):
             usage=usage.RENDER_ATTACHMENT | usage.COPY_SRC | usage.TEXTURE_BINDING,
         )
         self._depth = self.device.create_texture(
-            size=(self.width, self.height, 1), format=DEPTH_FORMAT, usage=usage.RENDER_ATTACHMENT
+            size=(self.width, self.height, 1), format=DEPTH_FORMAT,
+            usage=usage.RENDER_ATTACHMENT | usage.COPY_SRC,  # COPY_SRC: read back by the texture viewer
         )
         self.color_view = self._color.create_view()
         self.depth_view = self._depth.create_view()
@@ -152,9 +157,13 @@ class WebGPURenderer(Renderer):
                  for batch, material, mesh in self.resolve_draws(data, assets)]
         sky = self._sky_draw(data.skybox, assets, data.reverse_z) if data.skybox is not None else None
         encoder = self.device.create_command_encoder()
+        recorder = self.recorder  # a frame capture (render/capture.py), or None
+        if recorder is not None:
+            recorder.begin_frame(data.frame, data.lights, encoder)
         frame_group = self._frame_group
         if data.shadows:
             frame_group = self._draw_shadow_map(encoder, draws)
+        target = f"frame {self.width}x{self.height} ({self._target_format}, {DEPTH_FORMAT})"
         # --8<-- [start:clear]
         rpass = encoder.begin_render_pass(
             color_attachments=[{
@@ -165,6 +174,7 @@ class WebGPURenderer(Renderer):
                 "view": self.depth_view, "depth_clear_value": 0.0 if data.reverse_z else 1.0,
                 "depth_load_op": "clear", "depth_store_op": "store",
             },
+            timestamp_writes=recorder.begin_target(target, encoder) if recorder is not None else None,
         )
         rpass.set_bind_group(0, frame_group)
         # --8<-- [end:clear]
@@ -173,7 +183,10 @@ class WebGPURenderer(Renderer):
             pipeline, bind_group = sky
             rpass.set_pipeline(pipeline)
             rpass.set_bind_group(1, bind_group)
-            rpass.draw(3)
+            with NOT_RECORDING if recorder is None else recorder.draw(
+                    "sky", rpass, self.pass_shader("sky"), reverse_z=data.reverse_z, sky=data.skybox,
+                    pipeline=pipeline):
+                rpass.draw(3)
             self.stats["draw_calls"] += 1
 
         for batch, material, mesh, (pipeline, attributes) in draws:
@@ -183,12 +196,22 @@ class WebGPURenderer(Renderer):
             rpass.set_pipeline(pipeline)
             if material.bind_group is not None:
                 rpass.set_bind_group(1, material.bind_group)
-            self._draw_batch(rpass, material.shader, mesh, attributes, batch)
+            if recorder is None:
+                self._draw_batch(rpass, material.shader, mesh, attributes, batch)
+            else:  # a frame capture: one record per draw
+                with recorder.draw("transparent" if batch.transparent else "opaque", rpass, material.shader, batch,
+                                   material, mesh, data.reverse_z, pipeline=pipeline):
+                    self._draw_batch(rpass, material.shader, mesh, attributes, batch)
         if sky is not None:
             draw_sky()
-        for overlay in self.overlays:  # last, in the same pass: no second pass over the frame
-            overlay(self, rpass)
+        with recorder.overlay(rpass) if recorder is not None and self.overlays else NOT_RECORDING:
+            for overlay in self.overlays:  # last, in the same pass: no second pass over the frame
+                overlay(self, rpass)
+        if recorder is not None:
+            recorder.end_target(rpass)
         rpass.end()
+        if recorder is not None:
+            recorder.end_frame(encoder)
         if surface_texture is not None and not direct:
             self._present.draw(encoder, self.color_view, surface_texture.create_view())
         queue.submit([encoder.finish()])
@@ -243,24 +266,33 @@ class WebGPURenderer(Renderer):
         if self._shadow is None:
             texture = self.device.create_texture(
                 size=(SHADOW_MAP_SIZE, SHADOW_MAP_SIZE, 1), format=DEPTH_FORMAT,
-                usage=wgpu.TextureUsage.RENDER_ATTACHMENT | wgpu.TextureUsage.TEXTURE_BINDING, label="shadow map",
+                usage=wgpu.TextureUsage.RENDER_ATTACHMENT | wgpu.TextureUsage.TEXTURE_BINDING
+                | wgpu.TextureUsage.COPY_SRC, label="shadow map",
             )
             view = texture.create_view()
             self._shadow = (texture, view, self._create_frame_group(view))
             self.stats["shadow_maps_created"] += 1
         _texture, view, frame_group = self._shadow
         shader = self.pass_shader("shadow")
+        recorder = self.recorder
+        target = f"shadow map {SHADOW_MAP_SIZE}x{SHADOW_MAP_SIZE} ({DEPTH_FORMAT})"
         rpass = encoder.begin_render_pass(color_attachments=[], depth_stencil_attachment={
             "view": view, "depth_clear_value": 1.0, "depth_load_op": "clear", "depth_store_op": "store",
-        })
+        }, timestamp_writes=recorder.begin_target(target, encoder) if recorder is not None else None)
         # The stand-in group: the map itself must not be bound while this pass writes it.
         rpass.set_bind_group(0, self._frame_group)
-        for batch, _material, mesh, _pipeline in draws:
+        for batch, material, mesh, _pipeline in draws:
             if batch.transparent:
                 continue
             pipeline, attributes = self._shadow_pipeline(shader, mesh)
             rpass.set_pipeline(pipeline)
-            self._draw_batch(rpass, shader, mesh, attributes, batch)
+            if recorder is None:
+                self._draw_batch(rpass, shader, mesh, attributes, batch)
+            else:
+                with recorder.draw("shadow", rpass, shader, batch, material, mesh, pipeline=pipeline):
+                    self._draw_batch(rpass, shader, mesh, attributes, batch)
+        if recorder is not None:
+            recorder.end_target(rpass)
         rpass.end()
         self.stats["shadow_passes"] += 1
         return frame_group
@@ -272,15 +304,16 @@ class WebGPURenderer(Renderer):
         pipeline = self._pipelines.get(key)
         if pipeline is None:
             buffers = self._buffer_layouts(mesh, attributes)
+            # Both faces cast, so open meshes and single planes throw shadows too.
+            primitive = {"topology": "triangle-list", "cull_mode": "none"}
+            depth = {"format": DEPTH_FORMAT, "depth_write_enabled": True, "depth_compare": "less-equal"}
             pipeline = self._pipelines[key] = self._checked(shader, mesh, lambda: self.device.create_render_pipeline(
                 layout=self.device.create_pipeline_layout(bind_group_layouts=[self.frame_layout]),
                 vertex={"module": shader.module, "entry_point": shader.vertex_entry, "buffers": buffers},
                 fragment={"module": shader.module, "entry_point": shader.fragment_entry, "targets": []},
-                # Both faces cast, so open meshes and single planes throw shadows too.
-                primitive={"topology": "triangle-list", "cull_mode": "none"},
-                depth_stencil={"format": DEPTH_FORMAT, "depth_write_enabled": True, "depth_compare": "less-equal"},
-                label="shadow pipeline",
+                primitive=primitive, depth_stencil=depth, label="shadow pipeline",
             ))
+            self.pipeline_states[id(pipeline)] = {"primitive": primitive, "depth_stencil": depth, "targets": []}
             self.stats["pipelines_created"] += 1
         return pipeline, attributes
     # --8<-- [end:shadow_pass]
@@ -366,16 +399,16 @@ class WebGPURenderer(Renderer):
         if data.blend != "opaque":
             target["blend"] = _BLEND[data.blend]
         compare = ("greater-equal" if reverse_z else "less-equal") if data.depth_test else "always"
+        # A mirrored instance's triangles wind the other way round on screen.
+        primitive = {"topology": "triangle-list", "front_face": "cw" if mirrored else "ccw", "cull_mode": data.cull}
+        depth = {"format": DEPTH_FORMAT, "depth_write_enabled": data.depth_write, "depth_compare": compare}
         pipeline = self.device.create_render_pipeline(
             layout=self.device.create_pipeline_layout(bind_group_layouts=layouts),
             vertex={"module": shader.module, "entry_point": shader.vertex_entry, "buffers": buffers},
             fragment={"module": shader.module, "entry_point": shader.fragment_entry, "targets": [target]},
-            # A mirrored instance's triangles wind the other way round on screen.
-            primitive={"topology": "triangle-list", "front_face": "cw" if mirrored else "ccw",
-                       "cull_mode": data.cull},
-            depth_stencil={"format": DEPTH_FORMAT, "depth_write_enabled": data.depth_write, "depth_compare": compare},
-            label=f"{shader.name} pipeline",
+            primitive=primitive, depth_stencil=depth, label=f"{shader.name} pipeline",
         )
+        self.pipeline_states[id(pipeline)] = {"primitive": primitive, "depth_stencil": depth, "targets": [target]}
         self.stats["pipelines_created"] += 1
         return pipeline
 
@@ -427,6 +460,7 @@ class WebGPURenderer(Renderer):
         for lib in (self.materials, self.buffers, self.meshes, self.shaders, self.textures):
             lib.release()
         self._pipelines.clear()
+        self.pipeline_states.clear()
         self._sky_materials.clear()
         if self._instance_buffer is not None:
             self._instance_buffer.destroy()
