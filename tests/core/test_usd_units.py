@@ -345,3 +345,15 @@ def test_lights_written_for_other_tools_read_back_by_their_usdlux_inputs_alone(t
     lights = lights_by_name(load_scene(path))
     assert {name: light.intensity for name, light in lights.items()} == pytest.approx(
         {"sun": 0.7, "bulb": 2.5, "sky": 0.3}, rel=1e-6)
+
+
+def test_a_textured_dome_says_its_texture_is_not_read(tmp_path):
+    from step07_advanced.usd import USDSceneWarning
+
+    path = tmp_path / "dome.usda"
+    path.write_text('#usda 1.0\n(\n    defaultPrim = "World"\n)\n\ndef Xform "World"\n{\n'
+                    '    def DomeLight "sky"\n    {\n        asset inputs:texture:file = @sky.exr@\n'
+                    '        float inputs:intensity = 0.5\n    }\n}\n')
+    with pytest.warns(USDSceneWarning, match=r"</World/sky>: a DomeLight's texture is not read"):
+        scene = load_scene(path)
+    assert lights_by_name(scene)["sky"].intensity == pytest.approx(0.5)
