@@ -5,7 +5,7 @@ frame: the offscreen target, the render pass and the copy back are their subject
 else (textures, uniforms, lights) and draw into the same frame through :func:`gl_frame` and :func:`wgpu_frame`,
 which hold exactly those calls, written once. :func:`image` turns read-back bytes into a picture (OpenGL's rows
 start at the bottom, WebGPU's at the top) and :func:`command` gives every lesson the same command line
-(``--out FILE.png --size WIDTHxHEIGHT``).
+(``--out FILE.png --size WIDTHxHEIGHT``). :func:`webgpu_limits` is what a WebGPU lesson asks its device for.
 """
 
 from __future__ import annotations
@@ -15,6 +15,8 @@ from collections.abc import Callable
 from typing import Any
 
 import numpy as np
+
+from gandalf_core.render.capabilities import FLOOR, Needs, check, webgpu_offer
 
 #: The background every lesson clears to (opaque black), in both APIs.
 CLEAR = (0.0, 0.0, 0.0, 1.0)
@@ -27,6 +29,20 @@ def image(pixels: bytes, width: int, height: int, *, bottom_up: bool) -> np.ndar
     """
     rows = np.frombuffer(pixels, dtype=np.uint8).reshape(height, width, 4)
     return (rows[::-1] if bottom_up else rows).copy()
+
+
+def webgpu_limits(adapter: Any, what: str, needs: Needs = FLOOR) -> dict[str, int]:
+    """The limits a WebGPU lesson ``what`` requests its device with: WebGPU's defaults (what every implementation
+    guarantees), raised where ``needs`` says, after checking that ``adapter`` has them (a
+    :class:`~gandalf_core.render.capabilities.CapabilityError` that names the lesson and the gap).
+
+    ``adapter.request_device_sync()`` without limits asks wgpu for everything the adapter has: a lesson that then
+    used more than the defaults would run here and fail on another GPU or in a browser."""
+    if adapter is None:
+        raise RuntimeError(f"{what}: no WebGPU adapter found: install a Vulkan driver (on Debian: "
+                           "mesa-vulkan-drivers libvulkan1)")
+    check(needs, webgpu_offer(adapter), what)
+    return needs.device_limits(adapter.limits)
 
 
 def gl_frame(ctx: Any, width: int, height: int, draw: Callable[[], None], *, depth: bool = False) -> np.ndarray:

@@ -22,7 +22,10 @@ def render(width: int = 64, height: int = 48, color: tuple = COLOR) -> np.ndarra
     """One cleared frame as (height, width, 4) uint8, top row first."""
     # --8<-- [start:frame]
     adapter = wgpu.gpu.request_adapter_sync(power_preference="high-performance")
-    device = adapter.request_device_sync()
+    # Ask for WebGPU's default limits, not for all this adapter has (wgpu's default): what runs here then
+    # runs on every WebGPU implementation, and a lesson that needs more says so before it starts.
+    limits = lesson.webgpu_limits(adapter, "step01_window.clear_wgpu")
+    device = adapter.request_device_sync(required_limits=limits)
     target = device.create_texture(size=(width, height, 1), format="rgba8unorm",
                                    usage=wgpu.TextureUsage.RENDER_ATTACHMENT | wgpu.TextureUsage.COPY_SRC)
     encoder = device.create_command_encoder()  # nothing runs yet: we record

@@ -31,7 +31,9 @@ struct VertexOut { @builtin(position) position: vec4<f32>, @location(0) color: v
 
 def render(width: int = 64, height: int = 64) -> np.ndarray:
     """The triangle on black as (height, width, 4) uint8, top row first."""
-    device = wgpu.gpu.request_adapter_sync(power_preference="high-performance").request_device_sync()
+    adapter = wgpu.gpu.request_adapter_sync(power_preference="high-performance")
+    limits = lesson.webgpu_limits(adapter, "step02_triangle.vertex_buffer_wgpu")  # the defaults, not all it has
+    device = adapter.request_device_sync(required_limits=limits)
     module = device.create_shader_module(code=SHADER)
     # --8<-- [start:buffer]
     buffer = device.create_buffer_with_data(data=VERTICES.astype(np.float32).tobytes(),

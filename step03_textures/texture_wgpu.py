@@ -30,7 +30,9 @@ struct VertexOut { @builtin(position) position: vec4<f32>, @location(0) uv: vec2
 
 def render(width: int = 64, height: int = 64) -> np.ndarray:
     """The tiled texture as (height, width, 4) uint8, top row first."""
-    device = wgpu.gpu.request_adapter_sync(power_preference="high-performance").request_device_sync()
+    adapter = wgpu.gpu.request_adapter_sync(power_preference="high-performance")
+    limits = lesson.webgpu_limits(adapter, "step03_textures.texture_wgpu")  # the defaults, not all it has
+    device = adapter.request_device_sync(required_limits=limits)
     module = device.create_shader_module(code=SHADER)
     pipeline = device.create_render_pipeline(
         layout="auto", vertex={"module": module, "entry_point": "vs_main"},

@@ -16,7 +16,10 @@ cleanly, against ``d``, for each depth mapping?
   ``ulp(z(d)) / |dz/dd|`` with ``z`` the window depth in [0, 1], and one float32 step of the position ``d``
   itself (``ulp(d)``, the vertex data's own precision): the larger of the two. Standard depth crowds its float
   values near 1 and loses precision as ``d² / near``; reverse-Z pairs the float's dense values near 0 with the
-  far distances, so its step grows only as ``d`` (relative precision about 1e-7, whatever near is);
+  far distances, so its step grows only as ``d`` (relative precision about 1e-7, whatever near is). Where the
+  depth passes through OpenGL's clip range [-1, 1] on its way to the buffer (wgpu's OpenGL backend writes 2z - 1
+  and the viewport halves it back), the stored value keeps only the precision of 2z - 1, a number near 1 in
+  size: there one step is ``max(ulp(2z - 1) / 2, ulp(z))`` and reverse-Z gains nothing;
 * the time: a depth mapping costs nothing per pixel — the study reports the median frame time of the two planes
   per mapping for completeness.
 
@@ -64,11 +67,15 @@ def window_depth(d: np.ndarray, near: float, far: float, reverse_z: bool) -> np.
     return 1.0 - z if reverse_z else z
 
 
-def bound(d: np.ndarray, near: float, far: float, reverse_z: bool) -> np.ndarray:
-    """The analytic smallest separation: max(one float32 depth step as distance, one float32 step of d)."""
+def bound(d: np.ndarray, near: float, far: float, reverse_z: bool, through_gl_range: bool = False) -> np.ndarray:
+    """The analytic smallest separation: max(one float32 depth step as distance, one float32 step of d).
+    ``through_gl_range``: the depth is stored as (2z - 1 + 1) / 2, each part rounded to float32."""
     z = window_depth(d, near, far, reverse_z)
     slope = near / (d * d) / (1.0 - near / far)  # |dz/dd|, the same for both mappings
-    depth_step = np.spacing(np.abs(z).astype(np.float32)).astype(np.float64) / slope
+    step = np.spacing(np.abs(z).astype(np.float32)).astype(np.float64)
+    if through_gl_range:
+        step = np.maximum(step, np.spacing(np.abs(2.0 * z - 1.0).astype(np.float32)).astype(np.float64) / 2.0)
+    depth_step = step / slope
     return np.maximum(depth_step, np.spacing(d.astype(np.float32)).astype(np.float64))
 
 
@@ -102,9 +109,14 @@ class DepthRig:
         from gandalf_core.math import quat_from_axis_angle
 
         self.app = Application(backend, *SIZE, headless=True, fixed_dt=1 / 60)
+        #: Whether this implementation stores depth through OpenGL's clip range (see :func:`bound`).
+        self.through_gl_range = False
         if backend == "opengl":
             self.app.renderer.shaders.build("unlit", SHADER_DIR / "unlit.vert", SHADER_DIR / "unlit.frag")
         else:
+            from gandalf_core.render.webgpu.device import depth_through_gl_range
+
+            self.through_gl_range = depth_through_gl_range(self.app.renderer.adapter)
             self.app.renderer.shaders.build("unlit", SHADER_DIR / "unlit.wgsl")
         scene, front, back = _scene(near, far, reverse_z)
         self.app.add_scene(scene)
@@ -163,7 +175,7 @@ def run_study(backends, mappings, per_decade: int, resolution: float, frames: in
             try:
                 for d in distances(near, far, per_decade):
                     s = smallest_separation(rig, float(d), far, resolution)
-                    b = float(bound(np.array([d]), near, far, reverse_z)[0])
+                    b = float(bound(np.array([d]), near, far, reverse_z, rig.through_gl_range)[0])
                     rows.append({"backend": backend, "mapping": label, "near": near,
                                  "far": far if math.isfinite(far) else "inf", "reverse_z": reverse_z,
                                  "distance": float(d), "min_separation": s, "bound": b})

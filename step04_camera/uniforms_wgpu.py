@@ -41,7 +41,9 @@ def perspective(aspect: float) -> np.ndarray:
 
 def render(width: int = 64, height: int = 64) -> np.ndarray:
     """Both triangles as (height, width, 4) uint8, top row first."""
-    device = wgpu.gpu.request_adapter_sync(power_preference="high-performance").request_device_sync()
+    adapter = wgpu.gpu.request_adapter_sync(power_preference="high-performance")
+    limits = lesson.webgpu_limits(adapter, "step04_camera.uniforms_wgpu")  # the defaults, not all it has
+    device = adapter.request_device_sync(required_limits=limits)
     module = device.create_shader_module(code=SHADER)
     vertices = device.create_buffer_with_data(data=TRIANGLE.astype("f4").tobytes(), usage=wgpu.BufferUsage.VERTEX)
     pipeline = device.create_render_pipeline(

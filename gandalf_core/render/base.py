@@ -178,7 +178,7 @@ class Renderer(ABC):
         renderer's buffer library and hold the four ``uint32`` of a draw (16 bytes)."""
         from ..resources import ResourceError
 
-        buffer = self.buffers.get(mesh.indirect, f"mesh '{mesh_name}' (indirect)")
+        buffer = self.buffers.get_for(mesh.indirect, "indirect", f"mesh '{mesh_name}' (indirect)")
         if buffer.size < 16:
             raise ResourceError(f"mesh '{mesh_name}'", "indirect", f"buffer '{mesh.indirect}' has {buffer.size} "
                                 "bytes; an indirect draw reads 16 (vertex count, instance count, first vertex, "

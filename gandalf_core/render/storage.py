@@ -1,7 +1,8 @@
 """Storage buffers, checked the same way for both backends' buffer libraries: what one is built from
-(:func:`buffer_bytes`), what building a name again does (:class:`StorageBufferLib`), and the bytes a shader's
-storage block or variable needs (:func:`glsl_storage_layouts`, :func:`wgsl_storage_layouts`), against which a
-material's buffers are checked when it is built (:func:`check_material_buffer`)."""
+(:func:`buffer_bytes`) and for (:func:`buffer_uses`), what building a name again does and what a use of it must
+match (:class:`StorageBufferLib`), and the bytes a shader's storage block or variable needs
+(:func:`glsl_storage_layouts`, :func:`wgsl_storage_layouts`), against which a material's buffers are checked when
+it is built (:func:`check_material_buffer`)."""
 
 from __future__ import annotations
 
@@ -32,6 +33,26 @@ def buffer_bytes(name: str, data: Any) -> tuple[bytes | None, int]:
     if size <= 0 or size % 4:
         raise ResourceError(label, "size", f"{size} bytes: a storage buffer needs a positive multiple of 4 bytes")
     return content, size
+
+
+#: What a named buffer may be used for, in words both APIs share. WebGPU's buffer usage flags follow from them
+#: (copies to and from it are always allowed); OpenGL's buffers carry no such flags, so the library keeps the words
+#: and every engine use of a buffer is checked against them in both APIs, before the driver sees it.
+BUFFER_USES = ("storage", "vertex", "index", "indirect", "uniform")
+#: What ``buffers.build(name, data)`` allows unless told otherwise: read and written by shaders (materials, compute
+#: passes), drawn from as vertices or indices, and drawn indirectly.
+DEFAULT_USES = ("storage", "vertex", "index", "indirect")
+
+
+def buffer_uses(name: str, usage: Any) -> tuple[str, ...]:
+    """The checked ``usage`` of buffer ``name``: one or more words of :data:`BUFFER_USES`."""
+    words = (usage,) if isinstance(usage, str) else tuple(usage) if isinstance(usage, (tuple, list, set)) else None
+    if not words or not all(isinstance(w, str) for w in words):
+        raise ResourceError(f"buffer '{name}'", "usage", f"expected one or more of {BUFFER_USES}, got {usage!r}")
+    unknown = [w for w in words if w not in BUFFER_USES]
+    if unknown:
+        raise ResourceError(f"buffer '{name}'", "usage", f"{unknown[0]!r} is not one of {BUFFER_USES}")
+    return tuple(w for w in BUFFER_USES if w in words)
 
 
 # --- what a shader declares -----------------------------------------------------------------------
@@ -200,18 +221,28 @@ def check_material_buffer(material: str, shader: str, buffer: str, size: int, la
         raise ResourceError(f"material '{material}'", "buffers", f"buffer '{buffer}' {problem}")
 
 
-# --- building a name again ------------------------------------------------------------------------
+# --- building a name again, and using a buffer ---------------------------------------------------
 class StorageBufferLib:
-    """``build(name, data)`` for storage buffers: the first call creates the buffer; a later call under the same
-    name writes the new data into it (an int: zeros) when the size is the same, so materials and compute passes
-    bound to it see the new contents, and is an error when the size differs (never the old buffer silently)."""
+    """``build(name, data, usage=DEFAULT_USES)`` for storage buffers: the first call creates the buffer for the
+    ``usage`` words; a later call under the same name writes the new data into it (an int: zeros) when the size and
+    usage are the same, so materials and compute passes bound to it see the new contents, and is an error otherwise
+    (never the old buffer silently). :meth:`get_for` hands a buffer to a use (``"storage"`` for a material,
+    ``"indirect"`` for a draw) only when it was built for it."""
 
     _items: dict[str, Any]
     _data: dict[str, Any]
 
-    def build(self, name: str, data: Any) -> Any:
+    @property
+    def _uses(self) -> dict[str, tuple[str, ...]]:
+        return self.__dict__.setdefault("_buffer_uses", {})
+
+    def build(self, name: str, data: Any, usage: Any = DEFAULT_USES) -> Any:
+        uses = buffer_uses(name, usage)
         if name not in self._items:
-            return super().build(name, data)  # type: ignore[misc]
+            self.building_uses = uses  # what _create makes the buffer for
+            buffer = super().build(name, data)  # type: ignore[misc]
+            self._uses[name] = uses
+            return buffer
         content, size = buffer_bytes(name, data)
         buffer = self._items[name]
         if size != buffer.size:
@@ -219,9 +250,32 @@ class StorageBufferLib:
                                 f"was built with {buffer.size} bytes and is built again with {size}: materials and "
                                 "passes bound to it would keep the old buffer; give the new one another name (or "
                                 "build it again with the same size, which writes the new data into it)")
+        if uses != self.uses_of(name):
+            raise ResourceError(f"buffer '{name}'", "usage",
+                                f"was built for {', '.join(self.uses_of(name))} and is built again for "
+                                f"{', '.join(uses)}: give the new one another name")
         self._write(buffer, content if content is not None else bytes(size))
         self._data[name] = data
         return buffer
+
+    def uses_of(self, name: str) -> tuple[str, ...]:
+        """What buffer ``name`` was built for."""
+        return self._uses.get(name, DEFAULT_USES)
+
+    def get_for(self, name: str, use: str, referrer: str = "the caller") -> Any:
+        """Buffer ``name`` for ``use`` (a word of :data:`BUFFER_USES`) by ``referrer``: a ResourceError naming the
+        buffer, the use and what it was built for when it was not built for this use."""
+        buffer = self.get(name, referrer)  # type: ignore[attr-defined]
+        if use not in self.uses_of(name):
+            built = ", ".join(self.uses_of(name))
+            raise ResourceError(f"buffer '{name}'", "usage",
+                                f"{referrer} uses it for '{use}', but it was built for {built} only: build it "
+                                f"with usage=({', '.join(repr(u) for u in (*self.uses_of(name), use))})")
+        return buffer
+
+    def forget(self, name: str) -> None:
+        self._uses.pop(name, None)
+        super().forget(name)  # type: ignore[misc]
 
     def _write(self, buffer: Any, content: bytes) -> None:
         raise NotImplementedError

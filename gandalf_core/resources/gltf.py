@@ -32,6 +32,7 @@ from typing import Any
 
 import numpy as np
 
+from gandalf_core.resources.confine import inside_folder
 from gandalf_core.resources.errors import ResourceError
 from gandalf_core.resources.material_data import MaterialData
 from gandalf_core.resources.mesh_data import MeshData
@@ -115,11 +116,7 @@ class _File:
                 return base64.b64decode(uri.split(",", 1)[1])
             except (IndexError, ValueError) as exc:
                 raise ResourceError(self.label, where, f"bad data URI: {exc}") from None
-        folder = self.path.parent.resolve()
-        file = (folder / uri).resolve()  # symlinks followed: a link to a file elsewhere lies elsewhere
-        if not self.allow_outside and not file.is_relative_to(folder):
-            raise ResourceError(self.label, where, f"the URI '{uri}' ({file}) lies outside the file's folder "
-                                                   f"{folder}: refused (allow_outside=True allows it)")
+        file = inside_folder(self.path, uri, self.label, where, "the URI", self.allow_outside)
         if not file.is_file():
             raise ResourceError(self.label, where, f"file not found: '{uri}' (looked for {file})")
         return file.read_bytes()

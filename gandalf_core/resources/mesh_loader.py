@@ -20,6 +20,7 @@ from typing import Any
 
 import numpy as np
 
+from gandalf_core.resources.confine import inside_folder
 from gandalf_core.resources.errors import ResourceError
 from gandalf_core.resources.mesh_data import MeshData
 
@@ -82,11 +83,35 @@ def _key(path: str | Path, allow_outside: bool = False) -> tuple[tuple[str, str,
     return (str(resolved), digest, allow_outside), label
 
 
+def _check_obj_files(path: Path, label: str, allow_outside: bool) -> None:
+    """An OBJ's material library and the images it names, read as trimesh reads them (the rest of the first
+    ``mtllib`` line; the rest of each ``map_Kd`` line), must lie in the OBJ's folder unless ``allow_outside``:
+    trimesh's own resolver refuses them too, but then drops the materials without a word."""
+    text = path.read_text(errors="replace")
+    at = text.find("mtllib")
+    if at < 0:
+        return
+    end = text.find("\n", at)
+    name = text[at + 6: end if end >= 0 else len(text)].strip()
+    library = inside_folder(path, name, label, "mtllib", "the material library", allow_outside)
+    if not library.is_file():
+        return
+    for number, line in enumerate(library.read_text(errors="replace").splitlines(), 1):
+        words = line.strip().split()
+        if len(words) > 1 and words[0].lower() == "map_kd":
+            image = line[line.lower().index("map_kd") + 6:].strip()
+            inside_folder(path, image, label, f"mtllib '{name}' line {number} (map_Kd)", "the image", allow_outside)
+
+
 def _trimesh_load(path: Path, allow_outside: bool) -> Any:
     """trimesh's scene of ``path``; the files it names are read through a resolver confined to its folder (trimesh's
-    own rule: paths resolved, symlinks followed) unless ``allow_outside``."""
+    own rule: paths resolved, symlinks followed) unless ``allow_outside``, and an OBJ's are checked first (a
+    :class:`ResourceError` naming the file, the line and the path)."""
     import trimesh
     from trimesh.resolvers import FilePathResolver
+
+    if path.suffix.lower() == ".obj":
+        _check_obj_files(path, f"mesh file '{path}'", allow_outside)
 
     # process=False keeps the file's vertex order and UV seams; OBJ objects stay separate parts.
     return trimesh.load(str(path), process=False, split_objects=True, group_material=False,
@@ -98,6 +123,8 @@ def _read(path: Path, label: str, allow_outside: bool = False) -> dict[str, Mesh
         raise ResourceError(label, "contents", "the file is empty")
     try:
         loaded = _trimesh_load(path, allow_outside)
+    except ResourceError:
+        raise
     except Exception as exc:  # trimesh raises many types (ValueError, KeyError, struct.error, ...) for bad files
         raise ResourceError(label, "contents", f"cannot be read as {path.suffix[1:].upper()}: {exc}") from None
     parts: dict[str, MeshData] = {}

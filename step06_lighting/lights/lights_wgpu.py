@@ -43,7 +43,9 @@ struct VertexOut { @builtin(position) position: vec4<f32>, @location(0) ndc: vec
 
 def render(width: int = 64, height: int = 64) -> np.ndarray:
     """The lit sphere as (height, width, 4) uint8, top row first."""
-    device = wgpu.gpu.request_adapter_sync(power_preference="high-performance").request_device_sync()
+    adapter = wgpu.gpu.request_adapter_sync(power_preference="high-performance")
+    limits = lesson.webgpu_limits(adapter, "step06_lighting.lights.lights_wgpu")  # the defaults, not all it has
+    device = adapter.request_device_sync(required_limits=limits)
     module = device.create_shader_module(code=SHADER)
     pipeline = device.create_render_pipeline(
         layout="auto", vertex={"module": module, "entry_point": "vs_main"},
@@ -57,7 +59,7 @@ def render(width: int = 64, height: int = 64) -> np.ndarray:
 
     def draw(rpass) -> None:
         rpass.set_pipeline(pipeline)
-        rpass.set_bind_group(0, bind_group)  # the lights' storage buffer
+        rpass.set_bind_group(0, bind_group)  # the lights' uniform buffer
         rpass.draw(3)
 
     picture = lesson.wgpu_frame(device, width, height, draw)

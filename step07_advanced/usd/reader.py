@@ -547,8 +547,10 @@ class _Reader:
             if authored(prim, "gandalf:intensity"):
                 intensity = read_float(ctx, prim, "gandalf:intensity")
             else:  # another tool's light: its power, and a range where it has faded below what 8 bits show
+                fallback = units.schema_fallback(prim, "inputs:intensity", 1.0)  # a DistantLight's: 50000
                 intensity, light_range = units.lux_intensity(
-                    prim, read_float(ctx, prim, "inputs:intensity", 1.0), read_float(ctx, prim, "inputs:exposure", 0.0),
+                    prim, read_float(ctx, prim, "inputs:intensity", fallback),
+                    read_float(ctx, prim, "inputs:exposure", 0.0),
                     self.stage_to_engine[1] if self.stage_to_engine else 1.0, self.notes)
                 if authored(prim, "gandalf:range"):
                     light_range = read_float(ctx, prim, "gandalf:range")

@@ -278,10 +278,14 @@ class _Writer:
 
     # --8<-- [start:light]
     def write_light(self, prim: Usd.Prim, light: core.LightComponent, schema: bool) -> None:
-        if schema:  # the standard UsdLux inputs (linear colour), for other USD tools
+        if schema:  # the standard UsdLux inputs (linear colour), for other USD tools (units: usd/units.py)
             api = UsdLux.LightAPI(prim)
             api.CreateColorAttr(Gf.Vec3f(*map(float, srgb_to_linear(light.color))))
-            api.CreateIntensityAttr(light.intensity)
+            # Normalised, a DistantLight's intensity is the irradiance it gives (the engine's directional
+            # intensity) and a point SphereLight's is its power / π, 4 x the engine's (power / 4π).
+            api.CreateIntensityAttr(4.0 * light.intensity if light.kind == "point" else light.intensity)
+            if light.kind != "ambient":
+                api.CreateNormalizeAttr(True)
             if light.kind == "point":
                 UsdLux.SphereLight(prim).CreateTreatAsPointAttr(True)
         write(prim, "gandalf:lightKind", T.String, light.kind)

@@ -399,6 +399,7 @@ def pxr_scene(folder: Path) -> Path:
     sun = UsdLux.DistantLight.Define(stage, "/World/sun")
     sun.AddRotateXYZOp().Set(Gf.Vec3f(-45, 30, 0))
     sun.CreateIntensityAttr(0.9)
+    sun.CreateNormalizeAttr(True)  # the intensity is then the irradiance (lux), whatever the sun's angle
     sun.CreateColorAttr(Gf.Vec3f(1.0, 0.9, 0.8))
     dome = UsdLux.DomeLight.Define(stage, "/World/sky")
     dome.CreateIntensityAttr(1.0)

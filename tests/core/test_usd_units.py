@@ -1,7 +1,9 @@
 """Other tools' USD read right: float and half xform ops (``quatf`` orient, ``float3`` translate and scale) give
 pxr's own ``ComputeLocalToWorldTransform`` to 1e-9; Z-up stages and ``metersPerUnit`` != 1 come into the engine's
 Y-up metres; UsdLux lights keep their power: ``intensity · 2^exposure``, a ``SphereLight``'s size (or
-``normalize``) and the inverse square, checked as pictures against lights of the same power in both APIs.
+``normalize``) and the inverse square, checked as pictures against lights of the same power in both APIs; a
+``DistantLight``'s radiance over its angle (or, normalised, its intensity) is the directional light's irradiance,
+a ``DomeLight``'s radiance the ambient light's, from a hand-written file.
 The files are built with pxr in a temporary folder."""
 
 from __future__ import annotations
@@ -180,3 +182,178 @@ def test_lights_of_equal_power_draw_the_same_picture(tmp_path, backend):
     # Ten times the power is brighter: the test can fail.
     brighter = load_scene(lit_file(tmp_path / "f.usda", intensity=300.0, radius=0.1))
     assert picture(brighter, backend).mean() > lit + 10.0
+
+
+# --- distant and dome lights ------------------------------------------------------------------------------
+#: A file as another tool writes it, by hand: UsdLux's radiance (intensity · 2^exposure) over a disc of the
+#: light's angle, or the irradiance itself when normalised, and a dome of uniform radiance.
+HAND_WRITTEN_LIGHTS = """#usda 1.0
+(
+    defaultPrim = "World"
+    metersPerUnit = 1
+    upAxis = "Y"
+)
+
+def Xform "World"
+{
+    def DistantLight "sun"
+    {
+    }
+
+    def DistantLight "lux"
+    {
+        float inputs:angle = 10
+        float inputs:exposure = 1
+        float inputs:intensity = 2
+        bool inputs:normalize = 1
+    }
+
+    def DistantLight "wide"
+    {
+        float inputs:angle = 60
+        float inputs:intensity = 3
+    }
+
+    def DistantLight "parallel"
+    {
+        float inputs:angle = 0
+        float inputs:intensity = 1.5
+    }
+
+    def DistantLight "beyond_a_hemisphere"
+    {
+        float inputs:angle = 270
+        float inputs:intensity = 1
+        bool inputs:normalize = 1
+    }
+
+    def DomeLight "sky"
+    {
+        float inputs:exposure = 2
+        float inputs:intensity = 0.25
+        bool inputs:normalize = 1
+    }
+}
+"""
+
+
+def lights_by_name(scene: Scene) -> dict[str, LightComponent]:
+    return {scene.get_component(e, InfoComponent).name: light for e, (light,) in scene.view(LightComponent)}
+
+
+def test_distant_and_dome_lights_follow_usdlux_units(tmp_path):
+    path = tmp_path / "lights.usda"
+    path.write_text(HAND_WRITTEN_LIGHTS)
+    lights = lights_by_name(load_scene(path))
+    disc = lambda degrees: math.pi * math.sin(math.radians(degrees) / 2) ** 2  # noqa: E731 - cos-weighted solid angle
+    expected = {
+        "sun": 50000.0 * disc(0.53),  # UsdLux's fallback sun: 50000 nits over 0.53°, about 3.4 lux
+        "lux": 2.0 * 2.0,  # normalised: the intensity (times 2^exposure) is the irradiance, whatever the angle
+        "wide": 3.0 * disc(60.0),  # 3 nits over a disc 60° across: 3·π/4
+        "parallel": 1.5,  # angle 0: a parallel light, its intensity is the irradiance
+        "beyond_a_hemisphere": 1.0 * math.pi / ((2.0 - 0.5) * math.pi),  # θ = 135°: sin² = 1/2, facing a hemisphere
+        "sky": 0.25 * 4.0,  # the surround's radiance; normalize does not apply to a dome
+    }
+    assert set(lights) == set(expected)
+    for name, value in expected.items():
+        assert lights[name].intensity == pytest.approx(value, rel=1e-6), (name, lights[name].intensity, value)
+    assert lights["sky"].kind == "ambient" and lights["sun"].kind == "directional"
+
+
+def sun_file(path: Path, **inputs: float) -> Path:
+    """A grey floor under one DistantLight straight above it, with ``inputs`` (angle, intensity, exposure,
+    normalize), seen by a camera."""
+    lines = "\n".join(f"        {'bool' if k == 'normalize' else 'float'} inputs:{k} = {v}" for k, v in inputs.items())
+    path.write_text(f"""#usda 1.0
+(
+    defaultPrim = "World"
+    upAxis = "Y"
+)
+
+def Xform "World"
+{{
+    def Mesh "floor"
+    {{
+        int[] faceVertexCounts = [4]
+        int[] faceVertexIndices = [0, 3, 2, 1]
+        point3f[] points = [(-3, 0, -3), (3, 0, -3), (3, 0, 3), (-3, 0, 3)]
+        color3f[] primvars:displayColor = [(0.5, 0.5, 0.5)]
+        uniform token subdivisionScheme = "none"
+    }}
+
+    def Camera "camera"
+    {{
+        float2 clippingRange = (0.1, 100)
+        double3 xformOp:translate = (0, 3, 4)
+        float xformOp:rotateX = -35
+        uniform token[] xformOpOrder = ["xformOp:translate", "xformOp:rotateX"]
+    }}
+
+    def DistantLight "sun"
+    {{
+{lines}
+        float xformOp:rotateX = -90
+        uniform token[] xformOpOrder = ["xformOp:rotateX"]
+    }}
+}}
+""")
+    return path
+
+
+@pytest.mark.parametrize("backend", ["opengl", "webgpu"])
+def test_distant_lights_of_equal_irradiance_draw_the_same_picture(tmp_path, backend):
+    """Irradiance 0.6 as a normalised sun of 20°, as 0.3 with exposure 1, and as the radiance 0.6 / (π·sin²10°)
+    over a 20° disc unnormalised: each draws the picture of the engine's directional light of intensity 0.6."""
+    irradiance = 0.6
+    files = {
+        "normalised": sun_file(tmp_path / "a.usda", angle=20, intensity=irradiance, normalize=1),
+        "exposure": sun_file(tmp_path / "b.usda", angle=20, intensity=irradiance / 2, exposure=1, normalize=1),
+        "radiance": sun_file(tmp_path / "c.usda", angle=20,
+                             intensity=irradiance / (math.pi * math.sin(math.radians(10.0)) ** 2)),
+    }
+    scenes = {name: load_scene(path) for name, path in files.items()}
+    by_hand = load_scene(files["normalised"])
+    bulb(by_hand).intensity = irradiance
+    expected = picture(by_hand, backend)
+    assert 20.0 < expected.mean() < 200.0, f"the floor is lit but not washed out (mean {expected.mean():.1f})"
+    for name, scene in scenes.items():
+        assert bulb(scene).intensity == pytest.approx(irradiance, rel=1e-5), name
+        got = picture(scene, backend)
+        assert np.abs(got - expected).max() <= 1, f"{name}: differs by {np.abs(got - expected).max()}"
+    # The radiance taken as the irradiance (the old reading) is far brighter: the test can fail.
+    misread = load_scene(files["radiance"])
+    bulb(misread).intensity = irradiance / (math.pi * math.sin(math.radians(10.0)) ** 2)
+    assert picture(misread, backend).mean() > expected.mean() + 10.0
+
+
+def test_lights_written_for_other_tools_read_back_by_their_usdlux_inputs_alone(tmp_path):
+    """The engine writes UsdLux inputs that mean its own lights: read back without the gandalf:* attributes,
+    each light has its intensity again."""
+    from step07_advanced.usd import save_scene
+
+    scene = Scene("lights")
+    for name, kind, intensity in (("sun", "directional", 0.7), ("bulb", "point", 2.5), ("sky", "ambient", 0.3)):
+        scene.create_entity(InfoComponent(name), TransformComponent((0.0, 1.0, 0.0)), LightComponent(kind,
+                                                                                                      intensity=intensity))
+    path = save_scene(scene, tmp_path / "out.usda", assets=False)
+    stage = Usd.Stage.Open(str(path))
+    for prim in stage.Traverse():
+        for attribute in prim.GetAttributes():
+            if attribute.GetName() in ("gandalf:intensity", "gandalf:lightColor", "gandalf:range"):
+                prim.RemoveProperty(attribute.GetName())
+    stage.GetRootLayer().Save()
+    lights = lights_by_name(load_scene(path))
+    assert {name: light.intensity for name, light in lights.items()} == pytest.approx(
+        {"sun": 0.7, "bulb": 2.5, "sky": 0.3}, rel=1e-6)
+
+
+def test_a_textured_dome_says_its_texture_is_not_read(tmp_path):
+    from step07_advanced.usd import USDSceneWarning
+
+    path = tmp_path / "dome.usda"
+    path.write_text('#usda 1.0\n(\n    defaultPrim = "World"\n)\n\ndef Xform "World"\n{\n'
+                    '    def DomeLight "sky"\n    {\n        asset inputs:texture:file = @sky.exr@\n'
+                    '        float inputs:intensity = 0.5\n    }\n}\n')
+    with pytest.warns(USDSceneWarning, match=r"</World/sky>: a DomeLight's texture is not read"):
+        scene = load_scene(path)
+    assert lights_by_name(scene)["sky"].intensity == pytest.approx(0.5)

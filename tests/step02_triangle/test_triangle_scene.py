@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from per_api import PerAPI
 
 from gandalf_core.resources import MeshData, linear_to_srgb, srgb_to_linear
 from gandalf_tools.testing import compare_images, compare_to_reference, render_frames
@@ -59,9 +60,9 @@ def test_quad_fills_its_square(backend):
 
 
 @pytest.fixture(scope="module")
-def pictures() -> dict[str, np.ndarray]:
-    return {name: render_frames(variant.create_app, TOUR_FRAMES, width=WIDTH, height=HEIGHT)
-            for name, variant in (("opengl", opengl), ("webgpu", webgpu))}
+def pictures() -> PerAPI:
+    variants = {"opengl": opengl, "webgpu": webgpu}
+    return PerAPI(lambda api: render_frames(variants[api].create_app, TOUR_FRAMES, width=WIDTH, height=HEIGHT))
 
 
 def test_opengl_and_webgpu_agree(pictures):

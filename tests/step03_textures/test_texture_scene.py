@@ -10,6 +10,7 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
+from per_api import PerAPI
 from PIL import Image
 
 from gandalf_core import InfoComponent, Scene, TransformComponent
@@ -38,8 +39,8 @@ AGAINST_REFERENCE = LocalDifferences(level=32, share=0.995)
 
 
 @pytest.fixture(scope="module")
-def pictures() -> dict[str, np.ndarray]:
-    return {b: render_frames(v.create_app, frames=FRAMES, width=W, height=H) for b, v in VARIANTS.items()}
+def pictures() -> PerAPI:
+    return PerAPI(lambda api: render_frames(VARIANTS[api].create_app, frames=FRAMES, width=W, height=H))
 
 
 def test_both_apis_draw_the_same_picture(pictures):

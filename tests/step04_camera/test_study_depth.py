@@ -3,6 +3,8 @@
 Both APIs, float32 depth: far from the camera (d = 1000, near 0.1, far 1e4) reverse-Z must separate planes at
 least 100 times closer than the standard mapping, and each measured separation must lie within a factor 8 of the
 float32 bound (one depth-buffer step, or one float32 step of d). At s = 0 the two planes must tie (green shows).
+Where the depth passes through OpenGL's clip range on its way to the buffer (wgpu's OpenGL backend), the bound
+says reverse-Z gains nothing (a factor 2 at d = 1000), and the measurement must show no real gain (less than 10).
 """
 
 from __future__ import annotations
@@ -23,11 +25,23 @@ def test_reverse_z_beats_standard_far_away_and_both_follow_the_bound(backend):
         try:
             assert rig.fights(d, 0.0), "identical planes must tie, and the later one show"
             measured[reverse_z] = study.smallest_separation(rig, d, 1e4, 1.0)
+            through_gl_range = rig.through_gl_range
         finally:
             rig.close()
-        b = study.bound(np.array([d]), 0.1, 1e4, reverse_z)[0]
+        b = study.bound(np.array([d]), 0.1, 1e4, reverse_z, through_gl_range)[0]
         assert measured[reverse_z] is not None and b / 8 < measured[reverse_z] < 8 * b, (reverse_z, measured, b)
-    assert measured[False] > 100 * measured[True], measured
+    if through_gl_range:
+        assert measured[False] < 10 * measured[True], measured
+    else:
+        assert measured[False] > 100 * measured[True], measured
+
+
+def test_through_opengls_clip_range_reverse_z_keeps_only_the_precision_near_1():
+    # z = 1e-4 (reverse-Z at d = 1000): its own float32 step is ~7e-12, but 2z - 1 = -0.9998 has steps of 6e-8.
+    d = np.array([1000.0])
+    native, through = (study.bound(d, 0.1, 1e4, True, gl)[0] for gl in (False, True))
+    standard = study.bound(d, 0.1, 1e4, False, True)[0]
+    assert through > 1000 * native and standard / 4 < through < standard, (native, through, standard)
 
 
 def test_the_bound_grows_as_d_squared_for_standard_and_as_d_for_reverse_z():

@@ -16,6 +16,7 @@ import re
 
 import numpy as np
 import pytest
+from per_api import PerAPI
 
 from gandalf_core import Application
 from gandalf_core.app.cli import run_scene
@@ -40,8 +41,8 @@ def frames(backend: str, counts: list[int]) -> list[np.ndarray]:
 
 
 @pytest.fixture(scope="module")
-def pictures() -> dict[str, list[np.ndarray]]:
-    return {backend: frames(backend, [1, 5, 33]) for backend in ("opengl", "webgpu")}  # 0, 1 and 8 s later
+def pictures() -> PerAPI:
+    return PerAPI(lambda backend: frames(backend, [1, 5, 33]))  # 0, 1 and 8 s later
 
 
 def test_the_file_is_short_and_has_no_shader():

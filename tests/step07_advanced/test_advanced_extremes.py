@@ -7,7 +7,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from cube_seams import near_cube_edge, seamless_cube_maps
 from step07_helpers import (
+    EYE,
     ambient,
     directional,
     ggx_specular_np,
@@ -29,8 +31,19 @@ from step07_advanced.showcase.textures import brick_textures, encode_normals
 LIGHTS = [directional((-1.0, 1.5, 2.0), (1.0, 0.95, 0.9), 2.5), ambient((0.05, 0.05, 0.05))]
 
 
+#: A flat map's texel 128 decodes to 1/255, not 0, in x and y: the normal leans by atan(√2 / 255).
+FLAT_MAP_TILT = float(np.arctan(np.sqrt(2.0) / 255.0))
+#: How far the exact sphere's normal at a pixel centre may lie from the GPU's: the 128 × 64 sphere's facets
+#: (π/64 apart) sag by 1 - cos(π/128) ≈ 3e-4 below the sphere, which moves a pixel's hit point along the surface
+#: by the sag times tan(incidence), at most ~6 inside the eroded silhouette: 2e-3 rad.
+NORMAL_ERROR = 0.002
+
+
 def test_flat_normal_and_height_maps_equal_plain_pbr(backend):
-    """Tolerance: no channel differs by more than 2 steps (the map's 128 decodes to 0.004, not 0)."""
+    """Tolerance: no channel differs by more than 2 steps (the map's 128 decodes to 0.004, not 0), except where
+    the implementation filters cube maps per face (wgpu's OpenGL backend): there a lookup within the tilt of a
+    face edge may jump to the other face, so pixels whose normal (the diffuse lookup) lies within the tilt, or
+    whose reflection (the specular lookup) within twice it, of a cube edge are left out — at most 6 %."""
     params = {"metallic": 0.0, "roughness": 0.4, "env_strength": 1.0}
     plain = render(backend, solutions, sphere_scene(pbr_material((0.8, 0.5, 0.3), **params), LIGHTS))
     scene = sphere_scene(MaterialData("bumpy", ["white", "flat", "top", "sky"], color=(0.8, 0.5, 0.3),
@@ -39,8 +52,17 @@ def test_flat_normal_and_height_maps_equal_plain_pbr(backend):
     scene.assets.texture("flat", encode_normals(np.tile([0.0, 0.0, 1.0], (4, 4, 1)), "flat"))
     scene.assets.texture("top", TextureData.from_array(np.ones((4, 4)), srgb=False, name="top"))
     bumpy = render(backend, solutions, scene)
-    hit, _ = sphere_hits()
-    assert np.abs(plain.astype(int) - bumpy.astype(int))[inner(hit)].max() <= 2
+    hit, points = sphere_hits()
+    compared = inner(hit)
+    if not seamless_cube_maps(backend):
+        normals = points  # a unit sphere at the origin
+        towards_eye = (EYE - points) / np.linalg.norm(EYE - points, axis=-1, keepdims=True)
+        reflected = 2.0 * np.sum(normals * towards_eye, axis=-1, keepdims=True) * normals - towards_eye
+        seams = near_cube_edge(normals, FLAT_MAP_TILT + NORMAL_ERROR)
+        seams |= near_cube_edge(reflected, 2.0 * (FLAT_MAP_TILT + NORMAL_ERROR))
+        assert (seams & compared).sum() <= 0.06 * compared.sum(), "the seams would hide the sphere"
+        compared &= ~seams
+    assert np.abs(plain.astype(int) - bumpy.astype(int))[compared].max() <= 2
 
 
 def _grazing_floor_scene(height_scale: float) -> Scene:

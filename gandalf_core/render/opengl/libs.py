@@ -496,7 +496,7 @@ class MaterialLib(ResourceLib[GLMaterial]):
         textures = [self.textures.get(tex, referrer) for tex in data.textures]
         if data.buffers and self.buffers is None:
             raise ResourceError(referrer, "buffers", "this material library has no buffer library")
-        buffers = [self.buffers.get(buf, referrer) for buf in data.buffers]
+        buffers = [self.buffers.get_for(buf, "storage", referrer) for buf in data.buffers]
         check_texture_kinds(name, shader.name, [(s, shader.cube_samplers.get(s, False)) for s in shader.samplers],
                             [(t, self.textures.data_of(t)) for t in data.textures])
         block = shader.material_block

@@ -20,6 +20,14 @@ def _quiet_runtime_dir() -> None:
         os.environ["XDG_RUNTIME_DIR"] = path
 
 
+def depth_through_gl_range(adapter: Any) -> bool:
+    """True when the adapter stores depth through OpenGL's clip range: wgpu's OpenGL backend turns WebGPU's clip
+    depth z in [0, w] into OpenGL's 2z - w in every vertex shader, and the viewport maps it back to [0, 1].
+    The sum (2z/w - 1) + 1 rounds away the bits a float32 has below 1, so a stored depth near 0 is only as
+    precise as one near 1: reverse-Z gains nothing there."""
+    return adapter.info.get("backend_type") == "OpenGL"
+
+
 def request_device(canvas_context: Any = None, needs: Needs = FLOOR) -> tuple[Any, Any]:
     """Return ``(adapter, device)``; with a canvas context the adapter must be able to present to it.
 

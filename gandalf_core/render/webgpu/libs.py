@@ -318,10 +318,18 @@ class MeshLib(ResourceLib[WGPUMesh]):
 
 
 # --- storage buffers -------------------------------------------------------------------------------
-#: What a named buffer may be used for: read by materials (storage, vertex, index), written by compute
-#: passes and copies, and drawn indirectly.
-BUFFER_USAGE = (wgpu.BufferUsage.STORAGE | wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.INDEX
-                | wgpu.BufferUsage.INDIRECT | wgpu.BufferUsage.COPY_SRC | wgpu.BufferUsage.COPY_DST)
+#: WebGPU's usage flag for each use a named buffer may be built for (:data:`..storage.BUFFER_USES`); copies to
+#: and from it are always allowed.
+USAGE_FLAGS = {"storage": wgpu.BufferUsage.STORAGE, "vertex": wgpu.BufferUsage.VERTEX,
+               "index": wgpu.BufferUsage.INDEX, "indirect": wgpu.BufferUsage.INDIRECT,
+               "uniform": wgpu.BufferUsage.UNIFORM}
+
+
+def usage_flags(uses: tuple[str, ...]) -> int:
+    flags = wgpu.BufferUsage.COPY_SRC | wgpu.BufferUsage.COPY_DST
+    for use in uses:
+        flags |= USAGE_FLAGS[use]
+    return flags
 
 
 class BufferLib(StorageBufferLib, ResourceLib[Any]):
@@ -344,10 +352,11 @@ class BufferLib(StorageBufferLib, ResourceLib[Any]):
         if size > limit:
             raise ResourceError(f"buffer '{name}'", "size",
                                 f"{size} bytes is more than the device's max-storage-buffer-binding-size ({limit})")
+        usage = usage_flags(self.building_uses)
         if content is None:
-            buf = self.device.create_buffer(size=size, usage=BUFFER_USAGE, label=name)
+            buf = self.device.create_buffer(size=size, usage=usage, label=name)
         else:
-            buf = self.device.create_buffer_with_data(data=content, usage=BUFFER_USAGE, label=name)
+            buf = self.device.create_buffer_with_data(data=content, usage=usage, label=name)
         self.stats["buffers_created"] += 1
         return buf
 
@@ -473,7 +482,7 @@ class MaterialLib(ResourceLib[WGPUMaterial]):
         textures = [(tex, self.textures.get(tex, referrer)) for tex in data.textures]
         if data.buffers and self.buffers is None:
             raise ResourceError(referrer, "buffers", "this material library has no buffer library")
-        buffers = [self.buffers.get(buf, referrer) for buf in data.buffers]
+        buffers = [self.buffers.get_for(buf, "storage", referrer) for buf in data.buffers]
         block = shader.material_block
         fields = {f.name: f.has_default for f in block.fields} if block is not None else {}
         check_parameters(name, shader.name, shader.source.filename, data.params, fields)

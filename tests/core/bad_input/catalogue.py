@@ -107,6 +107,10 @@ def run(case: Case, *args: Any) -> Any:
                                  f"{missing}:\n  {message}")
             return exc
         except Exception as exc:  # the wrong type: show it whole
+            from gandalf_core.render.capabilities import CapabilityError
+
+            if isinstance(exc, CapabilityError):  # this machine lacks what the case needs: a named skip
+                raise
             raise AssertionError(f"[{case.id}] expected {expected}, got {type(exc).__name__}: {exc}") from exc
         raise AssertionError(f"[{case.id}] expected {expected}, but it succeeded and gave {value!r:.300}")
     if case.warns is not None:

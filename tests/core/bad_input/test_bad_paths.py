@@ -1,7 +1,8 @@
 """Files stay in their folder: every path a scene file, glTF or OBJ names (a USD texture in ``gandalf:files`` or
 ``gandalf:levelFiles``, a glTF image or buffer URI, an OBJ's material library) is resolved inside the file's own
 folder after following symbolic links, and refused with an error naming the file, the prim or URI and the path
-unless the caller passes ``allow_outside=True``. Each refusal has its opt-in twin."""
+unless the caller passes ``allow_outside=True`` (an OBJ's material library and its ``map_Kd`` images too: trimesh
+would drop them without a word). Each refusal has its opt-in twin."""
 
 from __future__ import annotations
 
@@ -82,8 +83,15 @@ def folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
                      + np.array([[0, 0], [1, 0], [0, 1]], np.float32).tobytes())
     _gltf(scene_dir / "buffer.gltf", "paint.png", "../elsewhere/tri.bin")
     (elsewhere / "paint.mtl").write_text("newmtl paint\nKd 0.1 0.8 0.1\n")
-    (scene_dir / "crate.obj").write_text("mtllib ../elsewhere/paint.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\n"
-                                         "vt 0 1\nusemtl paint\nf 1/1 2/2 3/3\n")
+    triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl paint\nf 1/1 2/2 3/3\n"
+    (scene_dir / "crate.obj").write_text("mtllib ../elsewhere/paint.mtl\n" + triangle)
+    (scene_dir / "absolute.obj").write_text(f"mtllib {elsewhere / 'paint.mtl'}\n" + triangle)
+    (scene_dir / "linked.mtl").symlink_to(elsewhere / "paint.mtl")
+    (scene_dir / "linked.obj").write_text("mtllib linked.mtl\n" + triangle)
+    (scene_dir / "image.mtl").write_text("newmtl paint\nKd 1 1 1\nmap_Kd ../elsewhere/secret.png\n")
+    (scene_dir / "image.obj").write_text("mtllib image.mtl\n" + triangle)
+    (scene_dir / "inside.mtl").write_text("newmtl paint\nKd 0.1 0.8 0.1\nmap_Kd paint.png\n")
+    (scene_dir / "inside.obj").write_text("mtllib inside.mtl\n" + triangle)
     return scene_dir
 
 
@@ -102,10 +110,14 @@ def texel(scene_or_model) -> tuple[int, ...]:
     return tuple(int(v) for v in texture.pixels[0, 0, :3])
 
 
-def obj_colour(allow_outside: bool):
-    """The diffuse colour trimesh read from the OBJ's material library (its default grey when it was refused)."""
+def obj(name: str, **kwargs):
+    return lambda folder: load_meshes(folder / f"{name}.obj", **kwargs)
+
+
+def obj_colour(allow_outside: bool, name: str = "crate"):
+    """The diffuse colour trimesh read from the OBJ's material library."""
     def action(folder: Path):
-        loaded = _trimesh_load(folder / "crate.obj", allow_outside)
+        loaded = _trimesh_load(folder / f"{name}.obj", allow_outside)
         mesh = next(iter(loaded.geometry.values())) if hasattr(loaded, "geometry") else loaded
         material = getattr(mesh.visual, "material", None)
         return None if material is None else tuple(int(v) for v in np.asarray(material.main_color)[:3])
@@ -137,8 +149,19 @@ CASES = [
           "buffer.gltf", "tri.bin"),
     result("mesh-loader-gltf-buffer-allowed", lambda folder: load_meshes(folder / "buffer.gltf", allow_outside=True),
            lambda parts: len(parts) == 1),
-    result("obj-material-library-outside-not-read", obj_colour(False), lambda rgb: rgb != (26, 204, 26)),
+    error("obj-material-library-dotdot", obj("crate"), ResourceError, "crate.obj", "mtllib",
+          "'../elsewhere/paint.mtl'", "outside the file's folder", "allow_outside"),
+    error("obj-material-library-absolute", obj("absolute"), ResourceError, "absolute.obj", "mtllib", "paint.mtl",
+          "outside the file's folder"),
+    error("obj-material-library-symlink-to-outside", obj("linked"), ResourceError, "linked.obj", "'linked.mtl'",
+          "elsewhere", "outside the file's folder"),
+    error("obj-image-outside", obj("image"), ResourceError, "image.obj", "mtllib 'image.mtl' line 3 (map_Kd)",
+          "'../elsewhere/secret.png'", "outside the file's folder"),
+    error("obj-refused-through-trimesh-load-too", obj_colour(False), ResourceError, "crate.obj", "mtllib"),
     result("obj-material-library-outside-allowed", obj_colour(True), lambda rgb: rgb == (26, 204, 26)),
+    result("obj-image-outside-allowed", obj("image", allow_outside=True), lambda parts: len(parts) == 1),
+    result("obj-inside-still-loads", obj_colour(True, "inside"), lambda rgb: rgb is not None),
+    result("obj-inside-loads-without-opt-in", obj("inside"), lambda parts: len(parts) == 1),
 ]
 
 
