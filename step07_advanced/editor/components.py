@@ -16,7 +16,8 @@ from typing import Any
 from gandalf_core.ecs import Component
 
 #: The panel kinds the editor's systems draw.
-PANEL_KINDS = ("menu", "viewport", "hierarchy", "inspector", "systems", "content", "console", "stats", "file")
+PANEL_KINDS = ("menu", "viewport", "hierarchy", "inspector", "systems", "content", "console", "stats", "file",
+               "shader")
 
 
 _TITLES = {"menu": "Menu bar", "content": "Content browser", "file": "Scene file"}

@@ -53,6 +53,13 @@ def _default_layout(width: int, height: int) -> list[tuple[str, str | None, tupl
     ]
 
 
+def _closed_layout(width: int, height: int) -> list[tuple[str, str | None, tuple[float, float], tuple[float, float]]]:
+    """The panels that start closed (View menu, or a button that opens them): the shader panel over the left column
+    and the viewport's left third, so that most of the picture and the inspector stay in sight."""
+    top = MENU_HEIGHT
+    return [("shader", None, (0.0, top), (0.22 * width + 0.17 * width, height - top))]
+
+
 class Editor(EditorActions):
     """The editor of one Application. Create it with :func:`enable_editor`."""
 
@@ -89,6 +96,7 @@ class Editor(EditorActions):
         self._payload_ids: dict[tuple[str, Any], int] = {}
         self._entity_count, self._entity_count_key = 0, -1
         self._shader_sources: dict[str, tuple[Any, ...]] = {}
+        self._shader_edits: Any = None
         #: Seconds (app clock) between the panels' runs while the GUI is idle; 0 runs them every frame.
         self.gui_interval = 1.0 / 20.0
         #: Frames that ran the panels, and frames that drew the last GUI frame again (see ``_gui_due``).
@@ -150,6 +158,8 @@ class Editor(EditorActions):
         renderer = self.app.renderer
         panels = [EditorPanelComponent(kind, title, position=pos, size=size)
                   for kind, title, pos, size in _default_layout(renderer.width, renderer.height)]
+        panels += [EditorPanelComponent(kind, title, visible=False, position=pos, size=size)
+                   for kind, title, pos, size in _closed_layout(renderer.width, renderer.height)]
         self._installed[id(scene)] = (scene, [scene.create_entity(p) for p in panels], systems)
     # --8<-- [end:install]
 
@@ -417,6 +427,15 @@ class Editor(EditorActions):
                                    lambda: scene.move_system(system, before)))
 
     # --- shaders ----------------------------------------------------------------------------------------
+    @property
+    def shader_edits(self) -> Any:
+        """The shader panel's model (:class:`~step07_advanced.editor.shader_edits.ShaderEdits`), made on first use."""
+        if self._shader_edits is None:
+            from .shader_edits import ShaderEdits
+
+            self._shader_edits = ShaderEdits(self)
+        return self._shader_edits
+
     def shader_files(self, name: str) -> tuple[Any, ...]:
         """The files shader ``name`` was built from (empty when it was built from text)."""
         built = self._shader_sources.get(name)
