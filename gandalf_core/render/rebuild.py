@@ -44,6 +44,7 @@ class RebuildableShaders:
         """The Material declaration shader ``name`` was (last) built with (None: the colour alone)."""
         return self._recipe(name)[1].get("material")
 
+    # --8<-- [start:rebuild]
     def rebuild(self, name: str, sources: Mapping[str | Path, str] | None = None, material: Any = KEEP,
                 ) -> ShaderCompileError | ResourceError | None:
         """Compile shader ``name`` again: from its files on disk, with ``sources`` (path -> text) in place of any of
@@ -64,6 +65,7 @@ class RebuildableShaders:
         self._remember(name, args, kwargs)
         self.stats["shaders_rebuilt"] += 1
         return None
+    # --8<-- [end:rebuild]
 
     def files(self, name: str) -> list[Path]:
         """The files on disk shader ``name`` was built from: each stage's file, then what it includes, each once."""

@@ -456,11 +456,17 @@ class Editor(EditorActions):
         return self._report(f"built shader '{name}'", error=False)
 
     def reload_shader(self, name: str) -> bool:
-        """Compile shader ``name`` again from the files :meth:`build_shader` built it from."""
+        """Compile shader ``name`` again from the files :meth:`build_shader` built it from; on an error the last
+        good program keeps drawing (``renderer.shaders.rebuild``)."""
         files = self.shader_files(name)
         if not files:
             return self._report(f"shader '{name}': no files to reload it from", error=True)
-        return self.build_shader(name, *files)
+        if name not in self.app.renderer.shaders:
+            return self.build_shader(name, *files)
+        error = self.app.renderer.shaders.rebuild(name)
+        if error is not None:
+            return self._report(f"shader '{name}': {error} (the last good program keeps drawing)", error=True)
+        return self._report(f"built shader '{name}'", error=False)
 
     # --- New / Save / Load ------------------------------------------------------------------------------
     def _report(self, message: str, error: bool) -> bool:

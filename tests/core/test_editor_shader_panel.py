@@ -72,7 +72,11 @@ def test_the_panel_opens_every_stage_and_include_of_the_selected_material(opened
     assert panel.text_editor(files["tint"]).get_text().rstrip("\n") == tint_text(app.renderer.backend,
                                                                                 FIRST).rstrip("\n")
     assert "Material" in panel.text_editor(panel.material_key(SHADER)).get_text()
-    assert panel.text_editor(editor.shader_edits.files_of(SHADER)[-2] if False else files["tint"]) is not None
+    assert panel.text_editor(files["tint"]).is_read_only_enabled() is False
+    engine = next(path for path in app.renderer.shaders.files(SHADER) if path.name == f"frame.{lang}")
+    assert panel.text_editor(engine).is_read_only_enabled(), "the engine's own snippets are read-only here"
+    with pytest.raises(ValueError, match="engine's own"):
+        editor.shader_edits.save(engine, "// nothing\n")
 
 
 def test_a_broken_include_is_shown_at_its_line_while_the_last_good_program_draws(opened) -> None:
@@ -186,3 +190,20 @@ def test_a_bad_material_member_is_marked_at_its_line_of_the_material_tab(opened)
     assert f"material.{lang}:3:" in editor.shader_edits.errors[SHADER]
     assert panel.marked[key] == [3]
     assert shows(picture(editor), FIRST)
+
+
+def test_ctrl_s_in_the_code_editor_saves_the_shader_not_the_scene(opened, tmp_path: Path, monkeypatch) -> None:
+    from test_editor_panels import keys
+
+    app, editor, panel, files = opened
+    monkeypatch.chdir(tmp_path)
+    tint = files["tint"]
+    click(app, *center(editor.item_rects[f"shader/tab/{tint.name}"]))
+    x0, y0, _x1, _y1 = editor.item_rects[f"shader/code/{tint.name}"]
+    click(app, x0 + 60, y0 + 5)  # the code editor has the keyboard
+    panel.text_editor(tint).set_text(tint_text(app.renderer.backend, FIXED))
+    keys(app, "LEFT_CONTROL", "S")
+    app.run(frames=2)
+    assert tint.read_text() == tint_text(app.renderer.backend, FIXED)
+    assert shows(picture(editor), FIXED), middle(picture(editor))
+    assert not (tmp_path / editor.path).exists(), "the menu's Ctrl+S (save the scene) stays out of the code editor"
