@@ -88,7 +88,9 @@ def test_a_broken_include_is_shown_at_its_line_while_the_last_good_program_draws
     error = editor.shader_edits.errors[SHADER]
     assert f"{files['tint']}:3:" in error, error  # the included file's own line
     assert panel.marked[files["tint"].resolve()] == [3], "the error is marked at its line in the include's tab"
-    assert panel.marked[(files["frag"] if "frag" in files else files["wgsl"]).resolve()] == []
+    stage = files["frag"] if "frag" in files else files["wgsl"]
+    assert panel.marked[stage.resolve()] == []
+    assert panel.text_editor(files["tint"]).has_markers() and not panel.text_editor(stage).has_markers()
     assert any(e.level == "error" and "tint." in e.text for e in editor.log.entries)
     # Over the viewport: a note inside the picture's rectangle, drawn in the frame.
     x0, y0, x1, y1 = editor.item_rects["viewport/image"]
@@ -108,6 +110,7 @@ def test_fixing_swaps_the_new_program_in_and_undo_restores_text_and_picture(open
     save_in_panel(app, panel, tint.name, tint, tint_text(backend, FIXED, broken=True))
     save_in_panel(app, panel, tint.name, tint, tint_text(backend, FIXED))
     assert SHADER not in editor.shader_edits.errors and panel.marked[tint.resolve()] == []
+    assert not panel.text_editor(tint).has_markers()
     assert "shader/viewport_error" not in editor.item_rects
     assert shows(picture(editor), FIXED), middle(picture(editor))
     assert [c.label for c in editor.commands.done][-2:] == [f"edit {tint.name}"] * 2
