@@ -136,12 +136,12 @@ class ShaderEdits:
         path = Path(path).resolve()
         if path not in self._disk:
             raise ValueError(f"shader panel: {path} is not a file of an opened shader")
+        before = self.text(path)
+        if text == before or (text == before + "\n" and not before.endswith("\n")):  # the code editor's newline
+            return not self._failing([path])
         if not self.editable(path):
             raise ValueError(f"shader panel: {path.name} is one of the engine's own shader files; copy it next to "
                              "your shader to change it")
-        before = self.text(path)
-        if text == before:
-            return not self._failing([path])
         return self._push(f"edit {path.name}", {path: text}, {path: before}, {}, {})
 
     def save_material(self, shader: str, text: str) -> bool:
@@ -197,10 +197,14 @@ class ShaderEdits:
         scene's materials (or put back ``restore``, what they were). Returns the materials the re-check changed,
         as they were before."""
         for path, text in texts.items():
-            if self._disk.get(path, (0, 0, None))[2] != text or path.read_text(encoding="utf-8") != text:
+            current = self._stat(path)
+            if current[2] != text:  # a change another editor made is on disk already: not written again
                 path.write_text(text, encoding="utf-8")
-            self._disk[path] = self._stat(path)
+                current = self._stat(path)
+            self._disk[path] = current
         changed: dict[str, Any] = {}
+        if restore is None:
+            self.notes = []
         for shader in shaders:
             error = self.shaders.rebuild(shader, material=material.get(shader, KEEP))
             if error is not None:
@@ -228,7 +232,7 @@ class ShaderEdits:
         fields = {f.name: f for f in block.fields} if block is not None else {}
         assets = self.editor.app.scene.assets
         before: dict[str, Any] = {}
-        self.notes = []
+        notes = []
         for name, data in list(assets.materials.items()):
             if data.shader != shader:
                 continue
@@ -240,16 +244,17 @@ class ShaderEdits:
             for f in added:
                 size = block.view(block.new(), f.name).size
                 params[f.name] = 0.0 if size == 1 else (0.0,) * size
-                self.notes.append(f"material '{name}': new Material field '{f.name}' of shader '{shader}' set to 0; "
+                notes.append(f"material '{name}': new Material field '{f.name}' of shader '{shader}' set to 0; "
                                   "give it a value in the inspector")
             for key, value in removed.items():
                 del params[key]
-                self.notes.append(f"material '{name}': '{key}' (was {value}) is no longer a field of shader "
+                notes.append(f"material '{name}': '{key}' (was {value}) is no longer a field of shader "
                                   f"'{shader}''s Material block; its value was dropped (undo brings it back)")
             before[name] = data
             assets.material(name, dataclasses.replace(data, params=params))
-        for note in self.notes:
+        for note in notes:
             self.editor.log.add("warning", "shader panel", note)
+        self.notes += notes
         return before
 
     def _fail(self, shader: str, message: str) -> None:

@@ -30,6 +30,14 @@ def _u32(color: Any) -> int:
     return imgui.color_convert_float4_to_u32(color)
 
 
+def _same(shown: str, text: str | None) -> bool:
+    """Whether the code editor shows ``text`` (it ends every line with a newline and writes CRLF as LF)."""
+    if text is None:
+        return False
+    text = text.replace("\r\n", "\n")
+    return shown == (text if not text or text.endswith("\n") else text + "\n")
+
+
 class ShaderPanelSystem(PanelSystem):
     """Edits the shader of the selected entity's material; shows its errors in the text and over the viewport."""
 
@@ -125,9 +133,15 @@ class ShaderPanelSystem(PanelSystem):
         """Put ``text`` into tab ``key``'s editor when the file changed (a save, undo, another editor) and mark the
         lines of the shader's error in it."""
         editor = self.text_editor(key)
-        if self._loaded.get(key) != text:
+        loaded = self._loaded.get(key)
+        if loaded != text:
+            shown = editor.get_text()
+            if loaded is not None and not _same(shown, loaded) and not _same(shown, text):  # unsaved typing: kept
+                self.editor.log.add("warning", "shader panel", f"{getattr(key, 'name', key)} changed while it had "
+                                    "unsaved edits here: they are kept (Revert shows the new text)")
+            elif not _same(shown, text):
+                editor.set_text(text)
             self._loaded[key] = text
-            editor.set_text(text)
         edits = self.editor.shader_edits
         marks_key = (edits.version, shader)
         if self._marks_key.get(key) == marks_key:
@@ -169,7 +183,7 @@ class ShaderPanelSystem(PanelSystem):
     def _tab(self, key: Any) -> None:
         editor = self.text_editor(key)
         label = f"material.{self.editor.shader_edits.lang}" if isinstance(key, str) else key.name
-        dirty = editor.get_text() != self._loaded.get(key)
+        dirty = not _same(editor.get_text(), self._loaded.get(key))
         flags = imgui.TabItemFlags_.unsaved_document if dirty else 0
         if self._jump is not None and self._jump[0] == key:
             flags |= imgui.TabItemFlags_.set_selected
@@ -198,7 +212,7 @@ class ShaderPanelSystem(PanelSystem):
         x0, y0, x1, _y1 = rect
         lines = []
         for shader, error in errors.items():
-            first = problems(error)[0] if error else None
+            first = next(iter(problems(error)), None)
             where = f"{Path(first.file).name}:{first.line}: " if first is not None and first.file else ""
             lines.append(f"shader '{shader}' does not build ({where}{first.message if first else ''}); "
                          "the last good program is drawing")
