@@ -12,7 +12,6 @@ its error at its line, in the panel and over the viewport, while the last good p
 
 from __future__ import annotations
 
-import argparse
 import sys
 import tempfile
 from pathlib import Path
@@ -20,7 +19,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from editor_screenshots import build_scene  # noqa: E402 - the editor pictures' scene, written once
+from editor_screenshots import build_scene, main  # noqa: E402 - the editor pictures' scene and options, written once
 
 TOON_MATERIAL = [("color", "vec4"), ("steps", "float")]
 FILES = {
@@ -115,19 +114,5 @@ def shoot(backend: str, width: int, height: int, out: Path) -> Path:
     return path
 
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0],
-                                     formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
-    parser.add_argument("--out", type=Path, default=ROOT / "docs" / "images", help="folder for the PNG files")
-    parser.add_argument("--size", default="1280x720", help="WIDTHxHEIGHT of the editor frame")
-    parser.add_argument("--backends", default="opengl,webgpu")
-    args = parser.parse_args(argv)
-    width, height = (int(v) for v in args.size.lower().split("x"))
-    args.out.mkdir(parents=True, exist_ok=True)
-    for backend in args.backends.split(","):
-        print(shoot(backend.strip(), width, height, args.out))
-    return 0
-
-
 if __name__ == "__main__":
-    raise SystemExit(main())
+    raise SystemExit(main(shoot=shoot, doc=__doc__))
