@@ -110,11 +110,6 @@ class ShaderEdits:
                     self._disk[path] = self._stat(path)
         return files
 
-    def close(self) -> None:
-        """Stop watching every file (the panel was closed)."""
-        self._files.clear()
-        self._disk.clear()
-
     def text(self, path: Path) -> str:
         """``path``'s text as last read or written."""
         return self._disk[path][2]
@@ -194,8 +189,10 @@ class ShaderEdits:
     def _apply(self, texts: Mapping[Path, str], material: Mapping[str, Any], shaders: list[str],
                restore: Mapping[str, Any] | None = None) -> dict[str, Any]:
         """Write ``texts``, rebuild ``shaders`` (with ``material`` declarations where given) and re-check the
-        scene's materials (or put back ``restore``, what they were). Returns the materials the re-check changed,
-        as they were before."""
+        scene's materials (or put back ``restore``, what they were). A program that builds but that a material of the
+        scene cannot use (a texture it samples that the material does not bind) is an error too: the last good one
+        is built again. Returns the materials the re-check changed, as they were before."""
+        last_good = {path: self._disk[path][2] for path in texts if path in self._disk}
         for path, text in texts.items():
             current = self._stat(path)
             if current[2] != text:  # a change another editor made is on disk already: not written again
@@ -205,8 +202,20 @@ class ShaderEdits:
         changed: dict[str, Any] = {}
         if restore is None:
             self.notes = []
+        assets = self.editor.app.scene.assets
         for shader in shaders:
+            declaration = self.shaders.material_declaration(shader)
+            before = {name: data for name, data in assets.materials.items() if data.shader == shader}
             error = self.shaders.rebuild(shader, material=material.get(shader, KEEP))
+            if error is None:
+                rechecked = self._recheck(shader) if restore is None else {}
+                self._put_back({name: data for name, data in (restore or {}).items() if name in before})
+                error = self._materials_fail(shader)
+                if error is not None:  # the program builds, a material of it does not: the last good one again
+                    self._put_back(before)
+                    self.shaders.rebuild(shader, last_good, material=declaration)
+                else:
+                    changed.update(rechecked)
             if error is not None:
                 self._fail(shader, str(error))
                 continue
@@ -215,14 +224,26 @@ class ShaderEdits:
             self._files[shader] = self.shaders.files(shader)  # an include may have come or gone
             for path in self._files[shader]:
                 self._disk.setdefault(path, self._stat(path))
-            if restore is None:
-                changed.update(self._recheck(shader))
-        if restore:
-            assets = self.editor.app.scene.assets
-            for name, data in restore.items():
-                assets.material(name, data)
         self.version += 1
         return changed
+
+    def _put_back(self, materials: Mapping[str, Any]) -> None:
+        """Give the scene's materials their data of before a re-check."""
+        assets = self.editor.app.scene.assets
+        for name, data in materials.items():
+            assets.material(name, data)
+
+    def _materials_fail(self, shader: str) -> Exception | None:
+        """Build the scene's materials drawn with ``shader`` now (a texture or buffer the new program reads
+        differently is an error naming the material): the error, or None."""
+        renderer, assets = self.editor.app.renderer, self.editor.app.scene.assets
+        for name, data in assets.materials.items():
+            if data.shader == shader:
+                try:
+                    renderer.resolve_material(name, assets)
+                except Exception as exc:  # noqa: BLE001 - a ResourceError names the material and what does not fit
+                    return exc
+        return None
 
     def _recheck(self, shader: str) -> dict[str, Any]:
         """The scene's materials drawn with ``shader`` against its new Material block: a field they do not set
@@ -245,11 +266,11 @@ class ShaderEdits:
                 size = block.view(block.new(), f.name).size
                 params[f.name] = 0.0 if size == 1 else (0.0,) * size
                 notes.append(f"material '{name}': new Material field '{f.name}' of shader '{shader}' set to 0; "
-                                  "give it a value in the inspector")
+                             "give it a value in the inspector")
             for key, value in removed.items():
                 del params[key]
                 notes.append(f"material '{name}': '{key}' (was {value}) is no longer a field of shader "
-                                  f"'{shader}''s Material block; its value was dropped (undo brings it back)")
+                             f"'{shader}''s Material block; its value was dropped (undo brings it back)")
             before[name] = data
             assets.material(name, dataclasses.replace(data, params=params))
         for note in notes:

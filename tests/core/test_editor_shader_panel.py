@@ -210,3 +210,23 @@ def test_ctrl_s_in_the_code_editor_saves_the_shader_not_the_scene(opened, tmp_pa
     assert tint.read_text() == tint_text(app.renderer.backend, FIXED)
     assert shows(picture(editor), FIXED), middle(picture(editor))
     assert not (tmp_path / editor.path).exists(), "the menu's Ctrl+S (save the scene) stays out of the code editor"
+
+
+def test_a_program_its_material_cannot_use_is_refused_and_the_last_good_one_draws(opened) -> None:
+    app, editor, _panel, files = opened
+    if app.renderer.backend == "opengl":
+        stage = files["frag"]
+        text = stage.read_text().replace("out vec4 f_color;", "uniform sampler2D u_extra;\nout vec4 f_color;") \
+            .replace("rgb), 1.0);", "rgb), 1.0) * texture(u_extra, vec2(0.5));")
+    else:
+        stage = files["wgsl"]
+        text = stage.read_text().replace("@vertex", "@group(1) @binding(1) var extra: texture_2d<f32>;\n"
+                                         "@group(1) @binding(2) var extra_sampler: sampler;\n@vertex", 1) \
+            .replace("rgb), 1.0);", "rgb), 1.0) * textureSample(extra, extra_sampler, vec2<f32>(0.5));")
+    assert not editor.shader_edits.save(stage, text)  # it compiles, but material M_tinted binds no texture
+    assert f"material '{MATERIAL}'" in editor.shader_edits.errors[SHADER]
+    app.run(frames=3)  # no error escapes into the frame
+    assert shows(picture(editor), FIRST), middle(picture(editor))
+    editor.undo()
+    app.run(frames=2)
+    assert SHADER not in editor.shader_edits.errors and shows(picture(editor), FIRST)
