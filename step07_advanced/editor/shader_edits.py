@@ -79,6 +79,8 @@ class ShaderEdits:
         self.version = 0
         self._files: dict[str, list[Path]] = {}
         self._disk: dict[Path, tuple[int, int, str]] = {}  # path -> (mtime_ns, size, text) as last seen or written
+        self._editable: dict[Path, bool] = {}
+        self._material_texts: dict[str, tuple[Any, str]] = {}
 
     @property
     def shaders(self) -> Any:
@@ -114,15 +116,22 @@ class ShaderEdits:
         """``path``'s text as last read or written."""
         return self._disk[path][2]
 
-    @staticmethod
-    def editable(path: Path) -> bool:
+    def editable(self, path: Path) -> bool:
         """The engine's own snippets are shown, not edited in place."""
-        return not is_engine_file(path)
+        editable = self._editable.get(path)
+        if editable is None:
+            editable = self._editable[path] = not is_engine_file(path)
+        return editable
 
     def material_text(self, shader: str) -> str | None:
         """The shader's Material block as the shader sees it (the include the engine writes), or None."""
         block = self.shaders.get(shader).material_block
-        return None if block is None else material_snippets(block)[f"material.{self.lang}"]
+        if block is None:
+            return None
+        cached = self._material_texts.get(shader)
+        if cached is None or cached[0] is not block:  # written again only for a rebuilt shader
+            cached = self._material_texts[shader] = (block, material_snippets(block)[f"material.{self.lang}"])
+        return cached[1]
 
     # --- edits ----------------------------------------------------------------------------------------
     def save(self, path: str | Path, text: str) -> bool:

@@ -58,8 +58,10 @@ class ShaderPanelSystem(PanelSystem):
     # --- what tests and tools reach ------------------------------------------------------------------
     def text_editor(self, key: Any) -> Any:
         """The code editor of tab ``key`` (a file's path, or ``material_key(shader)``), made on first use."""
-        key = Path(key).resolve() if isinstance(key, (str, Path)) and not str(key).startswith("material:") else key
-        editor = self._editors.get(key)
+        editor = self._editors.get(key)  # the panel's own keys are resolved paths already: no file system call
+        if editor is None and not (isinstance(key, str) and key.startswith("material:")):
+            key = Path(key).resolve()
+            editor = self._editors.get(key)
         if editor is None:
             editor = self._editors[key] = TextEditor()
             editor.set_language(_LANGUAGE[self.editor.app.renderer.shading_language]())
@@ -183,7 +185,9 @@ class ShaderPanelSystem(PanelSystem):
     def _tab(self, key: Any) -> None:
         editor = self.text_editor(key)
         label = f"material.{self.editor.shader_edits.lang}" if isinstance(key, str) else key.name
-        dirty = not _same(editor.get_text(), self._loaded.get(key))
+        # Typed into since its text was put in (set_text starts the editor's own undo history again at 0), and not
+        # typed back: the text is read only then, not every frame.
+        dirty = editor.get_undo_index() != 0 and not _same(editor.get_text(), self._loaded.get(key))
         flags = imgui.TabItemFlags_.unsaved_document if dirty else 0
         if self._jump is not None and self._jump[0] == key:
             flags |= imgui.TabItemFlags_.set_selected
