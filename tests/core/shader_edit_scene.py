@@ -14,8 +14,8 @@ import numpy as np
 
 from gandalf_core import Application, ClearColorComponent, Scene, TransformComponent
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
-from gandalf_core.resources.texture_data import linear_to_srgb
 from gandalf_core.resources import MaterialData, cube
+from gandalf_core.resources.texture_data import linear_to_srgb
 
 SHADER = "tinted"
 MATERIAL = "M_tinted"
