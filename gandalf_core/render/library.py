@@ -71,11 +71,18 @@ class ResourceLib(Generic[T]):
         """Release ``name``'s object (and, through :attr:`on_forget`, what refers to it); nothing if not built."""
         if name not in self._items:
             return
-        for callback in self.on_forget:
-            callback(name)
-        item = self._items.pop(name)
-        self._data.pop(name, None)
+        item = self._items.pop(name)  # gone before the callbacks run: a dependent built again cannot take it
+        data = self._data.pop(name, None)
+        from_assets = name in self._from_assets
         self._from_assets.discard(name)
+        try:
+            for callback in self.on_forget:
+                callback(name)
+        except BaseException:
+            self._items[name], self._data[name] = item, data  # nothing was released: put it back as it was
+            if from_assets:
+                self._from_assets.add(name)
+            raise
         self._release(item)
 
     def replace(self, name: str, item: T, data: Any) -> None:

@@ -101,3 +101,17 @@ def test_rebuilding_a_shader_built_from_nothing_names_it(tinted) -> None:
     app, _files = tinted
     with pytest.raises(KeyError, match="'nothing'"):
         app.renderer.shaders.rebuild("nothing")
+
+
+def test_a_material_the_app_built_itself_is_built_again_with_the_new_shader(tinted) -> None:
+    from gandalf_core.resources import MaterialData
+
+    app, files = tinted
+    renderer = app.renderer
+    own = renderer.materials.build("own", MaterialData(SHADER, color=(0.5, 0.5, 0.5)))
+    assert renderer.shaders.rebuild(SHADER, {files["tint"]: tint_text(renderer.backend, FIXED)}) is None
+    again = renderer.materials.get("own")  # not from a scene's assets: nothing would build it on its next use
+    assert again is not own and again.shader is renderer.shaders.get(SHADER)
+    with pytest.warns(UserWarning, match="material 'own' could not be built again"):
+        renderer.shaders.forget(SHADER)  # gone for good: so are the materials built with it
+    assert "own" not in renderer.materials and MATERIAL not in renderer.materials
