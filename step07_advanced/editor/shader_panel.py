@@ -95,6 +95,8 @@ class ShaderPanelSystem(PanelSystem):
         if material is not None:
             tabs.append(self.material_key(shader))
         tabs += [path for path in files if not edits.editable(path)]
+        if self.active not in tabs:  # another shader was selected: its tab in front is found when drawn
+            self.active = None
         for key in tabs:
             self._sync(key, edits.text(key) if isinstance(key, Path) else material, shader)
         imgui.text(f"shader '{shader}'")
