@@ -2,16 +2,17 @@
 
 The scene is ``bench_scenes.py``'s scene5 (100 lit rotating cubes) with a cube selected (the inspector shows its
 fields). Modes: ``off`` (no editor); ``five`` (the menu bar and five panels: hierarchy, inspector, systems, stats,
-console; no viewport); ``all`` (every panel, the viewport included: it renders the scene into its texture, with a
-gizmo, and the frame under the panels is only cleared). The modes run in the same process in many short rounds,
-each mode first, second and third in turn, so that the drift of a shared machine and of the GPU's clocks hits all
-alike; every frame ends with a 1-pixel read-back so the GPU has finished it. One JSON line per backend:
-milliseconds per frame of each mode: the median frame over every round (with no input, a frame that composites the
-cached GUI layer) and the mean frame (which also carries the few frames that run the panels, every 1/20 s, and
-a shared machine's rare long frames); the milliseconds the editor adds and its share of the frame
-(``cost_percent = added / frame with the editor``, from the medians; ``cost_percent_five_mean`` from the means;
-the paper's figure is 20-25 %); and the share of frames that ran the panels (``panel_frames_percent``; see the
-editor page).
+console; no viewport); ``shader`` (those five and the shader panel, open and idle on the selected cube's shader: it
+looks at the shader's files every time the panels run); ``all`` (every panel that starts open, the viewport
+included: it renders the scene into its texture, with a gizmo, and the frame under the panels is only cleared). The
+modes run in the same process in many short rounds, each mode first, second, ... in turn, so that the drift of a
+shared machine and of the GPU's clocks hits all alike; every frame ends with a 1-pixel read-back so the GPU has
+finished it. One JSON line per backend: milliseconds per frame of each mode: the median frame over every round (with
+no input, a frame that composites the cached GUI layer) and the mean frame (which also carries the few frames that
+run the panels, every 1/20 s, and a shared machine's rare long frames); the milliseconds the editor adds and its
+share of the frame (``cost_percent = added / frame with the editor``, from the medians; ``cost_percent_five_mean``
+from the means; the paper's figure is 20-25 %); and the share of frames that ran the panels
+(``panel_frames_percent``; see the editor page).
 
 Run by hand, never in CI::
 
@@ -77,17 +78,20 @@ def measure(backend: str, width: int, height: int, frames: int, rounds: int) -> 
     app = make_app(backend, width, height)
     app.run(frames=20)  # build pipelines and resources before timing
     cube = next(e for e, _ in app.scene.view(MeshComponent))
-    modes = ("off", "five", "all")
+    modes = ("off", "five", "shader", "all")
     times: dict[str, list[float]] = {mode: [] for mode in modes}
-    panel_frames: dict[str, list[float]] = {"five": [], "all": []}  # share of frames that ran the panels
+    panel_frames: dict[str, list[float]] = {mode: [] for mode in modes[1:]}  # share of frames that ran the panels
     for round_ in range(rounds):
-        for mode in modes[round_ % 3:] + modes[:round_ % 3]:  # each mode first, second and third in turn
+        turn = round_ % len(modes)
+        for mode in modes[turn:] + modes[:turn]:  # each mode first, second, ... in turn
             editor = None
             if mode != "off":
                 editor = enable_editor(app)
                 editor.selected = cube
+                starts_open = {kind: editor.panel_visible(kind) for kind in PANEL_KINDS}
                 for kind in PANEL_KINDS:
-                    editor.show_panel(kind, mode == "all" or kind in FIVE or kind == "menu")
+                    editor.show_panel(kind, kind in FIVE or kind == "menu" or (mode == "all" and starts_open[kind])
+                                      or (mode == "shader" and kind == "shader"))
                 app.run(frames=10)  # the GUI's font atlas, buffers and the viewport's target, before timing
                 ran = editor.gui_frames
             gc.collect()  # what the last mode left behind is not collected inside a timed round
@@ -100,7 +104,7 @@ def measure(backend: str, width: int, height: int, frames: int, rounds: int) -> 
     for mode, seconds in times.items():
         result[f"ms_{mode}"] = round(1000.0 * statistics.median(seconds), 3)
         result[f"ms_{mode}_mean"] = round(1000.0 * statistics.fmean(seconds), 3)
-    for mode in ("five", "all"):
+    for mode in modes[1:]:
         for stat in ("", "_mean"):
             added = result[f"ms_{mode}{stat}"] - result[f"ms_off{stat}"]
             result[f"added_ms_{mode}{stat}"] = round(added, 3)

@@ -105,9 +105,11 @@ def shoot(backend: str, width: int, height: int, out: Path) -> Path:
     return path
 
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0],
-                                     formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
+def main(argv: list[str] | None = None, shoot=shoot, doc: str = __doc__) -> int:  # noqa: ANN001 - shoot(...)
+    """Parse the options of ``doc``'s script and call ``shoot(backend, width, height, out)`` for each backend (the
+    shader panel's script shares it)."""
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0],
+                                     formatter_class=argparse.RawDescriptionHelpFormatter, epilog=doc)
     parser.add_argument("--out", type=Path, default=ROOT / "docs" / "images", help="folder for the PNG files")
     parser.add_argument("--size", default="1280x720", help="WIDTHxHEIGHT of the editor frame")
     parser.add_argument("--backends", default="opengl,webgpu")

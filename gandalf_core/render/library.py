@@ -9,11 +9,13 @@ Objects built from a scene's assets follow them: when the data under a name chan
 running), the next use builds it anew; when no scene has the name any more (:meth:`ResourceLib.collect`), its GPU
 object is released. What the app's own code builds with :meth:`build` (shaders, storage buffers) stays until the
 renderer goes. Whatever refers to a released object (a vertex array, a material's bind group) is dropped with it
-through :attr:`ResourceLib.on_forget`.
+through :attr:`ResourceLib.on_forget`, also when :meth:`ResourceLib.replace` puts a new object under its name (a
+shader rebuilt from edited text: :mod:`.rebuild`).
 """
 
 from __future__ import annotations
 
+import warnings
 from collections import Counter
 from collections.abc import Callable, Iterable, Mapping
 from typing import Any, Generic, TypeVar
@@ -69,12 +71,48 @@ class ResourceLib(Generic[T]):
         """Release ``name``'s object (and, through :attr:`on_forget`, what refers to it); nothing if not built."""
         if name not in self._items:
             return
+        item = self._items.pop(name)  # gone before the callbacks run: a dependent built again cannot take it
+        data = self._data.pop(name, None)
+        from_assets = name in self._from_assets
+        self._from_assets.discard(name)
+        try:
+            for callback in self.on_forget:
+                callback(name)
+        except BaseException:
+            self._items[name], self._data[name] = item, data  # nothing was released: put it back as it was
+            if from_assets:
+                self._from_assets.add(name)
+            raise
+        self._release(item)
+
+    def replace(self, name: str, item: T, data: Any) -> None:
+        """Put a new object under ``name`` (built already, from ``data``) in place of the one there: what refers to
+        the old one is dropped through :attr:`on_forget`, which runs with the new one in place (a dependent may build
+        itself again at once), then the old one is released. Nothing of the old one is touched before the new one
+        exists, so a build that fails leaves the last good object drawing."""
+        if name not in self._items:
+            raise KeyError(f"{self.kind} '{name}' has not been built")
+        old = self._items[name]
+        self._items[name], self._data[name] = item, data
         for callback in self.on_forget:
             callback(name)
-        item = self._items.pop(name)
-        self._data.pop(name, None)
-        self._from_assets.discard(name)
-        self._release(item)
+        self._release(old)
+
+    def renew_where(self, uses: Callable[[T], bool]) -> list[str]:
+        """Release every object for which ``uses(object)`` holds (it refers to something that was replaced); those
+        built from a scene's assets are built again on their next use, those the app's own code built are built
+        again now from the same data (one that no longer builds is left out, with a warning naming its error).
+        Returns their names."""
+        renewed = [name for name, item in self._items.items() if uses(item)]
+        for name in renewed:
+            data, from_code = self._data.get(name), name not in self._from_assets
+            self.forget(name)
+            if from_code and data is not None:
+                try:
+                    self.build(name, data)
+                except Exception as exc:  # noqa: BLE001 - the caller's rebuild went well; this one is reported
+                    warnings.warn(f"{self.kind} '{name}' could not be built again: {exc}", stacklevel=2)
+        return renewed
 
     def collect(self, live: Iterable[str]) -> list[str]:
         """Release the objects built from assets whose names are not in ``live`` (no scene has them any more);

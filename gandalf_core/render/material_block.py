@@ -113,3 +113,81 @@ def check_glsl_varyings(shader: str, stages: dict[str, Any]) -> str | None:
 def _main_and_functions(text: str, name: str) -> str:
     """The stage's code without the declaration of ``name`` (to see whether anything else names it)."""
     return _IO.sub(lambda m: "" if m.group(3) == name else m.group(0), _strip_comments(text))
+
+
+# --- the block as text, read back (a shader editor edits the declaration as the shader sees it) ------------------
+_GLSL_BLOCK = re.compile(r"\buniform\s+Material\s*\{(?P<body>[^}]*)\}", re.S)
+_WGSL_BLOCK = re.compile(r"\bstruct\s+Material\s*\{(?P<body>[^}]*)\}", re.S)
+_GLSL_MEMBER = re.compile(r"^\s*([A-Za-z_]\w*)\s+([A-Za-z_]\w*)\s*(?:\[\s*(\d+)\s*\])?\s*$")
+_WGSL_MEMBER = re.compile(r"^\s*([A-Za-z_]\w*)\s*:\s*(?:array<\s*([\w<>]+)\s*,\s*(\d+)u?\s*>|([\w<>]+))\s*$")
+
+
+def parse_material_block(text: str, lang: str, previous: BlockLayout | None = None,
+                         filename: str | None = None) -> BlockLayout:
+    """The Material block declared by ``text`` (what ``#include "material.glsl"`` / ``"material.wgsl"`` holds):
+    GLSL's ``uniform Material { vec4 color; float glow; } material;`` or WGSL's ``struct Material { color:
+    vec4<f32>, glow: f32, };``. A field of ``previous`` with the same name and type keeps its default (text cannot
+    state one). An error names the file and line (``filename``, by default the include's name)."""
+    filename = filename or f"material.{lang}"
+    blank = re.sub(r"/\*.*?\*/|//[^\n]*", lambda m: re.sub(r"[^\n]", " ", m.group(0)), text, flags=re.S)
+    match = (_GLSL_BLOCK if lang == "glsl" else _WGSL_BLOCK).search(blank)
+    if match is None:
+        what = "uniform Material { ... }" if lang == "glsl" else "struct Material { ... }"
+        raise ShaderCompileError(f"{filename}:1: no '{what}' declaration found")
+    fields: list[tuple[Any, ...]] = []
+    for pos, part in _members(match.group("body"), match.start("body"), ";" if lang == "glsl" else ","):
+        line = blank.count("\n", 0, pos + len(part) - len(part.lstrip())) + 1
+        if not part.strip():
+            continue
+        if lang == "glsl":
+            m = _GLSL_MEMBER.match(part)
+            name, kind, count = (m.group(2), m.group(1), m.group(3)) if m else ("", "", None)
+        else:
+            m = _WGSL_MEMBER.match(part)
+            name, kind, count = (m.group(1), m.group(2) or m.group(4), m.group(3)) if m else ("", "", None)
+        if m is None:
+            raise ShaderCompileError(f"{filename}:{line}: cannot read Material member '{' '.join(part.split())}'")
+        declared: Any = kind if count is None else (kind, int(count))
+        old = next((f for f in (previous.fields if previous is not None else ()) if f.name == name), None)
+        keeps = old is not None and old.has_default and _same_type(previous, name, declared)
+        fields.append((name, declared, old.default) if keeps else (name, declared))
+        try:
+            BlockLayout(MATERIAL_BLOCK, [fields[-1]])
+        except (LayoutError, ValueError) as exc:
+            raise ShaderCompileError(f"{filename}:{line}: {exc}") from None
+    try:
+        return BlockLayout(MATERIAL_BLOCK, fields)
+    except (LayoutError, ValueError) as exc:
+        line = blank.count("\n", 0, match.start()) + 1
+        raise ShaderCompileError(f"{filename}:{line}: {exc}") from None
+
+
+def _members(body: str, start: int, separator: str) -> list[tuple[int, str]]:
+    """``body`` cut at each ``separator`` outside ``<...>`` (WGSL's ``array<vec4<f32>, 3>``): (offset, text)."""
+    parts, depth, begin = [], 0, 0
+    for i, ch in enumerate(body):
+        depth += (ch == "<") - (ch == ">")
+        if ch == separator and depth == 0:
+            parts.append((start + begin, body[begin:i]))
+            begin = i + 1
+    parts.append((start + begin, body[begin:]))
+    return parts
+
+
+def _same_type(layout: BlockLayout | None, name: str, kind: Any) -> bool:
+    """Whether field ``name`` of ``layout`` has type ``kind``."""
+    if layout is None:
+        return False
+    try:
+        return _type_key(BlockLayout(MATERIAL_BLOCK, [(name, kind)]).field(name).type) == \
+            _type_key(layout.field(name).type)
+    except (LayoutError, ValueError):
+        return False
+
+
+def _type_key(t: Any) -> Any:
+    """A type without its spelling (``vec3`` and ``vec3<f32>`` are one type)."""
+    if hasattr(t, "elem"):
+        return (_type_key(t.elem), t.count)
+    return (getattr(t, "kind", None), getattr(t, "rows", None), getattr(t, "columns", None), getattr(t, "name", None)
+            if not hasattr(t, "kind") else None)

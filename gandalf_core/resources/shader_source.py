@@ -6,9 +6,11 @@ the expanded text, the file and line it came from (:meth:`ShaderSource.source_ma
 :meth:`ShaderSource.format_error` turns a compiler's line into ``"file:line: message"`` plus the offending
 source line.
 
-Includes are resolved relative to the including file, then in ``include_dirs``. Each file is included at most
-once per shader (later ``#include`` lines of the same file become comments), so snippet libraries may include
-each other freely; a file that includes itself, directly or through others, is an error naming the chain.
+Includes are resolved relative to the including file, then in ``include_dirs``. A file's text may be handed in
+(``texts``, by resolved path) instead of read from disk: a shader editor compiles what it holds. Each file is
+included at most once per shader (later ``#include`` lines of the same file become comments), so snippet
+libraries may include each other freely; a file that includes itself, directly or through others, is an error
+naming the chain.
 The same ``#include`` syntax is used in GLSL and WGSL files: it is expanded here, before either compiler sees it.
 
 Some includes are written by the engine rather than read from a file (``generated``): the uniform blocks declared
@@ -63,9 +65,11 @@ def _read_text(path: Path, label: str, field: str) -> str:
 class _Expander:
     """Expands ``#include`` lines recursively, recording where every output line came from."""
 
-    def __init__(self, root_name: str, include_dirs: Sequence[Path], generated: Mapping[str, str]) -> None:
+    def __init__(self, root_name: str, include_dirs: Sequence[Path], generated: Mapping[str, str],
+                 texts: Mapping[Path, str] | None = None) -> None:
         self.root_name = root_name
         self.generated = generated
+        self.texts = texts or {}
         self.include_dirs = include_dirs
         self.lines: list[str] = []
         self.line_map: list[tuple[str, int]] = []
@@ -110,7 +114,9 @@ class _Expander:
             if isinstance(target, str):
                 self.expand(self.generated[target], target, None, chain + [(key, target)])
                 continue
-            sub = _read_text(target, f"shader '{self.root_name}'", "include")
+            sub = self.texts.get(key)
+            if sub is None:
+                sub = _read_text(target, f"shader '{self.root_name}'", "include")
             self.expand(sub, str(target), target.parent, chain + [(key, str(target))])
 
 
@@ -134,11 +140,12 @@ class ShaderSource:
     @classmethod
     def from_file(
         cls, path: str | Path, stage: str | None = None, include_dirs: Sequence[str | Path] = (),
-        generated: Mapping[str, str] | None = None,
+        generated: Mapping[str, str] | None = None, texts: Mapping[Path, str] | None = None,
     ) -> ShaderSource:
         """Load a shader file; language and stage follow from the extension (see :data:`SHADER_EXTENSIONS`).
 
-        ``stage`` overrides the extension's stage (e.g. to name the entry stage of a ``.wgsl`` file).
+        ``stage`` overrides the extension's stage (e.g. to name the entry stage of a ``.wgsl`` file). ``texts``
+        maps resolved paths to text used instead of the file's (the file itself or any file it includes).
         """
         p = Path(path)
         label = f"shader '{p}'"
@@ -147,8 +154,12 @@ class ShaderSource:
                 label, "path", f"unknown shader extension {p.suffix!r}; expected one of {', '.join(SHADER_EXTENSIONS)}"
             )
         lang, default_stage = SHADER_EXTENSIONS[p.suffix]
-        text = _read_text(p, label, "path")
-        return cls._build(text, str(p), lang, stage or default_stage, p.parent, include_dirs, p.resolve(), generated)
+        texts = texts or {}
+        text = texts.get(p.resolve())
+        if text is None:
+            text = _read_text(p, label, "path")
+        return cls._build(text, str(p), lang, stage or default_stage, p.parent, include_dirs, p.resolve(), generated,
+                          texts)
 
     @classmethod
     def from_text(
@@ -178,6 +189,7 @@ class ShaderSource:
         include_dirs: Sequence[str | Path],
         key: Path | str,
         generated: Mapping[str, str] | None = None,
+        texts: Mapping[Path, str] | None = None,
     ) -> ShaderSource:
         label = f"shader '{filename}'"
         if lang not in LANGUAGES:
@@ -190,7 +202,7 @@ class ShaderSource:
             raise ResourceError(label, "text", f"expected str, got {type(text).__name__}")
         from .blocks import ENGINE_SNIPPETS  # the engine's blocks, written from their declaration
 
-        expander = _Expander(filename, [Path(d) for d in include_dirs], {**ENGINE_SNIPPETS, **(generated or {})})
+        expander = _Expander(filename, [Path(d) for d in include_dirs], {**ENGINE_SNIPPETS, **(generated or {})}, texts)
         expander.expand(text, filename, base_dir, [(key, filename)])
         return cls(
             text="\n".join(expander.lines) + "\n",

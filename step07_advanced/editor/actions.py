@@ -1,5 +1,6 @@
 """The editor's edits, each one undoable: entities (create, destroy, duplicate, rename, reparent), components (add,
-remove, set a field), transforms, and materials (colour, texture). Panels, the gizmo, menus and tests all call these.
+remove, set a field), transforms, and materials (colour, texture, the values of its Material block). Panels, the
+gizmo, menus and tests all call these.
 
 Each method checks its input (an unknown entity, a field a component does not have, a value the field refuses:
 the error names it), applies the edit and records a :class:`~step07_advanced.editor.commands.Command` that takes it
@@ -287,6 +288,26 @@ class EditorActions:
             self._material_colors.pop(material, None)
 
         self.commands.push(Command(f"texture of {material}", lambda: put(new), lambda: put(data)))
+
+    def set_material_param(self, material: str, field: str, value: Any, merge: bool = False) -> None:
+        """Set one of ``material``'s values (a field of its shader's Material block; the renderer rebuilds the
+        material on next use); undoable, a drag is one step."""
+        assets = self.scene.assets
+        data = assets.materials.get(material)
+        if data is None:
+            raise ValueError(f"editor: no material '{material}' in scene '{self.scene.name}'")
+        if field not in data.params:
+            raise ValueError(f"editor: material '{material}' has no value '{field}' "
+                             f"(it has: {', '.join(sorted(data.params)) or 'none'})")
+        new = dataclasses.replace(data, params={**data.params, field: value})  # checked here, naming the field
+        if _same(np.asarray(new.params[field]), np.asarray(data.params[field])):
+            return
+
+        def put(value: Any) -> None:
+            self.scene.assets.material(material, value)
+
+        self.commands.push(Command(f"{field} of {material}", lambda: put(new), lambda: put(data),
+                                   merge_key=("param", material, field)), merge=merge)
 
     _material_colors: dict[str, tuple[float, ...]]
 

@@ -16,9 +16,8 @@ from typing import Any
 from gandalf_core.ecs import Component
 
 #: The panel kinds the editor's systems draw.
-PANEL_KINDS = ("menu", "viewport", "hierarchy", "inspector", "systems", "content", "console", "stats", "file", "frame")
-#: Panels that start hidden (the View menu shows them).
-HIDDEN_AT_START = frozenset({"frame"})
+PANEL_KINDS = ("menu", "viewport", "hierarchy", "inspector", "systems", "content", "console", "stats", "file",
+               "shader", "frame")
 
 
 _TITLES = {"menu": "Menu bar", "content": "Content browser", "file": "Scene file", "frame": "Frame inspector"}

@@ -24,7 +24,7 @@ from gandalf_core.ecs import Scene, System
 
 from .actions import EditorActions
 from .commands import Command, CommandStack
-from .components import HIDDEN_AT_START, EditorPanelComponent
+from .components import EditorPanelComponent
 from .console_log import EditorLog
 
 #: The editor of each application that has one enabled.
@@ -50,8 +50,17 @@ def _default_layout(width: int, height: int) -> list[tuple[str, str | None, tupl
         ("systems", None, (left + mid, top + 0.46 * h), (right, 0.24 * h)),
         ("stats", None, (left + mid, top + 0.70 * h), (right, 0.17 * h)),
         ("file", None, (left + mid, top + 0.87 * h), (right, 0.13 * h)),
-        ("frame", None, (left + mid, top), (right, h)),  # hidden at start, over the right column
     ]
+
+
+def _closed_layout(width: int, height: int) -> list[tuple[str, str | None, tuple[float, float], tuple[float, float]]]:
+    """The panels that start closed (View menu, or a button that opens them): the shader panel over the left column
+    and the viewport's left third, so that most of the picture and the inspector stay in sight; the frame inspector
+    over the right column."""
+    top = MENU_HEIGHT
+    left, mid = 0.22 * width, 0.50 * width
+    return [("shader", None, (0.0, top), (left + 0.17 * width, height - top)),
+            ("frame", None, (left + mid, top), (width - left - mid, height - top))]
 
 
 class Editor(EditorActions):
@@ -90,6 +99,7 @@ class Editor(EditorActions):
         self._payload_ids: dict[tuple[str, Any], int] = {}
         self._entity_count, self._entity_count_key = 0, -1
         self._shader_sources: dict[str, tuple[Any, ...]] = {}
+        self._shader_edits: Any = None
         #: Seconds (app clock) between the panels' runs while the GUI is idle; 0 runs them every frame.
         self.gui_interval = 1.0 / 20.0
         #: Frames that ran the panels, and frames that drew the last GUI frame again (see ``_gui_due``).
@@ -149,8 +159,10 @@ class Editor(EditorActions):
                 if system.updates_each_frame:
                     scene.move_system(system, render[0])
         renderer = self.app.renderer
-        panels = [EditorPanelComponent(kind, title, kind not in HIDDEN_AT_START, position=pos, size=size)
+        panels = [EditorPanelComponent(kind, title, position=pos, size=size)
                   for kind, title, pos, size in _default_layout(renderer.width, renderer.height)]
+        panels += [EditorPanelComponent(kind, title, visible=False, position=pos, size=size)
+                   for kind, title, pos, size in _closed_layout(renderer.width, renderer.height)]
         self._installed[id(scene)] = (scene, [scene.create_entity(p) for p in panels], systems)
     # --8<-- [end:install]
 
@@ -418,6 +430,15 @@ class Editor(EditorActions):
                                    lambda: scene.move_system(system, before)))
 
     # --- shaders ----------------------------------------------------------------------------------------
+    @property
+    def shader_edits(self) -> Any:
+        """The shader panel's model (:class:`~step07_advanced.editor.shader_edits.ShaderEdits`), made on first use."""
+        if self._shader_edits is None:
+            from .shader_edits import ShaderEdits
+
+            self._shader_edits = ShaderEdits(self)
+        return self._shader_edits
+
     def shader_files(self, name: str) -> tuple[Any, ...]:
         """The files shader ``name`` was built from (empty when it was built from text)."""
         built = self._shader_sources.get(name)
@@ -438,11 +459,17 @@ class Editor(EditorActions):
         return self._report(f"built shader '{name}'", error=False)
 
     def reload_shader(self, name: str) -> bool:
-        """Compile shader ``name`` again from the files :meth:`build_shader` built it from."""
+        """Compile shader ``name`` again from the files :meth:`build_shader` built it from; on an error the last
+        good program keeps drawing (``renderer.shaders.rebuild``)."""
         files = self.shader_files(name)
         if not files:
             return self._report(f"shader '{name}': no files to reload it from", error=True)
-        return self.build_shader(name, *files)
+        if name not in self.app.renderer.shaders:
+            return self.build_shader(name, *files)
+        error = self.app.renderer.shaders.rebuild(name)
+        if error is not None:
+            return self._report(f"shader '{name}': {error} (the last good program keeps drawing)", error=True)
+        return self._report(f"built shader '{name}'", error=False)
 
     # --- New / Save / Load ------------------------------------------------------------------------------
     def _report(self, message: str, error: bool) -> bool:

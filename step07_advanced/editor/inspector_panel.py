@@ -3,8 +3,8 @@
 The widgets come from :func:`step07_advanced.editor.field_specs.field_specs` (numbers, flags, choices, names, colours,
 vectors; a Mesh or Material component offers the scene's assets). Every change goes through the editor's undoable
 actions; a drag is one undo step. Each component header has a remove button; "Add component" lists what the entity
-does not have yet. A Material also shows the material's colour and textures (a texture dragged from the content
-browser onto a slot replaces it).
+does not have yet. A Material also shows the material's colour, textures (a texture dragged from the content
+browser onto a slot replaces it) and the values of its shader's Material block, and opens the shader panel.
 """
 
 from __future__ import annotations
@@ -171,4 +171,29 @@ class InspectorPanelSystem(PanelSystem):
             imgui.selectable(f"texture {slot}: {texture}##tex{slot}", False)
             self.remember(f"inspector/texture/{slot}")
             self.texture_drop_target(name, slot)
+        if data is not None and color is not None:
+            self._params(name, data)
+        if imgui.small_button("edit shader"):
+            editor.show_panel("shader")
+        self.remember("inspector/edit_shader")
+
+    def _params(self, name: str, data: Any) -> None:
+        """The material's values of its shader's Material block (the colour above), by field: a field the shader
+        gained shows up here at once."""
+        block = self.editor.app.renderer.materials.get(name).shader.material_block
+        for f in block.fields if block is not None else ():
+            if f.name == "color" or f.name not in data.params:
+                continue
+            value = np.atleast_1d(np.asarray(data.params[f.name], dtype=np.float64))
+            if value.size > 4:
+                imgui.text_disabled(f"{f.name}: {value.size} values")
+                continue
+            draw = {1: imgui.drag_float, 2: imgui.drag_float2, 3: imgui.drag_float3, 4: imgui.drag_float4}
+            args = float(value[0]) if value.size == 1 else value.tolist()
+            changed, widget = draw[value.size](f.name, args, 0.01)
+            self.remember(f"inspector/param/{f.name}")
+            if changed:
+                new = _edited(value, np.atleast_1d(widget))
+                self.act(self.editor.set_material_param, name, f.name, float(new[0]) if value.size == 1 else new,
+                         merge=True)
 

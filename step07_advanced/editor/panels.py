@@ -1,5 +1,5 @@
 """The editor's panel systems, one per panel kind; the stats and file panels live here, the others in their
-own modules (hierarchy, inspector, viewport, systems, content browser, console, menu bar).
+own modules (hierarchy, inspector, viewport, systems, content browser, console, menu bar, shader).
 
 Every system draws the visible :class:`EditorPanelComponent` entities of its kind (see
 :class:`~step07_advanced.editor.panel_base.PanelSystem`).
@@ -17,6 +17,7 @@ from .hierarchy_panel import HierarchyPanelSystem
 from .inspector_panel import InspectorPanelSystem, _edited
 from .menu_bar import MenuBarSystem
 from .panel_base import ERROR_COLOR, PanelSystem, wrapped
+from .shader_panel import ShaderPanelSystem
 from .systems_panel import SystemsPanelSystem
 from .viewport_panel import ViewportPanelSystem
 
@@ -72,7 +73,7 @@ class FilePanelSystem(PanelSystem):
 #: into its texture during the frame's update).
 PANEL_SYSTEMS: tuple[type[PanelSystem], ...] = (
     MenuBarSystem, ViewportPanelSystem, HierarchyPanelSystem, InspectorPanelSystem, SystemsPanelSystem,
-    ContentPanelSystem, ConsolePanelSystem, StatsPanelSystem, FilePanelSystem, FramePanelSystem,
+    ContentPanelSystem, ConsolePanelSystem, StatsPanelSystem, FilePanelSystem, FramePanelSystem, ShaderPanelSystem,
 )
 
 __all__ = ["PANEL_SYSTEMS", "PanelSystem", "_edited"]

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 from collections import Counter
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -29,6 +29,7 @@ from ..material_block import MATERIAL_BLOCK, block_values, check_glsl_varyings, 
 from ..material_checks import check_parameters
 from ..material_values import MaterialValues
 from ..patches import declared_patch_size
+from ..rebuild import RebuildableShaders
 from ..shader_files import load_shader
 from ..storage import StorageBufferLib, StorageLayout, buffer_bytes, check_material_buffer, glsl_storage_layouts
 from ..texture_checks import check_texture_kinds, check_texture_size
@@ -164,12 +165,13 @@ class GLShader:
     storage_layouts: dict[str, StorageLayout] = field(default_factory=dict)
 
 
-class ShaderLib(ResourceLib[GLShader]):
+class ShaderLib(RebuildableShaders, ResourceLib[GLShader]):
     kind = "shader"
 
     def __init__(self, ctx: moderngl.Context, stats: Counter[str]) -> None:
         super().__init__(stats)
         self.ctx = ctx
+        self._recipes: dict[str, tuple[tuple[Any, ...], dict[str, Any]]] = {}
 
     def build(
         self,
@@ -191,15 +193,23 @@ class ShaderLib(ResourceLib[GLShader]):
         """
         if name in self._items:
             return self._items[name]
-        make_current(self.ctx)  # this renderer's context, whichever another Application made current
-        return self._build(name, vertex, fragment, geometry, tess_control, tess_evaluation, include_dirs, material)
+        args = (vertex, fragment, geometry, tess_control, tess_evaluation)
+        kwargs = {"include_dirs": include_dirs, "material": material}
+        shader, stages = self._compile(name, *args, **kwargs)
+        self._items[name] = shader
+        self._data[name] = stages
+        self._remember(name, args, kwargs)
+        return shader
 
-    def _build(self, name: str, vertex: Any, fragment: Any, geometry: Any, tess_control: Any, tess_evaluation: Any,
-               include_dirs: Sequence[str | Path], material: MaterialDeclaration | None) -> GLShader:
+    def _compile(self, name: str, vertex: Any, fragment: Any, geometry: Any, tess_control: Any, tess_evaluation: Any,
+                 include_dirs: Sequence[str | Path], material: MaterialDeclaration | None,
+                 texts: Mapping[Path, str] | None = None) -> tuple[GLShader, dict[str, ShaderSource]]:
+        """The linked program and its stages (``texts``: file text to use instead of the disk's, by path)."""
+        make_current(self.ctx)  # this renderer's context, whichever another Application made current
         layout, generated = declared_block(name, material)
         stages = {
-            "vertex_shader": load_shader(vertex, "vertex", "glsl", include_dirs, generated),
-            "fragment_shader": load_shader(fragment, "fragment", "glsl", include_dirs, generated),
+            "vertex_shader": load_shader(vertex, "vertex", "glsl", include_dirs, generated, texts),
+            "fragment_shader": load_shader(fragment, "fragment", "glsl", include_dirs, generated, texts),
         }
         for key, src, stage in (
             ("geometry_shader", geometry, "geometry"),
@@ -207,7 +217,7 @@ class ShaderLib(ResourceLib[GLShader]):
             ("tess_evaluation_shader", tess_evaluation, "tess_evaluation"),
         ):
             if src is not None:
-                stages[key] = load_shader(src, stage, "glsl", include_dirs, generated)
+                stages[key] = load_shader(src, stage, "glsl", include_dirs, generated, texts)
         for src in stages.values():
             check_glsl_main(src)
         material_block = used_block(name, layout, list(stages.values()), material is not None)
@@ -255,19 +265,21 @@ class ShaderLib(ResourceLib[GLShader]):
         kinds = dict(kind for src in stages.values() for kind in _declared_sampler_kinds(src.text))
         values = {k: v for src in stages.values() for k, v in _declared_material_uniforms(src.text).items()}
         files = ", ".join(src.filename for src in stages.values())
-        if material_block is not None:
-            _check_block_against_driver(name, files, program, material_block)
-        if values:
-            raise ShaderCompileError(f"shader '{name}' ({files}): declares loose material uniforms "
-                                     f"({', '.join('u_' + v for v in values)}); a material's values go in one "
-                                     "'layout(std140) uniform Material { ... } material;' block, the same fields as "
-                                     "WGSL's Material struct")
+        try:
+            if material_block is not None:
+                _check_block_against_driver(name, files, program, material_block)
+            if values:
+                raise ShaderCompileError(f"shader '{name}' ({files}): declares loose material uniforms "
+                                         f"({', '.join('u_' + v for v in values)}); a material's values go in one "
+                                         "'layout(std140) uniform Material { ... } material;' block, the same fields "
+                                         "as WGSL's Material struct")
+        except ShaderCompileError:
+            program.release()  # a program refused here is never drawn with (a rebuild keeps the last good one)
+            raise
         shader = GLShader(name, program, attributes, samplers, uniforms, patch_vertices, storage_blocks, active_storage,
                           {s: "Cube" in kinds.get(s, "") for s in samplers}, files, material_block,
                           glsl_storage_layouts([src.text for src in stages.values()]))
-        self._items[name] = shader
-        self._data[name] = stages
-        return shader
+        return shader, stages
 
     def _release(self, item: GLShader) -> None:
         item.program.release()
@@ -488,6 +500,8 @@ class MaterialLib(ResourceLib[GLMaterial]):
                  buffers: BufferLib | None = None) -> None:
         super().__init__(stats)
         self.shaders, self.textures, self.buffers = shaders, textures, buffers
+        # A shader rebuilt from new text (or released) takes the materials built with it along.
+        shaders.on_forget.append(lambda shader: self.renew_where(lambda material: material.shader.name == shader))
 
     def _create(self, name: str, data: MaterialData) -> GLMaterial:
         referrer = f"material '{name}'"

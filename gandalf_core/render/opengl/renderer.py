@@ -91,6 +91,7 @@ class OpenGLRenderer(Renderer):
         self._vaos: dict[tuple[str, str], moderngl.VertexArray] = {}
         # Released or replaced resources take what refers to them along (rebuilt on their next use).
         self.meshes.on_forget.append(self._forget_vertex_arrays)
+        self.shaders.on_forget.append(self._forget_vertex_arrays)
         self.textures.on_forget.append(self._forget_materials_using)
         self._state: tuple[Any, ...] | None = None
         self._fbo: moderngl.Framebuffer | None = None
@@ -358,8 +359,9 @@ class OpenGLRenderer(Renderer):
                                     self.ctx.screen.size)
             self.window.swap_buffers()
 
-    def _forget_vertex_arrays(self, mesh: str) -> None:
-        for key in [k for k in self._vaos if k[1] == mesh]:
+    def _forget_vertex_arrays(self, name: str) -> None:
+        """Release the vertex arrays made for mesh or shader ``name`` (gone or rebuilt)."""
+        for key in [k for k in self._vaos if name in k]:
             self._vaos.pop(key).release()
 
     def _vertex_array(self, shader: GLShader, mesh: GLMesh) -> moderngl.VertexArray:

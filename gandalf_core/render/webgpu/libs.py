@@ -15,7 +15,7 @@ from __future__ import annotations
 import itertools
 import re
 from collections import Counter
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -38,6 +38,7 @@ from ..library import ResourceLib
 from ..material_block import block_values, declared_block, used_block
 from ..material_checks import check_parameters
 from ..material_values import MaterialValues
+from ..rebuild import RebuildableShaders
 from ..shader_files import load_shader
 from ..storage import StorageBufferLib, StorageLayout, buffer_bytes, check_material_buffer, wgsl_storage_layouts
 from ..texture_checks import check_texture_size
@@ -207,13 +208,14 @@ class WGPUShader:
     storage_layouts: dict[int, StorageLayout] = field(default_factory=dict)
 
 
-class ShaderLib(ResourceLib[WGPUShader]):
+class ShaderLib(RebuildableShaders, ResourceLib[WGPUShader]):
     kind = "shader"
 
     def __init__(self, device: Any, stats: Counter[str]) -> None:
         super().__init__(stats)
         self.device = device
         self._group_layouts: dict[tuple[str, ...], Any] = {}
+        self._recipes: dict[str, tuple[tuple[Any, ...], dict[str, Any]]] = {}
 
     def build(self, name: str, source: str | Path | ShaderSource, *, vertex_entry: str | None = None,
               fragment_entry: str | None = None, include_dirs: Sequence[str | Path] = (),
@@ -227,8 +229,20 @@ class ShaderLib(ResourceLib[WGPUShader]):
         """
         if name in self._items:
             return self._items[name]
+        kwargs = {"vertex_entry": vertex_entry, "fragment_entry": fragment_entry, "include_dirs": include_dirs,
+                  "material": material}
+        shader, src = self._compile(name, source, **kwargs)
+        self._items[name] = shader
+        self._data[name] = src
+        self._remember(name, (source,), kwargs)
+        return shader
+
+    def _compile(self, name: str, source: str | Path | ShaderSource, *, vertex_entry: str | None,
+                 fragment_entry: str | None, include_dirs: Sequence[str | Path], material: MaterialDeclaration | None,
+                 texts: Mapping[Path, str] | None = None) -> tuple[WGPUShader, ShaderSource]:
+        """The checked module and its source (``texts``: file text to use instead of the disk's, by path)."""
         declared, generated = declared_block(name, material)
-        src = load_shader(source, None, "wgsl", include_dirs, generated)
+        src = load_shader(source, None, "wgsl", include_dirs, generated, texts)
         block = used_block(name, declared, [src], material is not None)
         try:
             module = self.device.create_shader_module(code=src.text, label=src.filename)
@@ -247,9 +261,7 @@ class ShaderLib(ResourceLib[WGPUShader]):
         self.stats["shaders_created"] += 1
         shader = WGPUShader(name, module, src, vertex[0], fragment[0], check.get_bind_group_layout(MATERIAL_GROUP),
                             block, wgsl_storage_layouts(src.text, MATERIAL_GROUP))
-        self._items[name] = shader
-        self._data[name] = src
-        return shader
+        return shader, src
 
     def group_layout(self, kinds: tuple[str, ...]) -> Any:
         """The bind group layout of a material's ``@group(1)``, one per sequence of binding kinds (in binding
@@ -474,6 +486,8 @@ class MaterialLib(ResourceLib[WGPUMaterial]):
                  buffers: BufferLib | None = None) -> None:
         super().__init__(stats)
         self.device, self.shaders, self.textures, self.buffers = device, shaders, textures, buffers
+        # A shader rebuilt from new text (or released) takes the materials built with it along.
+        shaders.on_forget.append(lambda shader: self.renew_where(lambda material: material.shader.name == shader))
 
     def _create(self, name: str, data: MaterialData) -> WGPUMaterial:
         referrer = f"material '{name}'"

@@ -108,6 +108,9 @@ class WebGPURenderer(Renderer):
         # Released or replaced textures take the bind groups that use them along (rebuilt on their next use).
         self.textures.on_forget.append(self._forget_materials_using)
         self.textures.on_forget.append(lambda name: self._sky_materials.pop(name, None))
+        # A shader rebuilt from new text: the pipelines made with its old module go (each key starts with its name).
+        self.shaders.on_forget.append(
+            lambda name: [self._pipelines.pop(k) for k in list(self._pipelines) if k[0] == name])
         self._instance_buffer: Any = None
         #: The colour format the frame being recorded is drawn in (pipelines are built per format).
         self._target_format = COLOR_FORMAT
