@@ -2,6 +2,9 @@
 // kernel of the given radius. The compute shader filter/shaders/weights.* calls it once per tap to
 // fill the weight table the blur kernels read. Returns 0 until you write it
 // (every blurred pixel is then black).
+// A wrong or black picture? `python -m step07_advanced.opengl --technique filter --student --editor`:
+// View > Shader shows a compile error at its line and rebuilds on save; View > Frame inspector shows
+// each draw's uniforms by name and which draw wrote a pixel (step 07's page: "Find a black-screen bug").
 //
 //   radius: 0..32; i: the tap, -radius <= i <= radius.
 //   1. sigma = radius / 2 (as a float), and the unnormalised weight g(i) = exp(-i^2 / (2 sigma^2)).

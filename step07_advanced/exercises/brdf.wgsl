@@ -3,6 +3,9 @@
 // Rules graded for EVERY input, including roughness 0 and 1, cosines 0
 // (grazing) and out of range, black base colours: the result is finite
 // (no NaN/Inf: watch 0/0 and pow(0, 0)) and matches the formula below.
+// A wrong or black picture? `python -m step07_advanced.webgpu --technique showcase --student --editor`:
+// View > Shader shows a compile error at its line and rebuilds on save; View > Frame inspector shows
+// each draw's uniforms by name and which draw wrote a pixel (step 07's page: "Find a black-screen bug").
 
 // GGX / Trowbridge-Reitz normal distribution D(h) = alpha² / (pi ((n·h)² (alpha² - 1) + 1)²).
 // Clamp the perceptual roughness to [0.045, 1] first and square

@@ -2,6 +2,9 @@
 // The compute shader filter/shaders/blur_pass.* calls it for every pixel, once with dir = (1, 0)
 // (horizontal pass), then on that result with dir = (0, 1)
 // (vertical pass). Returns magenta until you write it.
+// A wrong or black picture? `python -m step07_advanced.webgpu --technique filter --student --editor`:
+// View > Shader shows a compile error at its line and rebuilds on save; View > Frame inspector shows
+// each draw's uniforms by name and which draw wrote a pixel (step 07's page: "Find a black-screen bug").
 //
 // Given by the kernel (see filter/shaders/io.wgsl): image_size() (width, height in pixels);
 // load_texel(q) (the pixel at q, which must lie inside the image: outside it gives magenta);

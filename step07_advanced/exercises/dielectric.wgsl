@@ -1,4 +1,7 @@
 // Exercise scatter_dielectric (step07 path tracer), WGSL: where a ray goes when it meets glass.
+// A wrong or black picture? `python -m step07_advanced.webgpu --technique pathtracer --student --editor`:
+// View > Shader shows a compile error at its line and rebuilds on save; View > Frame inspector shows
+// each draw's uniforms by name and which draw wrote a pixel (step 07's page: "Find a black-screen bug").
 //
 // scatter_dielectric(dir, normal, ior, u) -> the new ray direction, unit length
 //   dir:    the incoming direction, any non-zero length: normalise it first.

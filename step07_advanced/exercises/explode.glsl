@@ -1,6 +1,9 @@
 // Exercise explode_offset: the displacement of an exploding triangle,
 // in GLSL (used by the explode geometry shader). Both functions
 // return zero (no explosion) until you write them.
+// A wrong or black picture? `python -m step07_advanced.opengl --technique explode --student --editor`:
+// View > Shader shows a compile error at its line and rebuilds on save; View > Frame inspector shows
+// each draw's uniforms by name and which draw wrote a pixel (step 07's page: "Find a black-screen bug").
 //
 // face_normal(p0, p1, p2): the unit normal of the triangle by the right-hand rule on its winding,
 //     n = normalize(cross(p1 - p0, p2 - p0))

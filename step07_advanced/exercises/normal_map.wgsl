@@ -1,6 +1,9 @@
 // Exercise 2: decoding a tangent-space normal map in WGSL
 // (included by the step's normal-mapped shaders). Returns magenta
 // until you write it. Keep it free of NaN for any input.
+// A wrong or black picture? `python -m step07_advanced.webgpu --technique parallax --student --editor`:
+// View > Shader shows a compile error at its line and rebuilds on save; View > Frame inspector shows
+// each draw's uniforms by name and which draw wrote a pixel (step 07's page: "Find a black-screen bug").
 
 // The shading normal (unit, world space) for the unit interpolated normal n, the world-space
 // tangent (xyz: along +u, w: ±1 handedness) and a normal-map texel map_rgb in [0, 1]³

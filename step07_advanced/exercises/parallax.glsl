@@ -1,6 +1,9 @@
 // Exercise parallax: simple, steep and occlusion parallax mapping, in GLSL
 // (used by step07_advanced/parallax). All three return uv unchanged
 // (flat, like plain normal mapping) until you write them.
+// A wrong or black picture? `python -m step07_advanced.opengl --technique parallax --student --editor`:
+// View > Shader shows a compile error at its line and rebuilds on save; View > Frame inspector shows
+// each draw's uniforms by name and which draw wrote a pixel (step 07's page: "Find a black-screen bug").
 //
 // Conventions (the same in all three functions):
 //   * height_at(uv) is the height field in [0, 1] (1 = the top surface, 0 = the deepest point); the

@@ -1,5 +1,8 @@
 // Exercise 3: one time step of a particle in WGSL, run by the compute shader particles.wgsl for
 // every particle. Returns the particle unchanged until you write it.
+// A wrong or black picture? `python -m step07_advanced.webgpu --technique showcase --student --editor`:
+// View > Shader shows a compile error at its line and rebuilds on save; View > Frame inspector shows
+// each draw's uniforms by name and which draw wrote a pixel (step 07's page: "Find a black-screen bug").
 //
 // Particle: position.xyz, position.w = remaining life in seconds;
 // velocity.xyz (velocity.w: keep as is). SimParams s: s.gravity.xyz

@@ -1,4 +1,7 @@
 // Exercise hit_sphere (step07 path tracer), GLSL: the nearest intersection of a ray with a sphere.
+// A wrong or black picture? `python -m step07_advanced.opengl --technique pathtracer --student --editor`:
+// View > Shader shows a compile error at its line and rebuilds on save; View > Frame inspector shows
+// each draw's uniforms by name and which draw wrote a pixel (step 07's page: "Find a black-screen bug").
 //
 // hit_sphere(origin, dir, center, radius, t_min, t_max) -> t
 //   The ray is origin + t * dir. dir is any non-zero vector (NOT necessarily unit length): t is in

@@ -3,6 +3,9 @@
 // you write them the stubs return the minimum level, height 0 and the up vector: the terrain
 // renders flat and coarse, and `pytest --student tests/step07_advanced -k terrain` fails. Keep
 // every function free of NaN for any input.
+// A wrong or black picture? `python -m step07_advanced.opengl --technique terrain --student --editor`:
+// View > Shader shows a compile error at its line and rebuilds on save; View > Frame inspector shows
+// each draw's uniforms by name and which draw wrote a pixel (step 07's page: "Find a black-screen bug").
 //
 // The including shader provides the heightmap, a square map of N x N texels:
 //   int heightmap_size();                // N
