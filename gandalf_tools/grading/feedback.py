@@ -251,6 +251,8 @@ def sentence(error: BaseException, *, exercise: str = "", file: str = "", hint: 
         elif own and " to hold" in body and "expected" in own:
             body = own
         call = last_call()
+        if call is not None and call[1] == "None" and not teaching_gaps(body):
+            call = None  # a system's hook that returns nothing: the test's own words already say it all
         if call is not None and call[0].split("(")[0] not in body:
             label, result = call
             lead = len(exercise) + len(file) + 5  # the exercise and its file, when the sentence must be led by them
@@ -267,7 +269,7 @@ def sentence(error: BaseException, *, exercise: str = "", file: str = "", hint: 
             body = f"{_shorter(call[0], 110)} {_clip(call[1], 110)}; expected {want}"
         elif call is not None and call[0].split("(")[0] not in body and type(error).__name__ != "ExerciseTimeout":
             label = _shorter(call[0], 80)  # the student's answer, then what the engine made of it
-            body = f"{label} {_verb(_clip(call[1], 60))}; then {body}"
+            body = f"{label} {_verb(_clip(call[1], 60))}; expected an answer the engine accepts, but then {body}"
         elif expected_raise and type(error).__name__ != "ExerciseTimeout":
             body = f"{body}; expected {expected_raise}"
     body = re.sub(r"\b(?:[a-z_]+\.)+([A-Z]\w*(?:Error|Timeout|Exception|Warning))\b", r"\1", body)
