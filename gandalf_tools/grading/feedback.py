@@ -7,8 +7,13 @@ and the batch report), built here from the test's exception:
   is still a stub and in which file: ``hsv_to_rgb is still a stub: write it in step01_window/exercises/hue.py``;
 * a wrong answer says what was called with which input, what came back and what was expected: the last call of
   the student's code in the test (:func:`record_call`), then the test's own message, or a numpy comparison's
-  ``x``/``y`` arrays, or pytest's ``assert left == right``;
+  ``x``/``y`` arrays, or pytest's ``assert left == right``, or an ordering's bound (``got worst = 3, expected ≤ 1``);
+* a call that should have raised and returned, or raised the wrong error (:func:`record_raise`), says what it did
+  and what the ``pytest.raises`` around it waits for (:func:`raises_expected`);
 * anything else keeps its first line, without module paths.
+
+:func:`teaching_gaps` says which of input, expected and got a sentence leaves out: the mutation check counts them
+over every mutant's first failed test.
 
 A sentence that does not name the exercise's function or file is prefixed with it (``brdf (step07_advanced/
 exercises/brdf.glsl): ...``), and every sentence is capped at :data:`LIMIT` characters. The full traceback goes to

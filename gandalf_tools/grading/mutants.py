@@ -19,10 +19,10 @@ the tests have a gap. Before the mutants and again after them, an unchanged copy
 a change of the engine during the run (in a shared working tree).
 
 The run exits with 1 when a mutant survives, a control fails, a mutant cannot be built, or the message a killed
-mutant's first failed test gives the student does not name the input, the expected and the got (VAGUE). Survivors already
-reported to the test authors are listed in ``tests/mutants/known_gaps.txt``: they are printed as KNOWN GAP and
-do not fail the run (``--strict`` fails on them too), and an entry whose mutant is killed now is STALE and
-fails the run, so the list shrinks as the tests improve.
+mutant's first failed test gives the student does not name the input, the expected and the got (VAGUE).
+Survivors already reported to the test authors are listed in ``tests/mutants/known_gaps.txt``: they are printed as
+KNOWN GAP and do not fail the run (``--strict`` fails on them too), and an entry whose mutant is killed now is
+STALE and fails the run, so the list shrinks as the tests improve.
 """
 
 from __future__ import annotations
