@@ -284,7 +284,7 @@ def sentence(error: BaseException, *, exercise: str = "", file: str = "", hint: 
                 f"bindings do not match ({_clip(body, 110)})")
     body = body.removeprefix("Failed: ")
     body = body.replace(f"{_ROOT}/", "")  # paths as the student sees them, from the checkout
-    body = re.sub(r"\bnp\.(?:float|int|uint|bool_)\d*\(([^()]*)\)", r"\1", body)  # np.float64(1.5) -> 1.5
+    body = _plain_numbers(body)
     named = [n for n in (exercise, Path(file).name if file else "") if n]
     if named and not any(re.search(rf"(?<![\w/]){re.escape(n)}\b", body) for n in named):
         body = f"{exercise}{f' ({file})' if file else ''}: {body}"
@@ -299,9 +299,15 @@ _INPUT = re.compile(r"\b[A-Za-z_][\w.]*\((?!\d+ of )"  # a call with its input: 
                     r"|\b\w+=[\w(\[-]")  # or its values: "uv=[0.2, 0.4], view=[…]"
 
 
+def _plain_numbers(text: str) -> str:
+    """numpy's scalar reprs as plain numbers: ``np.float64(1.5)`` -> ``1.5``."""
+    return re.sub(r"\bnp\.(?:float|int|uint|bool_)\d*\(([^()]*)\)", r"\1", text)
+
+
 def teaching_gaps(message: str) -> list[str]:
     """What a wrong answer's sentence fails to say, of ``input``, ``expected`` and ``got`` (empty: it says all
     three). A stub's sentence is judged elsewhere: it has no answer to show."""
+    message = _plain_numbers(message)  # np.float32(1.0) is a number, not a call with its input
     gaps = []
     if not _INPUT.search(message):
         gaps.append("input")
