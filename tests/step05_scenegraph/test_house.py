@@ -165,8 +165,9 @@ def check_brick_texture(texture, size: int) -> None:
     mortar = np.all(np.abs(rgb - np.round(255 * np.array(MORTAR_COLOUR))) <= 255 * MORTAR_RANGE + 1, axis=-1)
     odd = ~(brick | mortar)
     assert not odd.any(), (
-        f"{int(odd.sum())} texels are neither brick (sRGB {BRICK_COLOUR} within {BRICK_RANGE}) nor mortar "
-        f"({MORTAR_COLOUR} within {MORTAR_RANGE}), e.g. {rgb[odd][0].tolist()} at {np.argwhere(odd)[0].tolist()}")
+        f"got {int(odd.sum())} texels that are neither brick nor mortar, e.g. {rgb[odd][0].tolist()} at "
+        f"{np.argwhere(odd)[0].tolist()}; expected each texel brick (sRGB {BRICK_COLOUR} within {BRICK_RANGE}) or "
+        f"mortar ({MORTAR_COLOUR} within {MORTAR_RANGE})")
     beds = _runs(mortar.all(axis=1))
     assert len(beds) == 4 and all(length == 2 for _, length in beds), (
         f"bed joints (rows of mortar, start and height): {beds}; expected four joints 2 texels high (four courses)")
