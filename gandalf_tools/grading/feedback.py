@@ -65,6 +65,8 @@ def short(value: Any, limit: int = _VALUE_LIMIT) -> str:
             text = "(" + ", ".join(f"{v:.4g}" for v in value) + (",)" if len(value) == 1 else ")")
         elif isinstance(value, float):
             text = f"{value:.6g}"
+        elif isinstance(value, (bytes, bytearray, memoryview)):  # packed GPU data: its size says more than its bytes
+            text = f"{len(bytes(value))} bytes"
         else:
             text = repr(value)
     except Exception:  # noqa: BLE001 - a value whose repr fails says so
