@@ -56,7 +56,8 @@ def difference_sentence(image: np.ndarray, expected: np.ndarray, mask: np.ndarra
     want = np.broadcast_to(np.asarray(expected, dtype=np.float64), got.shape)
     diff = np.where(mask[..., None], np.abs(got - want), -1.0).max(axis=-1)
     row, col = np.unravel_index(int(np.argmax(diff)), diff.shape)
-    saved = shown_failure(save_failure(image, want))
+    # Only the pixels of the mask are compared: outside it the expected picture shows the drawn one (no difference).
+    saved = shown_failure(save_failure(image, np.where(mask[..., None], want, got)))
     lead = f"for {case}: " if case else ""
     return (f"{lead}worst pixel (x {col}, y {row}) got {got[row, col].astype(int).tolist()}, expected "
             f"{np.round(want[row, col]).astype(int).tolist()}; mean error {mean:.2f} (allowed {mean_limit:g}), 99th "

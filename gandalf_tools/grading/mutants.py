@@ -275,6 +275,7 @@ def _start(job: _Job, timeout: float, fork: bool) -> None:
                 os.dup2(fd, 1)
                 os.dup2(fd, 2)
                 os.environ["GANDALF_IMPL"] = impl
+                os.environ["GANDALF_FAILURE_DIR"] = str(job.folder / "failures")  # not the checkout's tests/_failures
                 use_bytecode_cache()
                 os.chdir(ROOT)
                 import pytest
@@ -290,7 +291,8 @@ def _start(job: _Job, timeout: float, fork: bool) -> None:
                 os._exit(code)
         job.pid = pid
     else:
-        env = bytecode_cache_env({**os.environ, "GANDALF_IMPL": impl})
+        env = bytecode_cache_env({**os.environ, "GANDALF_IMPL": impl,
+                                  "GANDALF_FAILURE_DIR": str(job.folder / "failures")})
         with open(log, "w") as out:
             job.popen = subprocess.Popen(
                 [sys.executable, "-m", "pytest", *job.pytest_args(timeout)], cwd=ROOT, env=env, stdout=out, stderr=out
