@@ -59,9 +59,11 @@ def difference_sentence(image: np.ndarray, expected: np.ndarray, mask: np.ndarra
     # Only the pixels of the mask are compared: outside it the expected picture shows the drawn one (no difference).
     saved = shown_failure(save_failure(image, np.where(mask[..., None], want, got)))
     lead = f"for {case}: " if case else ""
+    # The folder before the error figures: the student's one line (at most 300 characters) keeps it. The files are
+    # named after the test, which the line starts with.
     return (f"{lead}worst pixel (x {col}, y {row}) got {got[row, col].astype(int).tolist()}, expected "
-            f"{np.round(want[row, col]).astype(int).tolist()}; mean error {mean:.2f} (allowed {mean_limit:g}), 99th "
-            f"percentile {p99:.1f} (allowed {p99_limit:g}) 8-bit steps; pictures: {saved}")
+            f"{np.round(want[row, col]).astype(int).tolist()}; pictures in {saved.rsplit('/', 1)[0]}/; mean error "
+            f"{mean:.2f} levels (allowed {mean_limit:g}), 99th percentile {p99:.0f} (allowed {p99_limit:g})")
 
 
 def assert_near_reference(image: np.ndarray, expected: np.ndarray, mask: np.ndarray, case: str = "") -> None:

@@ -64,7 +64,7 @@ def test_a_reference_check_names_the_case_and_saves_its_pictures(tmp_path, monke
         assert_near_reference(got, expected[..., :3].astype(np.float64), np.ones(got.shape[:2], bool), "a forced case")
     message = str(failure.value)
     assert message.startswith("for a forced case: worst pixel (x 6, y 4) got [255, 0, 0], expected [0, 0, 255]")
-    pictures = _saved(message, tmp_path)
+    assert f"; pictures in {tmp_path}/; " in message  # the files are named after the test
+    name = "test_a_reference_check_names_the_case_and_saves_its_pictures"
+    pictures = _saved(f"{tmp_path / name}-*.png", tmp_path)
     assert (pictures["actual"] == got).all() and (pictures["expected"] == expected).all()
-    assert Path(re.search(r"(\S+)-\*\.png", message).group(1)).name == (
-        "test_a_reference_check_names_the_case_and_saves_its_pictures")

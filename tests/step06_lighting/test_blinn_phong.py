@@ -26,9 +26,8 @@ def _check(backend, impl, material, lights):
     expected, hit = reference_sphere(material, lights)
     image = render(backend, impl, sphere_scene(material, lights))
     params = ", ".join(f"{k} {v:g}" for k, v in material.params.items())
-    kinds = "+".join(light[0].kind for light in lights)
     assert_near_reference(image, expected, inner(hit),
-                          f"a sphere in {backend} (colour {tuple(material.color)[:3]}, {params}; lights {kinds})")
+                          f"a sphere in {backend} (colour {tuple(material.color)[:3]}, {params}, {len(lights)} lights)")
 
 
 @pytest.mark.exercise("blinn_phong")
