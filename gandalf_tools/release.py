@@ -37,6 +37,7 @@ import re
 import shutil
 import subprocess
 import sys
+import time
 import zipfile
 from collections.abc import Iterable
 from dataclasses import dataclass, field
@@ -370,6 +371,23 @@ def _copy(base: Path, path: str, out: Path) -> int:
     return target.stat().st_size
 
 
+def _progress(text: str, done: int = 0, total: int = 0) -> None:
+    """What the build is doing, on one line rewritten in place, for a person at a terminal (a log stays as it was:
+    its first line is the summary)."""
+    if not sys.stderr.isatty():
+        return
+    now = time.monotonic()
+    if total and 0 < done < total and now - _progress_shown[0] < 0.5:
+        return
+    _progress_shown[0] = now
+    count = f" {done}/{total}" if total else ""
+    sys.stderr.write(f"\r\033[K{text}{count}" + ("\n" if total and done >= total else ""))
+    sys.stderr.flush()
+
+
+_progress_shown = [0.0]
+
+
 def build(out: Path, root: Path = ROOT, *, make_zip: bool = False, force: bool = False) -> Release:
     """Write the student release of the tree at ``root`` into ``out`` (which must not exist unless ``force``);
     raise ValueError when something that must ship reaches the solutions (a bug of the course)."""
@@ -378,12 +396,14 @@ def build(out: Path, root: Path = ROOT, *, make_zip: bool = False, force: bool =
         if not force:
             raise FileExistsError(f"{out} exists: remove it or pass --force")
         shutil.rmtree(out)
+    _progress("reading the course's tracked files and the reference solutions")
     base, files = tracked_files(root)
     ref = reference_of(base, files)
     left_out: dict[str, str] = {}
     instructor_tests: dict[str, list[str]] = {}
     ship = []
-    for path in files:
+    for number, path in enumerate(files, 1):
+        _progress("choosing the files to ship (none may reach the solutions):", number, len(files))
         why = excluded(path)
         if why is not None:
             left_out[path] = why
@@ -398,6 +418,7 @@ def build(out: Path, root: Path = ROOT, *, make_zip: bool = False, force: bool =
         ship.append(path)
     ship = _without_dependents(base, ship, left_out, instructor_tests)
     out.mkdir(parents=True)
+    _progress(f"copying {len(ship)} files to {out}")
     size = sum(_copy(base, path, out) for path in ship)
     if "README.md" in ship or not (base / ".git").exists():
         (out / "README.md").write_text(STUDENT_README)
@@ -406,7 +427,9 @@ def build(out: Path, root: Path = ROOT, *, make_zip: bool = False, force: bool =
     release = Release(out, sorted(ship), left_out, instructor_tests, size)
     release.without_public_tests = sorted(graded_exercises(base) - graded_exercises(out)) if (base / "tests").is_dir() \
         else []
-    problems = check_release(out, root)
+    _progress("checking the release: nothing in it may reach the solutions")
+    problems = check_release(out, root, ref)
+    _progress("")
     if problems:
         raise ValueError("the release holds the reference:\n  " + "\n  ".join(problems))
     if make_zip:
@@ -423,13 +446,17 @@ def make_archive(folder: Path) -> Path:
     return archive
 
 
-def check_release(release: Path, root: Path = ROOT) -> list[str]:
-    """What in the release folder reaches the reference of the tree at ``root``: paths of solutions, mutants or
-    hidden tests, imports of a ``solutions`` package, copies of the reference's files or lines (empty: none)."""
-    base, files = tracked_files(root)
-    ref = reference_of(base, files)
+def check_release(release: Path, root: Path = ROOT, ref: Reference | None = None) -> list[str]:
+    """What in the release folder reaches the reference of the tree at ``root`` (``ref``: already read from it):
+    paths of solutions, mutants or hidden tests, imports of a ``solutions`` package, copies of the reference's files
+    or lines (empty: none)."""
+    if ref is None:
+        base, files = tracked_files(root)
+        ref = reference_of(base, files)
     problems = []
-    for path in sorted(p.relative_to(release).as_posix() for p in Path(release).rglob("*") if p.is_file()):
+    shipped = sorted(p.relative_to(release).as_posix() for p in Path(release).rglob("*") if p.is_file())
+    for number, path in enumerate(shipped, 1):
+        _progress("checking the release: nothing in it may reach the solutions:", number, len(shipped))
         if "__pycache__" in path or path.startswith((".venv/", "out/")):
             continue
         why = excluded(path)

@@ -9,6 +9,7 @@ Set ``GANDALF_UPDATE_REFERENCES=1`` to (re)write reference images.
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -90,8 +91,8 @@ def compare_images(
     """Assert two images agree (PSNR ≥ ``min_psnr`` dB, and no channel off by more than ``max_diff``), or, with
     ``local``, within what two implementations may legally draw differently (:class:`LocalDifferences`).
 
-    On failure the three images are saved as ``<name>-actual/expected/diff.png`` and an AssertionError
-    names them. Returns the PSNR.
+    On failure the images are saved as ``<name>-actual/expected/diff/side-by-side.png`` (:func:`save_failure`) and
+    an AssertionError names them. Returns the PSNR.
     """
     value = psnr(actual, expected)
     worst = int(np.abs(actual[..., :3].astype(int) - expected[..., :3].astype(int)).max())
@@ -104,7 +105,7 @@ def compare_images(
     if problems:
         paths = save_failure(actual, expected, name)
         raise AssertionError(f"{name}: images differ: {'; '.join(problems)} (PSNR {value:.1f} dB, largest channel "
-                             f"difference {worst}); see {paths[0].parent}")
+                             f"difference {worst}); got, expected, diff and side by side: {shown_failure(paths)}")
     return value
 
 
@@ -126,17 +127,50 @@ def compare_to_reference(
     return compare_images(actual, expected, reference.stem, min_psnr=min_psnr, max_diff=max_diff, local=local)
 
 
-def save_failure(actual: np.ndarray, expected: np.ndarray, name: str) -> list[Path]:
+def failure_name() -> str:
+    """A file name for the running test's failure pictures: its name and parameters (``test_x-opengl-24.0``), from
+    pytest's ``PYTEST_CURRENT_TEST``; ``picture`` outside a test."""
+    current = os.environ.get("PYTEST_CURRENT_TEST", "").rsplit(" (", 1)[0].split("::")[-1]
+    return re.sub(r"[^\w.-]+", "-", current).strip("-") or "picture"
+
+
+def _rgba8(image: np.ndarray, shape: tuple[int, ...]) -> np.ndarray:
+    """An image (or one colour, broadcast) as 8-bit RGBA of ``shape``'s height and width."""
+    values = np.broadcast_to(np.asarray(image, dtype=np.float64), (*shape[:2], np.shape(image)[-1]))
+    rgba = np.full((*shape[:2], 4), 255.0)
+    rgba[..., : min(values.shape[-1], 4)] = values[..., :4]
+    return np.clip(np.round(rgba), 0, 255).astype(np.uint8)
+
+
+def save_failure(actual: np.ndarray, expected: np.ndarray, name: str | None = None) -> list[Path]:
+    """Write ``<name>-actual.png``, ``-expected.png``, ``-diff.png`` (the difference, amplified 8 times) and
+    ``-side-by-side.png`` (expected | actual | diff) into :data:`FAILURE_DIR`; return their paths.
+    ``expected`` may be one colour; ``name`` defaults to the running test's (:func:`failure_name`)."""
     from PIL import Image
 
+    name = name or failure_name()
+    actual = _rgba8(actual, np.shape(actual))
+    expected = _rgba8(expected, actual.shape)
     FAILURE_DIR.mkdir(parents=True, exist_ok=True)
     diff = np.abs(actual.astype(int) - expected.astype(int))[..., :3]
     diff = np.clip(diff * 8, 0, 255).astype(np.uint8)
-    paths = [FAILURE_DIR / f"{name}-{kind}.png" for kind in ("actual", "expected", "diff")]
+    paths = [FAILURE_DIR / f"{name}-{kind}.png" for kind in ("actual", "expected", "diff", "side-by-side")]
     Image.fromarray(actual, "RGBA").save(paths[0])
     Image.fromarray(expected, "RGBA").save(paths[1])
     Image.fromarray(diff, "RGB").save(paths[2])
+    gap = np.full((actual.shape[0], 4, 3), 255, np.uint8)  # a white bar between the three
+    Image.fromarray(np.concatenate([expected[..., :3], gap, actual[..., :3], gap, diff], axis=1), "RGB").save(paths[3])
     return paths
+
+
+def shown_failure(paths: list[Path]) -> str:
+    """How a failure message names the pictures :func:`save_failure` wrote: ``tests/_failures/<name>-*.png``, from the
+    checkout where they lie in it."""
+    shown = paths[0].parent / paths[0].name.replace("-actual.png", "-*.png")
+    try:
+        return str(shown.relative_to(Path(__file__).resolve().parent.parent))
+    except ValueError:
+        return str(shown)
 
 
 # --- numpy references for lit spheres (the shading exercises grade against these) ----------------------

@@ -87,24 +87,27 @@ def main(argv: list[str] | None = None) -> int:
     for part in (p for step in steps for p in step_parts(step)):
         images = {}
         for backend in args.backends:
+            lead = f"{part:<26} {backend:<7} "
             try:
                 if headless:
                     start = time.perf_counter()
+                    print(lead, end="", flush=True)  # the part under way, while it renders
+                    lead = ""
                     path = render_step(part, backend, out_dir, width, height, args.frames)
                     images[backend] = path
-                    print(f"{part:<26} {backend:<7} -> {path}  ({time.perf_counter() - start:.2f} s)")
+                    print(f"-> {path}  ({time.perf_counter() - start:.2f} s)")
                 else:
                     print(f"{part} ({backend}): close the window to go on")
                     with importlib.import_module(f"{part}.{backend}").create_app(headless=False) as app:
                         app.run()
             except CapabilityError as exc:  # this machine lacks what the part needs: say so and go on
-                print(f"{part:<26} {backend:<7} -> not here: {exc}")
+                print(f"{lead}-> not here: {exc}")
             except Exception as error:  # a student's release: this part runs the student's exercises
                 sentence = unfinished_exercise(error)
                 if sentence is None and has_solutions(part.split(".")[0]):
                     raise
                 first = (str(error).strip().splitlines() or [type(error).__name__])[0]
-                print(f"{part:<26} {backend:<7} skipped: {sentence or f'your exercises failed: {first}'}")
+                print(f"{lead}skipped: {sentence or f'your exercises failed: {first}'}")
                 waiting.append(part)
                 break
         if len(images) == 2:

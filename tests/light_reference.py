@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from gandalf_core.resources import linear_to_srgb, srgb_to_linear
+from gandalf_tools.testing import save_failure, shown_failure
 
 
 def radiance(light) -> np.ndarray:
@@ -47,19 +48,27 @@ def pixel_errors(image: np.ndarray, expected: np.ndarray, mask: np.ndarray) -> t
 
 
 def difference_sentence(image: np.ndarray, expected: np.ndarray, mask: np.ndarray, mean: float, p99: float,
-                        mean_limit: float = MEAN_TOLERANCE, p99_limit: float = P99_TOLERANCE) -> str:
-    """Where a rendered picture and its reference differ, in words: the errors against their bounds and the pixel
-    that differs most (got against expected)."""
+                        mean_limit: float = MEAN_TOLERANCE, p99_limit: float = P99_TOLERANCE, case: str = "") -> str:
+    """Where a rendered picture and its reference differ, in words: the case drawn (``case``: its input), the pixel
+    that differs most (got against expected), the errors against their bounds, and where the pictures were saved
+    (got, expected, diff and side by side: :func:`gandalf_tools.testing.save_failure`)."""
     got = image[..., :3].astype(np.float64)
     want = np.broadcast_to(np.asarray(expected, dtype=np.float64), got.shape)
     diff = np.where(mask[..., None], np.abs(got - want), -1.0).max(axis=-1)
     row, col = np.unravel_index(int(np.argmax(diff)), diff.shape)
-    return (f"worst pixel (x {col}, y {row}) got {got[row, col].astype(int).tolist()}, expected "
-            f"{np.round(want[row, col]).astype(int).tolist()}; mean error {mean:.2f} (allowed {mean_limit:g}), 99th "
-            f"percentile {p99:.1f} (allowed {p99_limit:g}) 8-bit steps")
+    # Only the pixels of the mask are compared: outside it the expected picture shows the drawn one (no difference).
+    saved = shown_failure(save_failure(image, np.where(mask[..., None], want, got)))
+    lead = f"for {case}: " if case else ""
+    # The folder before the error figures: the student's one line (at most 300 characters) keeps it. The files are
+    # named after the test, which the line starts with.
+    return (f"{lead}worst pixel (x {col}, y {row}) got {got[row, col].astype(int).tolist()}, expected "
+            f"{np.round(want[row, col]).astype(int).tolist()}; pictures in {saved.rsplit('/', 1)[0]}/; mean error "
+            f"{mean:.2f} levels (allowed {mean_limit:g}), 99th percentile {p99:.0f} (allowed {p99_limit:g})")
 
 
-def assert_near_reference(image: np.ndarray, expected: np.ndarray, mask: np.ndarray) -> None:
-    """``image`` within :data:`MEAN_TOLERANCE` and :data:`P99_TOLERANCE` of ``expected`` over ``mask``."""
+def assert_near_reference(image: np.ndarray, expected: np.ndarray, mask: np.ndarray, case: str = "") -> None:
+    """``image`` within :data:`MEAN_TOLERANCE` and :data:`P99_TOLERANCE` of ``expected`` over ``mask``; ``case``
+    says what was drawn (the input), for the failure's sentence."""
     mean, p99 = pixel_errors(image, expected, mask)
-    assert mean <= MEAN_TOLERANCE and p99 <= P99_TOLERANCE, difference_sentence(image, expected, mask, mean, p99)
+    assert mean <= MEAN_TOLERANCE and p99 <= P99_TOLERANCE, difference_sentence(image, expected, mask, mean, p99,
+                                                                               case=case)

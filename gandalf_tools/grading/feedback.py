@@ -7,8 +7,13 @@ and the batch report), built here from the test's exception:
   is still a stub and in which file: ``hsv_to_rgb is still a stub: write it in step01_window/exercises/hue.py``;
 * a wrong answer says what was called with which input, what came back and what was expected: the last call of
   the student's code in the test (:func:`record_call`), then the test's own message, or a numpy comparison's
-  ``x``/``y`` arrays, or pytest's ``assert left == right``;
+  ``x``/``y`` arrays, or pytest's ``assert left == right``, or an ordering's bound (``got worst = 3, expected ≤ 1``);
+* a call that should have raised and returned, or raised the wrong error (:func:`record_raise`), says what it did
+  and what the ``pytest.raises`` around it waits for (:func:`raises_expected`);
 * anything else keeps its first line, without module paths.
+
+:func:`teaching_gaps` says which of input, expected and got a sentence leaves out: the mutation check counts them
+over every mutant's first failed test.
 
 A sentence that does not name the exercise's function or file is prefixed with it (``brdf (step07_advanced/
 exercises/brdf.glsl): ...``), and every sentence is capped at :data:`LIMIT` characters. The full traceback goes to
@@ -26,8 +31,10 @@ LIMIT = 300
 _VALUE_LIMIT = 90
 _ROOT = Path(__file__).resolve().parents[2]
 
-# The calls of the student's code in the running test (this process): (label, what came back), newest last.
+# The calls of the student's code in the running test (this process): (label, what came back), newest last; what
+# came back is "raised <error>" for a call that raised (its error object kept in _raised).
 _calls: list[tuple[str, str]] = []
+_raised: list[BaseException] = []
 _last_result: list[Any] = []  # [function name, the value it returned] of the newest call
 
 
@@ -43,6 +50,7 @@ def reset_calls() -> None:
     """Forget the calls recorded so far (a new test starts)."""
     _calls.clear()
     _last_result.clear()
+    _raised.clear()
 
 
 def short(value: Any, limit: int = _VALUE_LIMIT) -> str:
@@ -57,6 +65,8 @@ def short(value: Any, limit: int = _VALUE_LIMIT) -> str:
             text = "(" + ", ".join(f"{v:.4g}" for v in value) + (",)" if len(value) == 1 else ")")
         elif isinstance(value, float):
             text = f"{value:.6g}"
+        elif isinstance(value, (bytes, bytearray, memoryview)):  # packed GPU data: its size says more than its bytes
+            text = f"{len(bytes(value))} bytes"
         else:
             text = repr(value)
     except Exception:  # noqa: BLE001 - a value whose repr fails says so
@@ -75,8 +85,23 @@ def record_call(label: str, result: Any) -> None:
     _last_result[:] = [label.split("(", 1)[0], result]
 
 
+def record_raise(label: str, error: BaseException) -> None:
+    """Remember that a call of the student's code (``label``) raised ``error`` instead of returning."""
+    if label.split("(", 1)[0].rsplit(".", 1)[-1].startswith("_") or type(error).__name__ == "ExerciseTimeout":
+        return
+    label = re.sub(r"<function (?:[\w.]+\.<locals>\.)?([\w.]+) at 0x[0-9a-f]+>", r"\1", label)
+    _calls.append((label, f"raised {type(error).__name__}: {_one_line(str(error))}".rstrip(": ")))
+    del _calls[:-4]
+    _raised[:] = [error]
+
+
 def last_call() -> tuple[str, str] | None:
     return _calls[-1] if _calls else None
+
+
+def _verb(result: str) -> str:
+    """``returned X`` or, for a call that raised, ``raised …`` (``result`` already says it)."""
+    return result if result.startswith("raised ") else f"returned {result}"
 
 
 def _one_line(text: str) -> str:
@@ -186,13 +211,40 @@ def _first_line(error: BaseException) -> str:
     return f"{name}: {body}" if body else name
 
 
-def sentence(error: BaseException, *, exercise: str = "", file: str = "", hint: str = "", values: str = "") -> str:
+def _raises_sentence(error: BaseException, expected_raise: str) -> str | None:
+    """``pytest.raises``/``pytest.warns`` failed: the student's call returned instead of raising (or warning), or raised
+    with a message that does not say what the test looks for. None for any other failure."""
+    text = str(error)
+    call = last_call()
+    first = text.strip().splitlines()[0] if text.strip() else ""
+    missing = re.match(r"DID NOT (RAISE|WARN)\.? ?(.*?)(?: were emitted\..*)?$", first)
+    regex = re.search(r"Regex pattern did not match\.\s*(?:Expected )?[Rr]egex: (.+?)\s*(?:Actual|Input|Emitted)"
+                      r" (?:message|warnings)?:? (.+)", text, re.S)
+    if missing:
+        what = expected_raise or missing.group(2).removeprefix("No warnings of type ").strip()
+        body = f"expected it to {missing.group(1).lower()} {what}"
+        if call is not None:
+            body = f"{_shorter(call[0], 110)} {_verb(_clip(call[1], 70))}; {body}"
+        return body
+    if regex:
+        got = _clip(_one_line(regex.group(2)), 110)
+        body = f"expected an error message matching {regex.group(1).strip()}, got {got}"
+        return f"{_shorter(call[0], 100)}: {body}" if call is not None else body
+    return None
+
+
+def sentence(error: BaseException, *, exercise: str = "", file: str = "", hint: str = "", values: str = "",
+             expected_raise: str = "") -> str:
     """One line for the student: what failed, with input, expected and got where the test gives them (``values``:
-    :func:`values_sentence`'s words for a bare assert)."""
+    :func:`values_sentence`'s words for a bare assert; ``expected_raise``: the error a ``pytest.raises`` block around
+    the failing line waits for, :func:`raises_expected`)."""
     stub = stub_sentence(error)
     if stub is not None:
         return cap(stub)
-    if isinstance(error, AssertionError):
+    raised = _raises_sentence(error, expected_raise)
+    if raised is not None:
+        body = raised
+    elif isinstance(error, AssertionError):
         text = str(error)
         numpy = _numpy_sentence(text)
         body = numpy or _assert_sentence(text)
@@ -206,19 +258,27 @@ def sentence(error: BaseException, *, exercise: str = "", file: str = "", hint: 
         elif own and " to hold" in body and "expected" in own:
             body = own
         call = last_call()
+        if call is not None and call[1] == "None" and not teaching_gaps(body):
+            call = None  # a system's hook that returns nothing: the test's own words already say it all
         if call is not None and call[0].split("(")[0] not in body:
             label, result = call
-            room = max(LIMIT - len(body) - 20, 50)
+            lead = len(exercise) + len(file) + 5  # the exercise and its file, when the sentence must be led by them
+            room = max(LIMIT - len(body) - lead - 20, 50)
             label = _shorter(label, max(room * 2 // 3, 40))
             result = _clip(result, max(room - len(label), 20))
             joint = ":" if re.match(r"(at |got )", body) else ";"
-            body = f"{label} returned {result}{joint} {body}"
+            body = f"{label} {_verb(result)}{joint} {body}"
     else:
         body = _first_line(error)
         call = last_call()
-        if call is not None and call[0].split("(")[0] not in body and type(error).__name__ != "ExerciseTimeout":
+        if call is not None and _raised and _raised[0] is error:  # the student's own call raised it
+            want = f"it to raise {expected_raise}" if expected_raise else "a result, not an error"
+            body = f"{_shorter(call[0], 110)} {_clip(call[1], 110)}; expected {want}"
+        elif call is not None and call[0].split("(")[0] not in body and type(error).__name__ != "ExerciseTimeout":
             label = _shorter(call[0], 80)  # the student's answer, then what the engine made of it
-            body = f"{label} returned {_clip(call[1], 60)}; then {body}"
+            body = f"{label} {_verb(_clip(call[1], 60))}; expected an answer the engine accepts, but then {body}"
+        elif expected_raise and type(error).__name__ != "ExerciseTimeout":
+            body = f"{body}; expected {expected_raise}"
     body = re.sub(r"\b(?:[a-z_]+\.)+([A-Z]\w*(?:Error|Timeout|Exception|Warning))\b", r"\1", body)
     if file.endswith((".glsl", ".wgsl")) and _UNUSED_BINDINGS.search(body):
         # The shader compiler drops the inputs a function does not read yet: the engine's bindings no longer match.
@@ -226,13 +286,38 @@ def sentence(error: BaseException, *, exercise: str = "", file: str = "", hint: 
                 f"bindings do not match ({_clip(body, 110)})")
     body = body.removeprefix("Failed: ")
     body = body.replace(f"{_ROOT}/", "")  # paths as the student sees them, from the checkout
-    body = re.sub(r"\bnp\.(?:float|int|uint|bool_)\d*\(([^()]*)\)", r"\1", body)  # np.float64(1.5) -> 1.5
+    body = _plain_numbers(body)
     named = [n for n in (exercise, Path(file).name if file else "") if n]
     if named and not any(re.search(rf"(?<![\w/]){re.escape(n)}\b", body) for n in named):
         body = f"{exercise}{f' ({file})' if file else ''}: {body}"
     if hint and hint not in body:
         body = f"{body} Hint: {hint}"
     return cap(body)
+
+
+_GOT = re.compile(r"\b(got|returned|gave|raised)\b| = ")
+_INPUT = re.compile(r"\b[A-Za-z_][\w.]*\((?!\d+ of )"  # a call with its input: hsv_to_rgb(30, 0.7, 0.9), f()
+                    r"|\b(for|with|after|input|radius|case)\b [\w(\[-]"  # or the case in words: "for a sphere …"
+                    r"|\b\w+=[\w(\[-]")  # or its values: "uv=[0.2, 0.4], view=[…]"
+
+
+def _plain_numbers(text: str) -> str:
+    """numpy's scalar reprs as plain numbers: ``np.float64(1.5)`` -> ``1.5``."""
+    return re.sub(r"\bnp\.(?:float|int|uint|bool_)\d*\(([^()]*)\)", r"\1", text)
+
+
+def teaching_gaps(message: str) -> list[str]:
+    """What a wrong answer's sentence fails to say, of ``input``, ``expected`` and ``got`` (empty: it says all
+    three). A stub's sentence is judged elsewhere: it has no answer to show."""
+    message = _plain_numbers(message)  # np.float32(1.0) is a number, not a call with its input
+    gaps = []
+    if not _INPUT.search(message):
+        gaps.append("input")
+    if "expected" not in message:
+        gaps.append("expected")
+    if not _GOT.search(message):
+        gaps.append("got")
+    return gaps
 
 
 def exercise_file(step: str, exercise: str, backend: str = "") -> str:
@@ -308,6 +393,54 @@ def _keyword(call: Any, name: str, default: float, scope: tuple[dict, dict]) -> 
     return default
 
 
+_ORDER: dict[type, tuple[str, str]] = {}  # an ordering comparison -> (its sign, the sign seen from the other side)
+
+
+def _orders() -> None:
+    import ast
+
+    _ORDER.update({ast.Lt: ("<", ">"), ast.LtE: ("≤", "≥"), ast.Gt: (">", "<"), ast.GtE: ("≥", "≤"),
+                   ast.NotEq: ("≠", "≠"), ast.IsNot: ("not", "not")})
+
+
+def _is_bound(node: Any) -> bool:
+    """Whether an expression is a bound the test states (numbers, constants in capitals, a tolerance), not a value
+    measured from the student's answer."""
+    import ast
+
+    names = [n.id for n in ast.walk(node) if isinstance(n, ast.Name)]
+    words = ("tol", "bound", "limit", "allowed", "expected", "want", "need", "minimum", "maximum")
+    return all(n.isupper() or any(w in n.lower() for w in words) for n in names) and not any(
+        isinstance(n, (ast.Call, ast.Subscript)) and "impl" in ast.unparse(n) for n in ast.walk(node))
+
+
+def _order_sentence(node: Any, left: Any, right: Any) -> str | None:
+    """``assert worst <= 1`` failed -> ``got worst = 3, expected ≤ 1``; with no side a stated bound,
+    ``expected a < b, got 3 < 1``."""
+    import ast
+
+    try:
+        if bool(_compare(node.ops[0], left, right)):
+            return None
+    except Exception:  # noqa: BLE001 - arrays: numpy's truth value; say it the plain way
+        pass
+    sign, flipped = _ORDER[type(node.ops[0])]
+    if isinstance(node.ops[0], ast.IsNot):
+        return f"got {_clip(ast.unparse(node.left), 50)} = {short(left)}, expected not {short(right)}"
+    if _is_bound(node.comparators[0]) and not _is_bound(node.left):
+        return f"got {_clip(ast.unparse(node.left), 50)} = {short(left)}, expected {sign} {short(right)}"
+    if _is_bound(node.left) and not _is_bound(node.comparators[0]):
+        return f"got {_clip(ast.unparse(node.comparators[0]), 50)} = {short(right)}, expected {flipped} {short(left)}"
+    return f"expected {_clip(ast.unparse(node), 80)}, got {short(left)} {sign} {short(right)}"
+
+
+def _compare(op: Any, left: Any, right: Any) -> Any:
+    import operator
+
+    return {"Lt": operator.lt, "LtE": operator.le, "Gt": operator.gt, "GtE": operator.ge, "NotEq": operator.ne,
+            "IsNot": operator.is_not}[type(op).__name__](left, right)
+
+
 def values_sentence(statement: str, global_names: dict[str, Any], local_names: dict[str, Any]) -> str | None:
     """For a failed ``assert`` without a message: evaluate the arguments of its comparison again (never an
     expression that calls the student's code, ``impl``) and say where got and expected differ."""
@@ -325,6 +458,8 @@ def values_sentence(statement: str, global_names: dict[str, Any], local_names: d
     if not isinstance(checked, ast.Assert):
         return None
     scope = (global_names, dict(local_names))
+    if not _ORDER:
+        _orders()
 
     class _Recorded(ast.NodeTransformer):
         """``impl.f(...)`` -> the value the newest call of ``f`` returned (never a second call)."""
@@ -356,6 +491,8 @@ def values_sentence(statement: str, global_names: dict[str, Any], local_names: d
                 if name == "assert_array_almost_equal":
                     atol, rtol = 1.5 * 10.0 ** -_keyword(node, "decimal", 6, scope), 0.0
                 text = _difference(value(node.args[0]), value(node.args[1]), atol, rtol)
+            elif isinstance(node, ast.Compare) and len(node.ops) == 1 and type(node.ops[0]) in _ORDER:
+                text = _order_sentence(node, value(node.left), value(node.comparators[0]))
             elif isinstance(node, ast.Compare) and len(node.ops) == 1 and isinstance(node.ops[0], ast.Eq):
                 left, right = value(node.left), value(node.comparators[0])
                 if hasattr(right, "expected") and hasattr(right, "abs"):  # pytest.approx(expected, abs=..., rel=...)
@@ -373,3 +510,39 @@ def values_sentence(statement: str, global_names: dict[str, Any], local_names: d
             return text
     source = " ".join(ast.unparse(checked.test).split())
     return f"expected `{_clip(source, 120)}` to hold" if isinstance(checked.test, (ast.Call, ast.Compare)) else None
+
+
+def raises_expected(source: str, line: int, global_names: dict[str, Any], local_names: dict[str, Any]) -> str:
+    """The error a ``with pytest.raises(E, match=...)`` block around ``line`` of ``source`` (a test function's text,
+    line 1 its first) waits for, in words (``ValueError with a message matching 'fovy'``), or ``""``."""
+    import ast
+    import textwrap
+
+    try:
+        tree = ast.parse(textwrap.dedent(source))
+    except SyntaxError:
+        return ""
+    for node in ast.walk(tree):
+        if not isinstance(node, (ast.With, ast.AsyncWith)) or not node.body:
+            continue
+        if not node.lineno <= line <= (node.body[-1].end_lineno or node.body[-1].lineno):  # the with line: its exit
+            continue
+        for item in node.items:
+            call = item.context_expr
+            name = getattr(call.func, "attr", getattr(call.func, "id", "")) if isinstance(call, ast.Call) else ""
+            if name not in ("raises", "warns") or not call.args:
+                continue
+            try:
+                expected = eval(compile(ast.Expression(call.args[0]), "<raises>", "eval"),  # noqa: S307 - the test's
+                                global_names, dict(local_names))
+                names = [e.__name__ for e in (expected if isinstance(expected, tuple) else (expected,))]
+                words = " or ".join(names)
+                match = next((k.value for k in call.keywords if k.arg == "match"), None)
+                if match is not None:
+                    pattern = eval(compile(ast.Expression(match), "<raises>", "eval"),  # noqa: S307
+                                   global_names, dict(local_names))
+                    words += f" with a message matching {pattern!r}"
+                return words
+            except Exception:  # noqa: BLE001 - an argument that cannot be found again: the block's source
+                return _clip(ast.unparse(call.args[0]), 60)
+    return ""

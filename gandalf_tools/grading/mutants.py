@@ -18,10 +18,11 @@ the tests have a gap. Before the mutants and again after them, an unchanged copy
 (the control) must pass every graded test, so a failure is the mutation's doing and not the copying's, nor
 a change of the engine during the run (in a shared working tree).
 
-The run exits with 1 when a mutant survives, a control fails or a mutant cannot be built. Survivors already
-reported to the test authors are listed in ``tests/mutants/known_gaps.txt``: they are printed as KNOWN GAP and
-do not fail the run (``--strict`` fails on them too), and an entry whose mutant is killed now is STALE and
-fails the run, so the list shrinks as the tests improve.
+The run exits with 1 when a mutant survives, a control fails, a mutant cannot be built, or the message a killed
+mutant's first failed test gives the student does not name the input, the expected and the got (VAGUE).
+Survivors already reported to the test authors are listed in ``tests/mutants/known_gaps.txt``: they are printed as
+KNOWN GAP and do not fail the run (``--strict`` fails on them too), and an entry whose mutant is killed now is
+STALE and fails the run, so the list shrinks as the tests improve.
 """
 
 from __future__ import annotations
@@ -41,7 +42,7 @@ from pathlib import Path
 from types import ModuleType
 from typing import Any
 
-from . import SPEED_OPTIONS, bytecode_cache_env, use_bytecode_cache
+from . import SPEED_OPTIONS, bytecode_cache_env, feedback, use_bytecode_cache
 
 ROOT = Path(__file__).resolve().parents[2]
 DEFAULT_DIR = ROOT / "tests" / "mutants"
@@ -105,6 +106,12 @@ def patch(package: ModuleType, dotted: str, new: Any) -> Any:
     for part in path:
         owner = getattr(owner, part)
     original = getattr(owner, attr)
+    try:  # the replacement counts as the package's own code: the grader guards and records its calls as a student's
+        new.__module__ = original.__module__
+        if getattr(new, "__name__", "") == "<lambda>":  # and names it as the student would
+            new.__name__ = new.__qualname__ = original.__name__
+    except (AttributeError, TypeError):
+        pass
     setattr(owner, attr, new)
     prefix = package.__name__
     for name, module in list(sys.modules.items()):
@@ -268,6 +275,7 @@ def _start(job: _Job, timeout: float, fork: bool) -> None:
                 os.dup2(fd, 1)
                 os.dup2(fd, 2)
                 os.environ["GANDALF_IMPL"] = impl
+                os.environ["GANDALF_FAILURE_DIR"] = str(job.folder / "failures")  # not the checkout's tests/_failures
                 use_bytecode_cache()
                 os.chdir(ROOT)
                 import pytest
@@ -283,7 +291,8 @@ def _start(job: _Job, timeout: float, fork: bool) -> None:
                 os._exit(code)
         job.pid = pid
     else:
-        env = bytecode_cache_env({**os.environ, "GANDALF_IMPL": impl})
+        env = bytecode_cache_env({**os.environ, "GANDALF_IMPL": impl,
+                                  "GANDALF_FAILURE_DIR": str(job.folder / "failures")})
         with open(log, "w") as out:
             job.popen = subprocess.Popen(
                 [sys.executable, "-m", "pytest", *job.pytest_args(timeout)], cwd=ROOT, env=env, stdout=out, stderr=out
@@ -502,11 +511,18 @@ def main(argv: list[str] | None = None) -> int:
     for o in controls:
         print(f"{o.mutant.step + ':control':<58} {o.status:<9} {o.tests:>5}  {(o.detail or '')[:90]}")
     killed = sum(o.status == "killed" for o in results)
+    # What the student would read for each killed mutant: its first failed test's sentence must say the input, the
+    # expected and the got (feedback.teaching_gaps).
+    vague = [(o, gaps) for o in results if o.status == "killed"
+             and (gaps := feedback.teaching_gaps(o.first_failure.get("message", "")))]
     print(
         f"\n{killed}/{len(results)} mutants killed, {len(survivors)} survived, "
         f"{sum(o.status == 'known-gap' for o in results)} known gaps, {len(errors)} errors "
         f"in {time.perf_counter() - start:.1f} s"
     )
+    print(f"{killed - len(vague)}/{killed} killed mutants' messages name the input, the expected and the got")
+    for o, gaps in vague:
+        print(f"VAGUE {o.mutant.ident}: its message names no {' and no '.join(gaps)}: {o.detail}")
     for o in results:
         if o.status == "known-gap":
             print(f"KNOWN GAP {o.mutant.ident}: {o.mutant.description} ({known[o.mutant.ident]})")
@@ -530,13 +546,15 @@ def main(argv: list[str] | None = None) -> int:
                         "failed": o.failed,
                         "seconds": round(o.seconds, 2),
                         "detail": o.detail,
+                        "message_lacks": feedback.teaching_gaps(o.first_failure.get("message", ""))
+                        if o.status == "killed" else [],
                     }
                     for o in results + controls
                 ],
                 indent=2,
             )
         )
-    return 1 if survivors or errors or stale else 0
+    return 1 if survivors or errors or stale or vague else 0
 
 
 if __name__ == "__main__":

@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import importlib
 import importlib.util
+import inspect
 import json
 import os
 import sys
@@ -322,7 +323,8 @@ def _sentence(item: pytest.Item, info: dict[str, Any], excinfo: pytest.Exception
     name, error = str(info["exercise"]), excinfo.value
     try:
         file = feedback.exercise_file(step, name, backend)
-        return feedback.sentence(error, exercise=name, file=file, hint=hint, values=_assert_values(item, excinfo))
+        return feedback.sentence(error, exercise=name, file=file, hint=hint, values=_assert_values(item, excinfo),
+                                 expected_raise=_expected_raise(item, excinfo))
     except Exception as exc:  # noqa: BLE001 - the feedback must never hide the failure itself
         return feedback.cap(f"{name}: {type(error).__name__}: {error} (feedback failed: {exc!r})")
 
@@ -343,6 +345,23 @@ def _assert_values(item: pytest.Item, excinfo: pytest.ExceptionInfo[BaseExceptio
             except Exception:  # noqa: BLE001 - no source: no values
                 return ""
             return feedback.values_sentence(statement, entry.frame.f_globals, entry.frame.f_locals) or ""
+    return ""
+
+
+def _expected_raise(item: pytest.Item, excinfo: pytest.ExceptionInfo[BaseException]) -> str:
+    """The error a ``pytest.raises`` block around the test's failing line waits for (:func:`.feedback.raises_expected`),
+    for an error that escaped it or a call that did not raise."""
+    if isinstance(excinfo.value, AssertionError):
+        return ""
+    for entry in reversed(excinfo.traceback):
+        if Path(str(entry.path)) == Path(str(item.path)):  # the test's own file (a mutant's code may lie in tests/)
+            try:
+                code = entry.frame.code.raw
+                source = inspect.getsource(code)
+            except Exception:  # noqa: BLE001 - no source: no words
+                return ""
+            line = entry.lineno + 1 - code.co_firstlineno + 1  # entry.lineno counts from 0
+            return feedback.raises_expected(source, line, entry.frame.f_globals, entry.frame.f_locals)
     return ""
 
 

@@ -113,8 +113,12 @@ class RemoteFunction:
         self.__name__ = self.__qualname__ = target.rsplit(".", 1)[-1]
 
     def __call__(self, *args: Any, **kwargs: Any) -> Any:
-        result = self.session.call({"op": "call", "target": self.target, "args": list(args), "kwargs": kwargs},
-                                   lambda: describe_call(self.__name__, args, kwargs), self.target)
+        try:
+            result = self.session.call({"op": "call", "target": self.target, "args": list(args), "kwargs": kwargs},
+                                       lambda: describe_call(self.__name__, args, kwargs), self.target)
+        except Exception as error:
+            feedback.record_raise(describe_call(self.__name__, args, kwargs), error)
+            raise
         feedback.record_call(describe_call(self.__name__, args, kwargs), result)  # for a failed check's sentence
         return result
 

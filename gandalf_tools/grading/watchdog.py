@@ -52,12 +52,17 @@ def reset() -> None:
 
 
 def _describe(name: str, args: tuple[Any, ...], kwargs: dict[str, Any]) -> str:
-    parts = [repr(a) for a in args if not _is_self_like(a)] + [f"{k}={v!r}" for k, v in kwargs.items()]
+    parts = [_shown(a) for a in args if not _is_self_like(a)] + [f"{k}={_shown(v)}" for k, v in kwargs.items()]
     text = ", ".join(parts)
     return f"{name}({text if len(text) <= _ARGS_LIMIT else text[: _ARGS_LIMIT - 1] + '…'})"
 
 
 describe_call = _describe  # the same words for a call of sandboxed code
+
+
+def _shown(value: Any) -> str:
+    """An argument as the student wrote it; a numpy array short and rounded (``[[0.3892, -0.3211, …], …]``)."""
+    return feedback.short(value, 60) if type(value).__module__ == "numpy" else repr(value)
 
 
 def _is_self_like(value: Any) -> bool:
@@ -131,6 +136,9 @@ def _wrap(fn: Callable[..., Any], name: str, budget: float) -> Callable[..., Any
         except ExerciseTimeout:
             _hung[key] = message
             raise ExerciseTimeout(message) from None
+        except Exception as error:
+            feedback.record_raise(label, error)  # for a failed check's sentence: what was called, what it raised
+            raise
         finally:
             _depth.value = 0
         feedback.record_call(label, result)  # for a failed check's sentence: what was called, what came back
@@ -152,7 +160,9 @@ def guard(package: ModuleType, budget: float = DEFAULT_BUDGET) -> ModuleType:
             if inspect.isfunction(value) and not getattr(value, _GUARDED, False):
                 setattr(module, attr, _wrap(value, value.__name__, budget))
             elif inspect.isclass(value):
-                _guard_class(value, budget)
+                for cls in value.__mro__:  # a subclass of the package's own class: its inherited methods too
+                    if _inside(cls.__module__, package.__name__):
+                        _guard_class(cls, budget)
     setattr(package, _GUARDED, budget)
     return package
 

@@ -147,10 +147,6 @@ def test_gradescope_and_the_log_hold_the_same_words(stubs: dict[str, Any]) -> No
     assert f"full tracebacks of the failed tests: {stubs['folder'] / 'grade.tracebacks.log'}" in stubs["stdout"]
 
 
-_CALL = re.compile(r"\w+\([^()]*\d")  # a call with its input: hsv_to_rgb(30.0, 0.7, 0.9)
-_INPUT = re.compile(r"\b(radius|input|for|at|with)\b [\w(\[-]")  # or the case in words: "radius 1: ..."
-
-
 def test_a_wrong_answer_says_input_expected_and_got(wrong: dict[str, Any]) -> None:
     failed = _failed(wrong)
     steps = {t["step"] for t in failed}
@@ -159,14 +155,8 @@ def test_a_wrong_answer_says_input_expected_and_got(wrong: dict[str, Any]) -> No
     for entry in failed:
         message = entry["message"]
         why = _one_line(entry)
-        # A wrong answer the engine then refuses says what the student's code returned and what the engine raised.
-        refused = re.search(r"\) returned .+; then \w+(Error|Exception)\b", message)
-        if why is None and "expected" not in message and not refused:
-            why = f"says no expected value: {message!r}"
-        if why is None and not re.search(r"\bgot\b|\breturned\b|\bgave\b| = ", message):
-            why = f"says not what came back: {message!r}"
-        if why is None and not (_CALL.search(message) or _INPUT.search(message)):
-            why = f"names no input: {message!r}"
+        if why is None and (gaps := feedback.teaching_gaps(message)):  # the words the mutation check counts too
+            why = f"names no {' and no '.join(gaps)}: {message!r}"
         if why is not None:
             problems.append(f"{entry['test']}: {why}")
     assert not problems, f"{len(problems)} of {len(failed)} messages:\n" + "\n".join(problems[:40])
@@ -207,3 +197,41 @@ def test_a_sentence_is_one_line_within_the_limit() -> None:
     error = AssertionError("x" * 1000 + "\nassert False")
     text = feedback.sentence(error, exercise="perspective", hint="the field of view is in degrees")
     assert "\n" not in text and len(text) <= feedback.LIMIT and text.startswith("perspective: xxx")
+
+
+def test_a_call_that_should_have_raised_or_raised_otherwise_says_so() -> None:
+    feedback.reset_calls()
+    feedback.record_call("ngon_mesh(4.5, 1.0)", (4, 3))
+    with pytest.raises(pytest.fail.Exception) as caught:
+        with pytest.raises(ValueError):
+            pass
+    text = feedback.sentence(caught.value, exercise="ngon_mesh", expected_raise="ValueError matching 'sides'")
+    assert text == "ngon_mesh(4.5, 1.0) returned (4, 3); expected it to raise ValueError matching 'sides'"
+    feedback.reset_calls()
+    error = ZeroDivisionError("float division by zero")
+    feedback.record_raise("perspective(0, 1, 0.1, 10)", error)
+    text = feedback.sentence(error, exercise="perspective", expected_raise="ValueError")
+    assert text == ("perspective(0, 1, 0.1, 10) raised ZeroDivisionError: float division by zero; expected it to "
+                    "raise ValueError")
+    assert feedback.teaching_gaps(text) == []
+    source = "def test_x(args):\n    with pytest.raises(ValueError, match=name):\n        impl.perspective(*args)\n"
+    assert feedback.raises_expected(source, 3, {"pytest": pytest}, {"name": "fovy"}) == (
+        "ValueError with a message matching 'fovy'")
+    assert feedback.raises_expected(source, 1, {"pytest": pytest}, {"name": "fovy"}) == ""
+
+
+def test_an_ordering_assert_says_got_against_its_bound() -> None:
+    assert feedback.values_sentence("assert worst <= TOLERANCE", {"TOLERANCE": 1}, {"worst": 3}) == (
+        "got worst = 3, expected ≤ 1")
+    assert feedback.values_sentence("assert 0.03 * TOTAL < roof", {"TOTAL": 100}, {"roof": 0}) == (
+        "got roof = 0, expected > 3")
+    assert feedback.values_sentence("assert a < b", {}, {"a": 2, "b": 1}) == "expected a < b, got 2 < 1"
+    assert feedback.values_sentence("assert worst <= 1", {}, {"worst": 0}) is not None  # holds: the source only
+
+
+def test_teaching_gaps_names_what_a_sentence_leaves_out() -> None:
+    assert feedback.teaching_gaps("hsv_to_rgb(0.5, 1, 1) returned (0, 0.5, 1); expected (0, 1, 1)") == []
+    assert feedback.teaching_gaps("house_meshes() returned (…): got (-1, 0, -1), expected (-0.5, 0, -0.5)") == []
+    assert feedback.teaching_gaps("for a sphere in opengl: worst pixel got [1, 2, 3], expected [4, 5, 6]") == []
+    assert feedback.teaching_gaps("expected 3 <= 1 to hold") == ["input", "got"]
+    assert feedback.teaching_gaps("DID NOT RAISE ValueError") == ["input", "expected", "got"]

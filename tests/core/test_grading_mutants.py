@@ -1,5 +1,6 @@
-"""The mutation check itself: a mutant that breaks ``hsv_to_rgb`` is killed, one that changes nothing survives
-and fails the run, and a survivor listed in ``known_gaps.txt`` is reported without failing it.
+"""The mutation check itself: a mutant that breaks ``hsv_to_rgb`` is killed (and the message its failed test gives
+says input, expected and got), one that changes nothing survives and fails the run, and a survivor listed in
+``known_gaps.txt`` is reported without failing it.
 
 Each case runs ``python -m gandalf_tools.grading.mutants`` in a subprocess on step 01's ``hsv_to_rgb`` only.
 """
@@ -39,6 +40,9 @@ def test_a_wrong_mutant_is_killed_and_an_unchanged_one_survives(tmp_path):
     by_name = {o["mutant"]: o for o in outcomes}
     assert by_name["step01_window:hsv_to_rgb:radians"]["status"] == "killed", output[-2000:]
     assert "hsv_to_rgb(" in by_name["step01_window:hsv_to_rgb:radians"]["detail"]  # the test's own message
+    # What the student would read names the input, the expected and the got, and the check counts it.
+    assert by_name["step01_window:hsv_to_rgb:radians"]["message_lacks"] == []
+    assert "1/1 killed mutants' messages name the input, the expected and the got" in output
     assert by_name["step01_window:hsv_to_rgb:unchanged"]["status"] == "survived", output[-2000:]
     assert by_name["step01_window:*:control"]["status"] == "passed", output[-2000:]
     assert code == 1 and "SURVIVED step01_window:hsv_to_rgb:unchanged" in output

@@ -43,12 +43,19 @@ def test_clear_colour_follows_the_hue_in_pixels(impl, backend, frames):
     entity = scene.query(HueCycleComponent).entities[0]
     cycle = scene.get_component(entity, HueCycleComponent)
     expected_hue = (200.0 + 60.0 * frames / 60) % 360.0
-    assert cycle.hue == pytest.approx(expected_hue, abs=1e-6)
-    assert 0.0 <= cycle.hue < 360.0
+    case = f"after {frames} frames of 1/60 s from hue 200 at 60°/s"
+    assert cycle.hue == pytest.approx(expected_hue, abs=1e-6), (
+        f"{case}: got the hue {cycle.hue:.6g}, expected {expected_hue:g}")
+    assert 0.0 <= cycle.hue < 360.0, f"{case}: got the hue {cycle.hue:.6g}, expected it in [0, 360)"
     expected = _expected_bytes(expected_hue, 0.7, 0.9)
     assert image.shape == (24, 32, 4)
     # Every pixel is the clear colour.
-    assert np.abs(image.reshape(-1, 4).astype(int) - expected).max() <= PIXEL_TOLERANCE
+    error = np.abs(image.reshape(-1, 4).astype(int) - expected)
+    worst = int(error.max(axis=1).argmax())
+    assert error.max() <= PIXEL_TOLERANCE, (
+        f"{case}: got the pixel {image.reshape(-1, 4)[worst].tolist()} (x {worst % 32}, y {worst // 32}), expected "
+        f"the clear colour {expected.tolist()} (hue {expected_hue:g}, saturation 0.7, value 0.9) "
+        f"within {PIXEL_TOLERANCE}")
 
 
 @pytest.mark.exercise("HueCycleSystem")

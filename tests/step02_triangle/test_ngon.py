@@ -83,6 +83,11 @@ def test_system_registers_meshes_under_the_mesh_components_name(impl):
     scene.create_entity(NGonComponent(sides=5, radius=0.7), MeshComponent("pentagon"))
     scene.add_system(impl.NGonSystem())  # entities that existed before the system
     scene.create_entity(NGonComponent(sides=9, radius=0.3), MeshComponent("nonagon"))  # and after
+    registered = sorted(scene.assets.meshes)
+    for name in ("pentagon", "nonagon"):
+        assert name in scene.assets.meshes, (
+            f"for NGonComponents with MeshComponent('pentagon') and MeshComponent('nonagon'): got the meshes "
+            f"{registered}, expected {name!r} among them (register each mesh under its MeshComponent's name)")
     pentagon, nonagon = scene.assets.meshes["pentagon"], scene.assets.meshes["nonagon"]
     assert (pentagon.vertex_count, pentagon.triangle_count) == (6, 5)
     assert (nonagon.vertex_count, nonagon.triangle_count) == (10, 9)

@@ -12,13 +12,14 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
+from PIL import Image
 
 import step05_scenegraph
 from gandalf_core import Application
 from gandalf_core.app.cli import load_impl
 from gandalf_core.math import quat_from_axis_angle
 from gandalf_core.resources import MaterialData, MeshData, TextureData
-from gandalf_tools.testing import compare_images, compare_to_reference, psnr
+from gandalf_tools.testing import compare_images, compare_to_reference, psnr, save_failure, shown_failure
 from step05_scenegraph import SHADERS
 from step05_scenegraph.house.components import HouseRotationComponent
 from step05_scenegraph.house.scene import build_house_scene
@@ -76,14 +77,29 @@ def centroid_row(mask: np.ndarray) -> float:
     return float(np.nonzero(mask)[0].mean())
 
 
+def _in_picture(image: np.ndarray, text: str) -> str:
+    """A failed check of the house picture in words: the picture drawn (the input), then ``text`` (got against
+    expected), and where the picture and the reference were saved side by side."""
+    saved = shown_failure(save_failure(image, np.asarray(Image.open(REFERENCES / "house.png").convert("RGBA"))))
+    return f"for the house drawn {image.shape[1]}x{image.shape[0]}: {text}; pictures: {saved}"
+
+
 def check_house_picture(image: np.ndarray) -> None:
     """Roof orange region above the brick region, both of a plausible size, sky around."""
     m = masks(image)
     total = image.shape[0] * image.shape[1]
-    assert 0.03 * total < m["orange"].sum() < 0.3 * total, f"orange roof pixels: {m['orange'].sum()}"
-    assert 0.05 * total < m["brick"].sum() < 0.4 * total, f"brick pixels: {m['brick'].sum()}"
-    assert centroid_row(m["orange"]) < centroid_row(m["brick"]) - 5, "the roof must sit above the walls"
-    assert m["sky"][0].all() and m["sky"][-1].all(), "the house must not touch the top or bottom edge"
+    for part, low, high in (("orange", 0.03, 0.3), ("brick", 0.05, 0.4)):
+        count = int(m[part].sum())
+        assert low * total < count < high * total, _in_picture(
+            image, f"got {count} {part} pixels, expected {low:.0%} to {high:.0%} of {total} ({part} = "
+                   f"{'roof' if part == 'orange' else 'walls'})")
+    roof, walls = centroid_row(m["orange"]), centroid_row(m["brick"])
+    assert roof < walls - 5, _in_picture(
+        image, f"got the roof's centre at row {roof:.0f} and the walls' at row {walls:.0f}, expected the roof above "
+               f"the walls (more than 5 rows)")
+    assert m["sky"][0].all() and m["sky"][-1].all(), _in_picture(
+        image, f"got {int((~m['sky'][0]).sum())} house pixels in the top row and {int((~m['sky'][-1]).sum())} in the "
+               f"bottom row, expected none (the house must not touch the top or bottom edge)")
 
 
 def check_milestone_render(impl, part: str, backend: str) -> None:
@@ -149,8 +165,9 @@ def check_brick_texture(texture, size: int) -> None:
     mortar = np.all(np.abs(rgb - np.round(255 * np.array(MORTAR_COLOUR))) <= 255 * MORTAR_RANGE + 1, axis=-1)
     odd = ~(brick | mortar)
     assert not odd.any(), (
-        f"{int(odd.sum())} texels are neither brick (sRGB {BRICK_COLOUR} within {BRICK_RANGE}) nor mortar "
-        f"({MORTAR_COLOUR} within {MORTAR_RANGE}), e.g. {rgb[odd][0].tolist()} at {np.argwhere(odd)[0].tolist()}")
+        f"got {int(odd.sum())} texels that are neither brick nor mortar, e.g. {rgb[odd][0].tolist()} at "
+        f"{np.argwhere(odd)[0].tolist()}; expected each texel brick (sRGB {BRICK_COLOUR} within {BRICK_RANGE}) or "
+        f"mortar ({MORTAR_COLOUR} within {MORTAR_RANGE})")
     beds = _runs(mortar.all(axis=1))
     assert len(beds) == 4 and all(length == 2 for _, length in beds), (
         f"bed joints (rows of mortar, start and height): {beds}; expected four joints 2 texels high (four courses)")
@@ -219,9 +236,14 @@ def test_house_camera_frames_the_house(impl, backend):
     check_house_picture(image)
     house = ~masks(image)["sky"]
     rows, cols = np.nonzero(house)
-    assert rows.min() >= 3 and rows.max() <= H - 4 and cols.min() >= 3 and cols.max() <= W - 4, "keep a margin"
-    assert 0.1 < house.mean() < 0.6, f"the house covers {house.mean():.0%} of the frame"
-    assert abs(cols.mean() - W / 2) < 0.1 * W and abs(rows.mean() - H / 2) < 0.2 * H, "centre the house"
+    assert rows.min() >= 3 and rows.max() <= H - 4 and cols.min() >= 3 and cols.max() <= W - 4, _in_picture(
+        image, f"got the house in rows {rows.min()}-{rows.max()}, columns {cols.min()}-{cols.max()}, expected a "
+               f"margin of 3 pixels (rows 3-{H - 4}, columns 3-{W - 4})")
+    assert 0.1 < house.mean() < 0.6, _in_picture(
+        image, f"got the house over {house.mean():.0%} of the frame, expected 10% to 60%")
+    assert abs(cols.mean() - W / 2) < 0.1 * W and abs(rows.mean() - H / 2) < 0.2 * H, _in_picture(
+        image, f"got the house's centre at (x {cols.mean():.1f}, y {rows.mean():.1f}), expected within "
+               f"({0.1 * W:.1f}, {0.2 * H:.1f}) pixels of the frame's centre ({W / 2:g}, {H / 2:g})")
 
 
 # --- milestone 5: uniforms / interactivity -------------------------------------------------------------------

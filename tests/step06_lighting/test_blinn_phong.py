@@ -25,7 +25,9 @@ def _lights():
 def _check(backend, impl, material, lights):
     expected, hit = reference_sphere(material, lights)
     image = render(backend, impl, sphere_scene(material, lights))
-    assert_near_reference(image, expected, inner(hit))
+    params = ", ".join(f"{k} {v:g}" for k, v in material.params.items())
+    assert_near_reference(image, expected, inner(hit),
+                          f"a sphere in {backend} (colour {tuple(material.color)[:3]}, {params}, {len(lights)} lights)")
 
 
 @pytest.mark.exercise("blinn_phong")

@@ -117,4 +117,4 @@ def test_environment_mapped_sphere_matches_the_numpy_reference(impl, backend, ki
     scene = sphere_scene(material, [], textures={"directions": _direction_cube()})
     image = render(backend, impl, scene)
     expected, hit = _expected(kind, tint, ior)
-    assert_near_reference(image, expected, inner(hit))
+    assert_near_reference(image, expected, inner(hit), f"a {kind} sphere in {backend} (tint {tint}, ior {ior})")

@@ -31,4 +31,5 @@ def test_pbr_sphere_matches_the_numpy_reference(impl, backend, metallic, roughne
     material = pbr_material((0.9, 0.6, 0.35), metallic, roughness)
     expected, hit = reference_sphere(material, _lights())
     image = render(backend, impl, sphere_scene(material, _lights()))
-    assert_near_reference(image, expected, inner(hit))
+    assert_near_reference(image, expected, inner(hit),
+                          f"a sphere in {backend} (metallic {metallic}, roughness {roughness}, 3 lights)")

@@ -55,9 +55,19 @@ def test_gpu_particles_match_the_numpy_twin(impl, backend, count):
     for k in range(STEPS):
         expected = step_particles_np(expected, SimParams(**{**params.__dict__, "seed": k}))
     got = _simulate(backend, impl, state, params, STEPS)
-    assert np.all(np.isfinite(got))
+    case = f"for {count} particles after {STEPS} steps of dt {params.dt:g}"
+    assert np.all(np.isfinite(got)), f"{case}: {_worst(got, expected)}: NaN or Inf"
     error = float(np.abs(got - expected).max())
-    assert error <= TOLERANCE, f"largest difference {error:.3g} (tolerance {TOLERANCE})"
+    assert error <= TOLERANCE, (
+        f"{case}: {_worst(got, expected)} (largest difference {error:.3g}, tolerance {TOLERANCE})")
+
+
+def _worst(got: np.ndarray, expected: np.ndarray) -> str:
+    """The particle that differs most, as (position xyz, life), (velocity xyz, 0): got against expected."""
+    diff = np.nan_to_num(np.abs(got - expected), nan=np.inf).reshape(len(got), -1).max(axis=1)
+    i = int(np.argmax(diff))
+    rows = [np.round(v.astype(np.float64), 4).tolist() for v in (got[i], expected[i])]
+    return f"particle {i} (position, life; velocity) got {rows[0]}, expected {rows[1]}"
 
 
 def test_params_pack_to_the_48_bytes_of_the_struct():

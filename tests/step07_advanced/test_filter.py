@@ -127,7 +127,9 @@ def check_weight_tables(flt) -> str | None:
         got = flt.weight_table(r).astype(np.float64)
         expected = reference.gaussian_weights(r)
         if not np.all(np.isfinite(got)):
-            return f"radius {r}: the weights hold NaN/Inf: {got[:5].tolist()}... Hint: {HINT['identity']}"
+            more = "…" if len(got) > 5 else ""
+            return (f"radius {r}: got the weights {got[:5].tolist()}{more}, expected finite ones "
+                    f"{np.round(expected[:5], 5).tolist()}{more}. Hint: {HINT['identity']}")
         error = np.abs(got - expected)
         if error.max() > 1e-5:
             k = int(np.argmax(error))
@@ -143,7 +145,8 @@ def check_weight_sums(flt) -> str | None:
         if not np.isfinite(total) or abs(total - 1.0) > 1e-5:
             return f"radius {r}: the {2 * r + 1} weights sum to {total:.7g}, expected 1 (± 1e-5). Hint: {HINT['sum']}"
         if np.abs(got - got[::-1]).max() > 1e-7:
-            return (f"radius {r}: the table is not symmetric: w(-i) != w(i): {got.tolist()}. "
+            return (f"radius {r}: got the weights {np.round(got, 6).tolist()}, expected a symmetric table "
+                    f"(w(-i) = w(i)). "
                     f"Hint: {HINT['weights']}")
     return None
 

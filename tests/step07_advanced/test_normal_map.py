@@ -91,7 +91,8 @@ def test_normal_mapped_quad_matches_the_numpy_reference(impl, backend, mirrored,
     expected, covered = reference_quad(mesh, texture, angle)
     image = render(backend, impl, quad_scene(mesh, texture, angle), size=SIZE)
     mean, p99 = pixel_errors(image, expected, inner(covered))
-    assert mean <= 1.0 and p99 <= 3.0, difference_sentence(image, expected, inner(covered), mean, p99, 1.0, 3.0)
+    case = f"a bump-mapped quad in {backend} ({'mirrored' if mirrored else 'unmirrored'} UVs, turned {angle:g}°)"
+    assert mean <= 1.0 and p99 <= 3.0, difference_sentence(image, expected, inner(covered), mean, p99, 1.0, 3.0, case)
 
 
 @pytest.mark.exercise("normal_map")

@@ -139,7 +139,9 @@ def test_image_based_light_matches_the_split_sum(impl, backend, metallic, roughn
     expected, hit = reference_ibl_sphere(color, metallic, roughness)
     mean, p99 = pixel_errors(image, expected, inner(hit))
     assert mean <= 1.0 and p99 <= 3.0, (
-        f"metallic {metallic}, roughness {roughness}: {difference_sentence(image, expected, inner(hit), mean, p99)}. "
+        difference_sentence(image, expected, inner(hit), mean, p99,
+                            case=f"a sphere in {backend} lit by an image (metallic {metallic}, roughness {roughness})")
+        + ". "
         "Hint: F0 = mix(0.04, base, metallic); diffuse = base (1 - metallic)(1 - F), F = fresnel_schlick_roughness")
 
 
