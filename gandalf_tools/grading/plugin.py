@@ -297,6 +297,7 @@ def pytest_collection_finish(session: pytest.Session) -> None:
 def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo[Any]) -> Any:
     if call.when == "setup":
         feedback.reset_calls()
+        remote.forget_calls()
     outcome = yield
     report = outcome.get_result()
     info = _exercise_of(item)
@@ -320,6 +321,7 @@ def _sentence(item: pytest.Item, info: dict[str, Any], excinfo: pytest.Exception
     backend = str(params.get("backend", "")) if isinstance(params.get("backend", ""), str) else ""
     step = Path(str(item.path)).parent.name
     name, error = str(info["exercise"]), excinfo.value
+    remote.flush_calls()  # the student's newest calls, worded now that a sentence needs them
     try:
         file = feedback.exercise_file(step, name, backend)
         return feedback.sentence(error, exercise=name, file=file, hint=hint, values=_assert_values(item, excinfo))
@@ -564,13 +566,17 @@ def gradescope_results(result: dict[str, Any], execution_time: float | None = No
         f"{x['step']} {x['exercise']}: {x['earned']:.2f} / {x['possible']:.2f} ({int(x['passed'])}/{int(x['tests'])})"
         for x in result["exercises"]
     ]
+    warning = result.get("isolation_warning")
     out: dict[str, Any] = {
         "score": result["earned"],
-        "output": "\n".join(lines + [f"TOTAL {result['earned']:.2f} / {result['possible']:.2f}"]),
+        "output": "\n".join(([warning] if warning else []) + lines
+                            + [f"TOTAL {result['earned']:.2f} / {result['possible']:.2f}"]),
         "visibility": "visible",
         "stdout_visibility": "hidden",
         "tests": tests,
     }
+    if "isolation" in result:  # for the instructor: how the student's code was kept from the grader
+        out["extra_data"] = {"isolation": result["isolation"], **({"isolation_warning": warning} if warning else {})}
     if execution_time is not None:
         out["execution_time"] = round(float(execution_time), 3)
     return out
@@ -603,11 +609,17 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
     result = summary()
     student = bool(config.getoption("--student") or os.environ.get(IMPL_ENV)
                    or not all(_has_solutions(info["step"]) for info in _graded.values()))
+    warning = None
     if student and not config.getoption("--grade-in-process"):  # how the student's code was kept from the checkout
         result["isolation"] = sandbox.isolation()
+        warning = sandbox.isolation_warning(result["isolation"])
+        if warning:
+            result["isolation_warning"] = warning
     which = "exercises (student)" if student else "solutions (reference)"
     tr = terminalreporter
     tr.section(f"gandalf grade — {which}")
+    if warning:  # loud, first and last: a grade that may be forged must not pass unnoticed
+        tr.write_line(warning, red=True, bold=True)
     for x in result["exercises"]:
         tr.write_line(
             f"{x['step']:<22} {x['exercise']:<28} {x['earned']:>5.1f} / {x['possible']:<5.1f}"
@@ -624,6 +636,8 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
         log.parent.mkdir(parents=True, exist_ok=True)
         log.write_text("\n".join(_log))
         tr.write_line(f"full tracebacks of the failed tests: {log}")
+    if warning:
+        tr.write_line(warning, red=True, bold=True)
     path = config.getoption("--grade-json")
     if path:
         Path(path).write_text(json.dumps({"mode": which, **result}, indent=2))

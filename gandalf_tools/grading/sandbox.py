@@ -111,6 +111,29 @@ def isolation() -> str:
     return "process"
 
 
+#: What each isolation means for the grade, in one sentence (the doctor, the grade files and the console say it).
+MEANING = {
+    "user+mount": "the student's code runs as a user of its own in a mount and pid namespace: it cannot read the "
+                  "solutions, the tests or other submissions, nor write the grade",
+    "mount": "the student's code runs in a user, mount and pid namespace without capabilities: it cannot read the "
+             "solutions, the tests or other submissions, nor write the grade",
+    "process": "NOT ISOLATED: the student's code runs in a separate process as the grader's own user, without "
+               "namespaces, and could read the solutions and tests and write any file that user can, the grade "
+               "included; a grade made so can be forged: grade as root (Gradescope's autograder, a container) or "
+               "where unprivileged user namespaces are allowed",
+}
+
+
+def isolation_warning(mode: str) -> str | None:
+    """The warning a grade made under ``mode`` carries, with why (None where the student's code was kept from the
+    checkout)."""
+    if mode != "process":
+        return None
+    why = (f"${ISOLATION_ENV}=process asked for it" if os.environ.get(ISOLATION_ENV, "").strip() == "process" else
+           "'unshare --user --map-root-user --mount --pid' and setpriv are refused or missing here")
+    return f"WARNING: {MEANING['process']} ({why})"
+
+
 def _editable_roots() -> set[Path]:
     """Checkouts an editable install of the project points at (its finder's mapping)."""
     roots: set[Path] = set()
@@ -201,6 +224,7 @@ def recipe(fn: Callable[..., Any]) -> dict[str, Any] | None:
 
 
 _made = iter(range(1 << 30))
+_recipe_numbers = iter(range(1 << 62))  # numbers of the recipes sent (see Sandbox._exchange)
 
 
 def _uid() -> int:
@@ -228,6 +252,7 @@ class Sandbox:
         self._to_child = self._from_child = -1
         self.failed: dict[str, str] = {}  # target -> the sentence its later calls fail with
         self.callables = []
+        self._sent: set[int] = set()
         self._recipes: dict[int, tuple[Callable[..., Any], dict[str, Any] | None]] = {}
 
     def add(self, step: str, folder: Path) -> None:
@@ -360,6 +385,7 @@ class Sandbox:
         self.generation += 1
         self.imported = set()
         self.callables: list[Callable[..., Any]] = []  # the grader's functions the student's code may call back
+        self._sent: set[int] = set()  # the recipes this process has rebuilt (by number)
 
     def stop(self) -> None:
         """End the sandboxed process, every process of its user, and remove its folder."""
@@ -445,9 +471,14 @@ class Sandbox:
 
         def number(fn: Callable[..., Any]) -> int | dict[str, Any]:
             if id(fn) not in self._recipes or self._recipes[id(fn)][0] is not fn:
-                self._recipes[id(fn)] = (fn, recipe(fn))  # the function is kept: its id stays its own
+                made = recipe(fn)
+                # the function is kept (its id stays its own); its recipe is numbered, sent whole once per process
+                self._recipes[id(fn)] = (fn, made and {**made, "id": next(_recipe_numbers)})
             rebuilt = self._recipes[id(fn)][1]
             if rebuilt is not None:
+                if rebuilt["id"] in self._sent:  # the process has it already: its number alone
+                    return {"id": rebuilt["id"]}
+                self._sent.add(rebuilt["id"])
                 return rebuilt
             callables.append(fn)
             return len(callables) - 1
