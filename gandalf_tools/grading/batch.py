@@ -194,7 +194,8 @@ def write_gradebook(graded: list[Graded], out: Path) -> tuple[Path, Path]:
     csv_path = out / "gradebook.csv"
     with open(csv_path, "w", newline="") as f:
         writer = csv.writer(f)
-        writer.writerow(["student", "earned", "possible", "percent", *[f"{s}:{e}" for s, e in columns], "error", "isolation"])
+        writer.writerow(["student", "earned", "possible", "percent", *[f"{s}:{e}" for s, e in columns], "error",
+                         "isolation"])
         for g in graded:
             points = {(x["step"], x["exercise"]): x["earned"] for x in g.result.get("exercises", [])}
             percent = 100.0 * g.earned / g.possible if g.possible else 0.0

@@ -44,7 +44,7 @@ from typing import Any
 
 import pytest
 
-from . import feedback, remote, sandbox, watchdog
+from . import feedback, remote, sandbox, shader_box, watchdog
 
 IMPL_ENV = "GANDALF_IMPL"
 _PROPERTY = "gandalf_grade"
@@ -86,6 +86,14 @@ def pytest_addoption(parser: pytest.Parser) -> None:
         metavar="SECONDS",
         help=f"with --student: seconds one call of the student's function may take; a function that runs past it "
         f"fails that test and every later call at once, saying so (default {watchdog.DEFAULT_BUDGET:g}; 0: none)",
+    )
+    group.addoption(
+        "--grade-shader-budget",
+        type=float,
+        default=shader_box.SHADER_BUDGET,
+        metavar="SECONDS",
+        help=f"with --student: seconds one run of the student's shaders may take in the shader process (default "
+        f"{shader_box.SHADER_BUDGET:g}); past it that call fails, and the same call later fails at once",
     )
     group.addoption(
         "--grade-log",
@@ -240,6 +248,7 @@ def pytest_configure(config: pytest.Config) -> None:
     if _student_view(config) and getattr(config.option, "tbstyle", None) == "auto":
         config.option.tbstyle = "line"  # the student's view: one line per failed test (--tb=long shows more)
     watchdog.reset()
+    shader_box.budget[0] = float(config.getoption("--grade-shader-budget"))
     config._gandalf_collect_dir = None  # type: ignore[attr-defined]
     if not _is_worker(config) and config.pluginmanager.hasplugin("xdist"):
         config._gandalf_collect_dir = tempfile.mkdtemp(prefix="gandalf-grade-")  # type: ignore[attr-defined]
@@ -655,6 +664,8 @@ def pytest_unconfigure(config: pytest.Config) -> None:
     for box in {box for box, _package in _sandboxes.values()}:
         box.stop()
     _sandboxes.clear()
+    shader_box.stop()
+    remote.uninstall()
     folder = getattr(config, "_gandalf_collect_dir", None)
     if folder and Path(folder).is_dir():
         for path in Path(folder).iterdir():

@@ -237,8 +237,12 @@ class Sandbox:
     """One sandboxed process for the graded packages of a grading session, one per step (started on first use,
     again after a hang or a crash)."""
 
-    def __init__(self, step: str, folder: Path, *, hide: tuple[str, ...] = (), memory: int = MEMORY_LIMIT) -> None:
+    def __init__(self, step: str, folder: Path, *, hide: tuple[str, ...] = (), memory: int = MEMORY_LIMIT,
+                 shown: tuple[Path, ...] = ()) -> None:
         self.hide, self.memory = tuple(hide), memory
+        # Course folders put back read-only for a process that runs no student Python (the shader process: the test
+        # helpers that render with the student's shaders); never a step's solutions.
+        self.shown = tuple(Path(p).resolve() for p in shown)
         self.folders: dict[str, Path] = {}  # step package -> the folder graded as its exercises
         self.step_dirs: dict[str, Path] = {}  # step package -> its own folder (course code)
         self.imported: set[str] = set()  # the packages the running process has imported
@@ -271,6 +275,9 @@ class Sandbox:
         pkgs = private / "pkgs"
         pkgs.mkdir()
         (pkgs / "gandalf_core").symlink_to(ROOT / "gandalf_core")
+        for shown in self.shown:
+            if shown.parent == ROOT and (shown / "__init__.py").is_file():  # a package of the course (gandalf_tools)
+                (pkgs / shown.name).symlink_to(shown)
         for source in _step_dirs(list(self.step_dirs.values())):
             target = pkgs / source.name
             target.mkdir()
@@ -304,7 +311,7 @@ class Sandbox:
                      Path(tempfile.gettempdir()).resolve()]
         solutions = [str(d / "solutions") for d in self.step_dirs.values()]
         hide = [p for p in hidden_paths((*self.hide, *solutions))
-                if not any(q == p or p in q.parents for q in protected)]
+                if not any(q == p or p in q.parents for q in protected) and p not in self.shown]
         if self.mode == "user+mount":
             drop = f"exec setpriv --reuid={self.uid} --regid={self.uid} --clear-groups --inh-caps=-all -- \"$@\"\n"
             script, kept = self._only_what_it_needs(private)
@@ -334,7 +341,7 @@ class Sandbox:
         read-only folder, then put back only what the student's process needs: its private folder, the engine, the
         step packages (their ``solutions/`` covered again below), the virtual environment, the site folders it imports
         packages from (``solutions/`` of an installed course covered too) and Python itself."""
-        needed = [ROOT / "gandalf_core", *_step_dirs(list(self.step_dirs.values())),
+        needed = [ROOT / "gandalf_core", *self.shown, *_step_dirs(list(self.step_dirs.values())),
                   Path(sys.prefix).resolve(), Path(sys.base_prefix).resolve(), Path(sys.executable).resolve().parent,
                   *site_folders()]
         # Every top folder but the system's: another copy of the course may lie anywhere (``/work``, ``/data``,
@@ -413,7 +420,8 @@ class Sandbox:
     # --- requests -------------------------------------------------------------------------------------
     def request(self, message: dict[str, Any], *, label: str | Callable[[], str], budget: float, key: str,
                 objects: Callable[[str, dict[str, Any]], Any] | None = None,
-                encode_objects: Callable[[Any], Any] | None = None) -> Any:
+                encode_objects: Callable[[Any], Any] | None = None, hang: str = "a loop that never ends?",
+                crash: str = "") -> Any:
         """Send ``message``; the reply's ``ok`` value (decoded with ``objects``) or its ``error``/``warnings`` as
         they came. ``key`` names the function for the memory of hung ones; ``label`` (or what it returns, made only
         for a message) says the call in messages."""
@@ -425,7 +433,7 @@ class Sandbox:
             raise SandboxFailure(self.import_errors[package])
         if self.proc is None:
             self._start()
-        if package not in self.imported:
+        if message["package"] is not None and package not in self.imported:
             try:
                 self._exchange({"op": "import", "package": package}, STARTUP_BUDGET + budget, None, None)
                 self.imported.add(package)
@@ -441,14 +449,15 @@ class Sandbox:
         try:
             return self._exchange(message, budget, objects, encode_objects)
         except wire.Timeout:
-            self.failed[key] = f"{said()} did not return within {budget:g} s (a loop that never ends?)"
+            self.failed[key] = f"{said()} did not return within {budget:g} s ({hang})"
         except (EOFError, wire.WireError, OSError) as exc:
             try:
                 status = self.proc.wait(timeout=2) if self.proc else None
             except subprocess.TimeoutExpired:
                 status = None
-            self.failed[key] = (f"{said()} ended its process (exit status {status}){self._last_words()}" if isinstance(
-                exc, (EOFError, OSError)) else f"{said()} sent a reply that cannot be read ({exc})")
+            ended = f"{said()} ended its process (exit status {status}){crash}{self._last_words()}"
+            self.failed[key] = ended if isinstance(exc, (EOFError, OSError)) else (
+                f"{said()} sent a reply that cannot be read ({exc})")
         except BaseException:  # the test's own time limit (or ^C) while waiting: the process is mid-call, end it
             self.failed[key] = f"{said()} was stopped by the test's time limit"
             self.stop()
