@@ -54,6 +54,12 @@ def on_shader_box(fn: Callable[..., Any]) -> Callable[..., Any]:
     return route
 
 
+def routes(*values: Any) -> bool:
+    """Whether a helper called with ``values`` among its arguments runs in the shader process."""
+    folders = remote.student_folders()
+    return bool(folders) and _mentions(values, folders)
+
+
 def stop() -> None:
     """End the shader process (the grading session is over)."""
     for box in _boxes:
