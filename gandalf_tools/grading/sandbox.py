@@ -238,8 +238,12 @@ class Sandbox:
     again after a hang or a crash)."""
 
     def __init__(self, step: str, folder: Path, *, hide: tuple[str, ...] = (), memory: int = MEMORY_LIMIT,
-                 shown: tuple[Path, ...] = ()) -> None:
+                 shown: tuple[Path, ...] = (), shader_cache: Path | None = None) -> None:
         self.hide, self.memory = tuple(hide), memory
+        # A folder of the grader's where the GPU driver keeps compiled shaders across this kind of process (writable
+        # there); else the process's own folder (Mesa keeps none where it finds no home of the user: every context
+        # compiled every program again).
+        self.shader_cache = Path(shader_cache).resolve() if shader_cache is not None else None
         # Course folders put back read-only for a process that runs no student Python (the shader process: the test
         # helpers that render with the student's shaders); never a step's solutions.
         self.shown = tuple(Path(p).resolve() for p in shown)
@@ -295,8 +299,11 @@ class Sandbox:
         shutil.copy(here / "wire.py", private / "gandalf_wire.py")
         for name in ("tmp", "home", "pycache"):
             (private / name).mkdir()
+        if self.shader_cache is not None:
+            self.shader_cache.mkdir(mode=0o700, parents=True, exist_ok=True)
         if self.uid is not None:
-            for path in [private, *private.rglob("*")]:
+            caches = [self.shader_cache, *self.shader_cache.rglob("*")] if self.shader_cache is not None else []
+            for path in [private, *private.rglob("*"), *caches]:
                 os.lchown(path, self.uid, self.uid)
         private.chmod(0o700)
         return private
@@ -360,13 +367,14 @@ class Sandbox:
         else:  # in a user namespace, which may not create one there: /run itself, covered for the while
             stage = Path("/run")
         lines = ["set -e", f"mount -t tmpfs -o size=64k,mode=0700 gandalf-stage '{stage}'"]
-        keep = [*needed, private]
+        writable = [private, *([self.shader_cache] if self.shader_cache is not None else [])]
+        keep = [*needed, *writable]
         for i, path in enumerate(keep):
             lines += [f"mkdir '{stage}/{i}'", f"mount --bind '{path}' '{stage}/{i}'"]
         lines += [f"mount -t tmpfs -o size=1m,mode=0755 gandalf-cover '{c}'" for c in covers]
         for i, path in enumerate(keep):
             lines += [f"mkdir -p '{path}'", f"mount --bind '{stage}/{i}' '{path}'"]
-            if path != private:
+            if path not in writable:
                 lines.append(f"mount -o remount,bind,ro '{path}'")
         lines += [f"mount -o remount,ro '{c}'" for c in covers]
         # Shared memory of its own: the machine's /dev/shm is writable by every user (a channel between sandboxes).
@@ -380,7 +388,8 @@ class Sandbox:
         from_child_r, from_child_w = os.pipe()
         env = {"PATH": os.environ.get("PATH", "/usr/bin:/bin"), "HOME": str(self.private / "home"),
                "TMPDIR": str(self.private / "tmp"), "LANG": "C.UTF-8", "OPENBLAS_NUM_THREADS": "1",
-               "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
+               "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1",
+               "MESA_SHADER_CACHE_DIR": str(self.shader_cache or self.private / "home" / ".cache")}
         with open(self.private / "stderr.txt", "wb") as err:
             self.proc = subprocess.Popen(
                 self._command(self.private, to_child_r, from_child_w), cwd=self.private, env=env,

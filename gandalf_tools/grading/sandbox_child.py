@@ -145,6 +145,15 @@ def _folders(value: Any) -> Any:
         step = str(value["gandalf_impl"])
         return types.SimpleNamespace(__name__=f"{step}.exercises", __file__=os.path.join(PKGS, step, "exercises",
                                                                                          "__init__.py"))
+    if isinstance(value, dict) and len(value) == 1 and "gandalf_files" in value:  # shader files sent by value
+        import tempfile
+
+        folder = tempfile.mkdtemp(prefix="shaders-")
+        for name, text in dict(value["gandalf_files"]).items():
+            if os.path.basename(str(name)) == name and name.endswith((".glsl", ".wgsl")):
+                with open(os.path.join(folder, name), "w") as f:
+                    f.write(str(text))
+        return types.SimpleNamespace(__name__="shaders", __file__=os.path.join(folder, "__init__.py"))
     if isinstance(value, dict) and len(value) == 1 and "gandalf_path" in value:
         import pathlib
 

@@ -20,6 +20,9 @@ the mutation check's in-process mutants) the helper runs here as before.
 from __future__ import annotations
 
 import functools
+import os
+import tempfile
+import types
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -54,6 +57,14 @@ def on_shader_box(fn: Callable[..., Any]) -> Callable[..., Any]:
     return route
 
 
+def shader_cache() -> Path:
+    """Where the shader processes' GPU driver keeps compiled programs across runs: a folder of the grader's in the
+    temporary folder, seen only by shader processes (the student's Python never runs there; its process does not
+    see this folder), so that the course's own programs and a student's repeated ones compile once."""
+    uid = os.getuid() if hasattr(os, "getuid") else "user"
+    return Path(tempfile.gettempdir()) / f"gandalf-shader-cache-{uid}"
+
+
 def routes(*values: Any) -> bool:
     """Whether a helper called with ``values`` among its arguments runs in the shader process."""
     folders = remote.student_folders()
@@ -80,8 +91,20 @@ def _folder_of(value: Any, folders: dict[Path, str]) -> tuple[str, Path] | None:
     return None
 
 
+def _loose_shaders(value: Any) -> Path | None:
+    """The folder of a stand-in package outside the course that holds shader files (a test's copy of the student's
+    files with some of the reference's: it travels by value), else None."""
+    if isinstance(value, (remote.RemotePackage, types.ModuleType)) or not isinstance(getattr(value, "__file__", None),
+                                                                                       str):
+        return None
+    folder = Path(value.__file__).resolve().parent
+    if sandbox.ROOT in folder.parents or not any(folder.glob("*.glsl")) and not any(folder.glob("*.wgsl")):
+        return None
+    return folder
+
+
 def _mentions(value: Any, folders: dict[Path, str]) -> bool:
-    if _folder_of(value, folders) is not None:
+    if _folder_of(value, folders) is not None or _loose_shaders(value) is not None:
         return True
     if isinstance(value, (list, tuple)):
         return any(_mentions(v, folders) for v in value)
@@ -96,6 +119,10 @@ def _encode(value: Any, folders: dict[Path, str]) -> Any:
     found = _folder_of(value, folders)
     if isinstance(value, remote.RemotePackage) and found is not None:
         return {"gandalf_impl": found[0]}
+    loose = _loose_shaders(value)
+    if loose is not None:
+        return {"gandalf_files": {p.name: p.read_text() for p in sorted(loose.iterdir())
+                                  if p.suffix in (".glsl", ".wgsl") and p.is_file()}}
     if isinstance(value, Path):
         if found is not None:
             return {"gandalf_path": [found[0], str(value.resolve().relative_to(found[1]))]}
@@ -116,7 +143,8 @@ def _box(folders: dict[Path, str]) -> sandbox.Sandbox:
     if not _boxes:
         step, folder = next((s, f) for f, s in folders.items())
         _boxes.append(sandbox.Sandbox(step, folder, hide=remote.hidden_outputs(), memory=SHADER_MEMORY,
-                                      shown=(sandbox.ROOT / "tests", sandbox.ROOT / "gandalf_tools")))
+                                      shown=(sandbox.ROOT / "tests", sandbox.ROOT / "gandalf_tools"),
+                                      shader_cache=shader_cache()))
     for folder, step in folders.items():
         _boxes[0].add(step, folder)
     return _boxes[0]
