@@ -58,6 +58,7 @@ _graded: dict[str, dict[str, Any]] = {}
 # nodeid -> {"passed_call": bool, "failed": bool, "message": str, "duration": float}
 _outcomes: dict[str, dict[str, Any]] = {}
 _overlays: dict[str, ModuleType] = {}
+_collected_steps: set[str] = set()  # the steps whose graded tests this process runs
 # step package -> (its sandbox, the stand-in of the student's package) for this run.
 _sandboxes: dict[str, tuple[Any, ModuleType]] = {}
 # The full report of each failed graded test in the student's view (written to the grade's log file).
@@ -193,6 +194,10 @@ def _sandboxed(config: pytest.Config, step_package: str, folder: Path) -> Module
             box = sandbox.Sandbox(step_package, folder, hide=tuple(outputs))
             for step, other in wanted.items():
                 box.add(step, other)
+            # The shader process gets the same folders; it starts now where the run grades a step with shader files.
+            shader_steps = [step for step in _collected_steps if step in wanted
+                            and (any(Path(wanted[step]).glob("*.glsl")) or any(Path(wanted[step]).glob("*.wgsl")))]
+            shader_box.plan({Path(f).resolve(): s for s, f in wanted.items()}, tuple(outputs), bool(shader_steps))
         budget = float(config.getoption("--grade-call-budget"))
         _sandboxes[step_package] = (box, remote.install(step_package, folder, box, budget))
     return _sandboxes[step_package][1]
@@ -289,6 +294,8 @@ def pytest_collection_modifyitems(session: pytest.Session, config: pytest.Config
 
 def pytest_collection_finish(session: pytest.Session) -> None:
     graded = {item.nodeid: info for item in session.items if (info := _exercise_of(item)) is not None}
+    _collected_steps.clear()
+    _collected_steps.update(info["step"] for info in graded.values())
     config = session.config
     if _is_worker(config):
         folder = config.workerinput.get("gandalf_collect_dir")  # type: ignore[attr-defined]

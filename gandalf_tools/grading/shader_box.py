@@ -22,6 +22,7 @@ from __future__ import annotations
 import functools
 import os
 import tempfile
+import threading
 import types
 from collections.abc import Callable
 from pathlib import Path
@@ -40,6 +41,7 @@ _boxes: list[sandbox.Sandbox] = []
 #: ``sandbox.STARTUP_BUDGET`` seconds, so that the student's shader gets its whole budget.
 _warm: set[tuple[int, str]] = set()
 _API_WORDS = ("glsl", "wgsl", "opengl", "webgpu")
+_starting: list[threading.Thread] = []  # the thread plan() started, until it is joined
 budget = [SHADER_BUDGET]  # the run's (``--grade-shader-budget``)
 
 
@@ -73,6 +75,8 @@ def routes(*values: Any) -> bool:
 
 def stop() -> None:
     """End the shader process (the grading session is over)."""
+    while _starting:
+        _starting.pop().join()
     for box in _boxes:
         box.stop()
     _boxes.clear()
@@ -139,12 +143,43 @@ def _label(fn: Callable[..., Any], args: tuple[Any, ...]) -> str:
     return f"{fn.__name__}({', '.join([*texts, '…'])}) with your shaders"
 
 
-def _box(folders: dict[Path, str]) -> sandbox.Sandbox:
+def plan(folders: dict[Path, str], hide: tuple[str, ...], start: bool) -> None:
+    """Lay out every student's folder the session may grade in the shader process at once (adding one later would
+    start it again); with ``start``, start it now and its OpenGL context and WebGPU device in a thread of this
+    process, so that they are ready when the first shader test comes (the tests before it go on meanwhile)."""
+    if _boxes:
+        return
+    _box(folders, hide)
+    if start:
+        thread = threading.Thread(target=_warm_up_both, name="gandalf-shader-process", daemon=True)
+        _starting.append(thread)
+        thread.start()
+
+
+def _warm_up_both() -> None:
+    box = _boxes[0]
+    for api in ("glsl", "wgsl"):
+        try:
+            _warm_up(box, api)
+        except Exception:  # noqa: BLE001 - the first shader call starts it again and says what failed
+            return
+
+
+def _warm_up(box: sandbox.Sandbox, api: str) -> None:
+    remote.Session(box, sandbox.STARTUP_BUDGET, None).call(  # type: ignore[arg-type]
+        {"op": "helper", "file": str(sandbox.ROOT / "tests" / "shader_harness.py"), "function": "warm_up",
+         "args": [api], "kwargs": {}}, f"starting {api} in the shader process", f"warm_up:{api}")
+    _warm.add((box.generation, api))
+
+
+def _box(folders: dict[Path, str], hide: tuple[str, ...] | None = None) -> sandbox.Sandbox:
+    while _starting:  # a start begun by plan(): the box is its thread's until it is done
+        _starting.pop().join()
     if not _boxes:
         step, folder = next((s, f) for f, s in folders.items())
-        _boxes.append(sandbox.Sandbox(step, folder, hide=remote.hidden_outputs(), memory=SHADER_MEMORY,
-                                      shown=(sandbox.ROOT / "tests", sandbox.ROOT / "gandalf_tools"),
-                                      shader_cache=shader_cache()))
+        _boxes.append(sandbox.Sandbox(step, folder, hide=remote.hidden_outputs() if hide is None else hide,
+                                      memory=SHADER_MEMORY, shader_cache=shader_cache(),
+                                      shown=(sandbox.ROOT / "tests", sandbox.ROOT / "gandalf_tools")))
     for folder, step in folders.items():
         _boxes[0].add(step, folder)
     return _boxes[0]
@@ -160,10 +195,7 @@ def _call(fn: Callable[..., Any], args: tuple[Any, ...], kwargs: dict[str, Any],
     api = next((a for a in texts if a in _API_WORDS), "")
     key = f"{file.name}:{fn.__qualname__}:{texts}"
     if api and f"{None}:{key}" not in box.failed and (box.proc is None or (box.generation, api) not in _warm):
-        remote.Session(box, sandbox.STARTUP_BUDGET, None).call(  # type: ignore[arg-type]
-            {"op": "helper", "file": str(tests / "shader_harness.py"), "function": "warm_up", "args": [api],
-             "kwargs": {}}, f"starting {api} in the shader process", f"warm_up:{api}")
-        _warm.add((box.generation, api))
+        _warm_up(box, api)
     message = {"op": "helper", "file": str(file), "function": fn.__qualname__,
                "args": _encode(list(args), folders), "kwargs": _encode(kwargs, folders)}
     copies = str(box.private / "pkgs") + "/" if box.private is not None else None
