@@ -250,3 +250,28 @@ def test_a_grade_made_without_namespaces_says_so_loudly(tmp_path, monkeypatch):
     proc, result = _grade(tmp_path, "--jobs", "0", "-k", "add", "--gradescope", str(gradescope))
     assert result["isolation"] != "process" and "isolation_warning" not in result
     assert "NOT ISOLATED" not in proc.stdout and "NOT ISOLATED" not in gradescope.read_text()
+
+
+def test_the_gradebook_flags_each_grade_made_without_namespaces(tmp_path, monkeypatch):
+    import csv
+
+    from gandalf_tools.grading import batch
+
+    monkeypatch.setenv(sandbox.ISOLATION_ENV, "process")
+    warning = sandbox.isolation_warning("process")
+    exercise = {"step": "step01_window", "exercise": "hsv_to_rgb", "earned": 1.0, "possible": 1.0, "passed": 3,
+                "tests": 3}
+    flagged = batch.Graded("alice", ["step01_window"], result={
+        "earned": 1.0, "possible": 1.0, "score": 1.0, "exercises": [exercise], "tests": [], "isolation": "process",
+        "isolation_warning": warning})
+    kept = batch.Graded("bob", ["step01_window"], result={
+        "earned": 1.0, "possible": 1.0, "score": 1.0, "exercises": [exercise], "tests": [], "isolation": "user+mount"})
+    csv_path, json_path = batch.write_gradebook([flagged, kept], tmp_path)
+    rows = {row["student"]: row for row in csv.DictReader(csv_path.open())}
+    assert rows["alice"]["isolation"] == "process" and rows["bob"]["isolation"] == "user+mount"
+    book = {entry["student"]: entry for entry in json.loads(json_path.read_text())}
+    assert book["alice"]["isolation_warning"] == warning and "isolation_warning" not in book["bob"]
+    batch.write_report(flagged, tmp_path / "alice.md")
+    batch.write_report(kept, tmp_path / "bob.md")
+    assert f"**Not isolated:** {warning}" in (tmp_path / "alice.md").read_text()
+    assert "Not isolated" not in (tmp_path / "bob.md").read_text()
