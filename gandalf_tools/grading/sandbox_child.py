@@ -138,13 +138,22 @@ class _Assets:
         return self._add("material", self.materials, name, data)
 
 
+def _no_student_python() -> None:
+    """Put a stand-in of each graded folder in ``sys.modules`` as ``<step>.exercises``: its ``__file__`` (the shader
+    files beside it are read) and no submodules, so that no import in this process runs the student's Python."""
+    for step in sorted(os.listdir(PKGS)):
+        name, init = f"{step}.exercises", os.path.join(PKGS, step, "exercises", "__init__.py")
+        if name not in sys.modules and os.path.isfile(init):
+            stand_in = types.ModuleType(name, "the student's folder: its shader files, never its Python")
+            stand_in.__file__, stand_in.__path__ = init, []
+            sys.modules[name] = stand_in
+
+
 def _folders(value: Any) -> Any:
     """``value`` with each ``{"gandalf_impl": step}`` made the stand-in of the step's graded folder (its ``__file__``
     only: shader files are read from it, its Python is never imported here) and ``{"gandalf_path": p}`` a Path."""
     if isinstance(value, dict) and len(value) == 1 and "gandalf_impl" in value:
-        step = str(value["gandalf_impl"])
-        return types.SimpleNamespace(__name__=f"{step}.exercises", __file__=os.path.join(PKGS, step, "exercises",
-                                                                                         "__init__.py"))
+        return sys.modules.get(f"{value['gandalf_impl']}.exercises")
     if isinstance(value, dict) and len(value) == 1 and "gandalf_files" in value:  # shader files sent by value
         import tempfile
 
@@ -261,6 +270,7 @@ class Server:
     def op_helper(self, package: None, file: str, function: str, args: list[Any], kwargs: dict[str, Any]) -> Any:
         """A function of the course's tests (its module read from ``file``) that renders with the student's shaders,
         called with ``{"gandalf_impl": step}`` standing for the step's graded folder (its files, never imported)."""
+        _no_student_python()
         module = self.helpers.get(file)
         if module is None:
             for folder in (os.path.dirname(os.path.dirname(file)), os.path.dirname(file)):  # tests/, its step's folder

@@ -42,6 +42,9 @@ NESTED = "(" * 100_000 + "t" + ")" * 100_000
 def _submission(tmp_path: Path, attack: str | None) -> Path:
     folder = tmp_path / "submission" / "exercises"
     shutil.copytree(ROOT / "step07_advanced" / "solutions", folder, ignore=shutil.ignore_patterns("__pycache__"))
+    # The shader process reads the shader files beside the package and never runs its Python: a package that would
+    # end any process importing it costs nothing (the student's Python process never imports it either here).
+    (folder / "__init__.py").write_text("import os\n\nos._exit(9)\n")
     for language in ("glsl", "wgsl") if attack else ():
         text = (ATTACKS / f"{attack}.{language}").read_text().replace("@@NESTED@@", NESTED)
         (folder / f"explode.{language}").write_text(text)
