@@ -144,7 +144,17 @@ def main(argv: list[str] | None = None) -> int:
     print("\n".join(wgpu_lines))
     print("\nWhat runs here (every part needs at least OpenGL 3.3 core or WebGPU's default limits)")
     print("\n".join(table(gl, wg)))
+    print("\n".join(grading_report()))
     return 0 if gl is not None or wg is not None else 1
+
+
+def grading_report() -> list[str]:
+    """How the grader would keep a student's code from the checkout on this machine, as this user."""
+    from gandalf_tools.grading.sandbox import MEANING, isolation, isolation_warning
+
+    mode = isolation()
+    return ["", f"Grading isolation (as uid {os.geteuid() if hasattr(os, 'geteuid') else '?'}): {mode}",
+            f"  {isolation_warning(mode) or MEANING[mode]}"]
 
 
 if __name__ == "__main__":

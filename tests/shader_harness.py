@@ -24,6 +24,7 @@ import numpy as np
 
 from gandalf_core.render.errors import ShaderCompileError
 from gandalf_core.render.shader_files import load_shader
+from gandalf_tools.grading.shader_box import on_shader_box
 
 WORKGROUP = 64
 #: type name -> (GLSL type, WGSL type, numpy dtype, components)
@@ -147,6 +148,12 @@ def wgpu_device():
     return request_device()[1]
 
 
+def warm_up(api: str) -> None:
+    """Start this process's OpenGL context (``api`` "glsl" or "opengl") or WebGPU device ("wgsl", "webgpu"): the
+    grader's shader process does it before a student's first shader, outside that shader's time budget."""
+    (gl_context if api in ("glsl", "opengl") else wgpu_device)()
+
+
 def wgsl_source(prelude: str, expression: str, arrays: list[tuple[str, str, np.ndarray]], output: str) -> str:
     inputs = "".join(f"@group(0) @binding({binding}) var<storage, read> in_{name}: array<{TYPES[kind][1]}>;\n"
                      for binding, (name, kind, _) in enumerate(arrays))
@@ -175,9 +182,9 @@ def eval_wgsl(prelude: str, expression: str, inputs: Inputs, output: str,
         pipeline = device.create_compute_pipeline(layout="auto",
                                                   compute={"module": module, "entry_point": "harness_main"})
     except wgpu.GPUError as exc:
-        from gandalf_core.render.webgpu.libs import _explain_naga_error
+        from gandalf_core.render.webgpu.validation import compile_error
 
-        raise ShaderCompileError(_explain_naga_error(source, str(exc))) from None
+        raise ShaderCompileError(compile_error(source, str(exc))) from None
     usage = wgpu.BufferUsage
     buffers = [device.create_buffer_with_data(data=a.tobytes(), usage=usage.STORAGE) for _, _, a in arrays]
     size = count * TYPES[output][3] * 4
@@ -198,6 +205,7 @@ def eval_wgsl(prelude: str, expression: str, inputs: Inputs, output: str,
             buf.destroy()
 
 
+@on_shader_box  # a student's shader files: compiled and run in the grader's shader process, not in this one
 def evaluate(language: str, prelude: str, expression: str, inputs: Inputs, output: str,
              include_dirs: Sequence[str | Path] = ()) -> np.ndarray:
     """:func:`eval_glsl` for ``language == "glsl"``, :func:`eval_wgsl` for ``"wgsl"``."""

@@ -40,7 +40,7 @@ from pathlib import Path
 from typing import Any
 
 from . import bytecode_cache_env
-from .sandbox import HIDE_ENV
+from .sandbox import HIDE_ENV, isolation, isolation_warning
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -156,6 +156,8 @@ def write_report(graded: Graded, path: Path) -> None:
     lines = [f"# {graded.student}", ""]
     if graded.error:
         lines += [f"**Grading problem:** {graded.error}", ""]
+    if result.get("isolation_warning"):
+        lines += [f"**Not isolated:** {result['isolation_warning']}", ""]
     if graded.regraded and not graded.error:
         lines += ["Graded with each test in a worker process: the first run's process did not finish (a crash, a "
                   "hard exit or a hang in the submission's code); the tests that caused it fail below.", ""]
@@ -192,7 +194,8 @@ def write_gradebook(graded: list[Graded], out: Path) -> tuple[Path, Path]:
     csv_path = out / "gradebook.csv"
     with open(csv_path, "w", newline="") as f:
         writer = csv.writer(f)
-        writer.writerow(["student", "earned", "possible", "percent", *[f"{s}:{e}" for s, e in columns], "error"])
+        writer.writerow(["student", "earned", "possible", "percent", *[f"{s}:{e}" for s, e in columns], "error",
+                         "isolation"])
         for g in graded:
             points = {(x["step"], x["exercise"]): x["earned"] for x in g.result.get("exercises", [])}
             percent = 100.0 * g.earned / g.possible if g.possible else 0.0
@@ -204,6 +207,7 @@ def write_gradebook(graded: list[Graded], out: Path) -> tuple[Path, Path]:
                     f"{percent:.2f}",
                     *[f"{points.get(c, 0.0):.4f}" for c in columns],
                     g.error,
+                    g.result.get("isolation", ""),
                 ]
             )
     json_path = out / "gradebook.json"
@@ -222,6 +226,9 @@ def write_gradebook(graded: list[Graded], out: Path) -> tuple[Path, Path]:
                     "seconds": round(g.seconds, 2),
                     "regraded_in_workers": g.regraded,
                     "error": g.error,
+                    "isolation": g.result.get("isolation", ""),
+                    **({"isolation_warning": g.result["isolation_warning"]}
+                       if g.result.get("isolation_warning") else {}),
                 }
                 for g in graded
             ],
@@ -270,6 +277,9 @@ def main(argv: list[str] | None = None) -> int:
         parser.error(f"no student folders in {args.submissions}")
     args.out.mkdir(parents=True, exist_ok=True)
     print(f"grading {len(students)} submissions, steps {', '.join(steps)}, {args.jobs} at a time", flush=True)
+    warning = isolation_warning(isolation())
+    if warning:
+        print(warning, file=sys.stderr, flush=True)
     start = time.perf_counter()
     graded: list[Graded] = []
     with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
@@ -303,6 +313,8 @@ def main(argv: list[str] | None = None) -> int:
     graded.sort(key=lambda g: g.student)
     csv_path, json_path = write_gradebook(graded, args.out)
     print(f"gradebook: {csv_path} and {json_path}; reports in {args.out}/<student>/report.md")
+    if warning:
+        print(f"{warning} (the gradebook's isolation column says \"process\" for each grade made so)", file=sys.stderr)
     return 1 if any(g.error for g in graded) else 0
 
 

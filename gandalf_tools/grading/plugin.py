@@ -45,7 +45,7 @@ from typing import Any
 
 import pytest
 
-from . import feedback, remote, sandbox, watchdog
+from . import feedback, remote, sandbox, shader_box, watchdog
 
 IMPL_ENV = "GANDALF_IMPL"
 _PROPERTY = "gandalf_grade"
@@ -59,6 +59,7 @@ _graded: dict[str, dict[str, Any]] = {}
 # nodeid -> {"passed_call": bool, "failed": bool, "message": str, "duration": float}
 _outcomes: dict[str, dict[str, Any]] = {}
 _overlays: dict[str, ModuleType] = {}
+_collected_steps: set[str] = set()  # the steps whose graded tests this process runs
 # step package -> (its sandbox, the stand-in of the student's package) for this run.
 _sandboxes: dict[str, tuple[Any, ModuleType]] = {}
 # The full report of each failed graded test in the student's view (written to the grade's log file).
@@ -87,6 +88,14 @@ def pytest_addoption(parser: pytest.Parser) -> None:
         metavar="SECONDS",
         help=f"with --student: seconds one call of the student's function may take; a function that runs past it "
         f"fails that test and every later call at once, saying so (default {watchdog.DEFAULT_BUDGET:g}; 0: none)",
+    )
+    group.addoption(
+        "--grade-shader-budget",
+        type=float,
+        default=shader_box.SHADER_BUDGET,
+        metavar="SECONDS",
+        help=f"with --student: seconds one run of the student's shaders may take in the shader process (default "
+        f"{shader_box.SHADER_BUDGET:g}); past it that call fails, and the same call later fails at once",
     )
     group.addoption(
         "--grade-log",
@@ -186,6 +195,10 @@ def _sandboxed(config: pytest.Config, step_package: str, folder: Path) -> Module
             box = sandbox.Sandbox(step_package, folder, hide=tuple(outputs))
             for step, other in wanted.items():
                 box.add(step, other)
+            # The shader process gets the same folders; it starts now where the run grades a step with shader files.
+            shader_steps = [step for step in _collected_steps if step in wanted
+                            and (any(Path(wanted[step]).glob("*.glsl")) or any(Path(wanted[step]).glob("*.wgsl")))]
+            shader_box.plan({Path(f).resolve(): s for s, f in wanted.items()}, tuple(outputs), bool(shader_steps))
         budget = float(config.getoption("--grade-call-budget"))
         _sandboxes[step_package] = (box, remote.install(step_package, folder, box, budget))
     return _sandboxes[step_package][1]
@@ -241,6 +254,7 @@ def pytest_configure(config: pytest.Config) -> None:
     if _student_view(config) and getattr(config.option, "tbstyle", None) == "auto":
         config.option.tbstyle = "line"  # the student's view: one line per failed test (--tb=long shows more)
     watchdog.reset()
+    shader_box.budget[0] = float(config.getoption("--grade-shader-budget"))
     config._gandalf_collect_dir = None  # type: ignore[attr-defined]
     if not _is_worker(config) and config.pluginmanager.hasplugin("xdist"):
         config._gandalf_collect_dir = tempfile.mkdtemp(prefix="gandalf-grade-")  # type: ignore[attr-defined]
@@ -281,6 +295,8 @@ def pytest_collection_modifyitems(session: pytest.Session, config: pytest.Config
 
 def pytest_collection_finish(session: pytest.Session) -> None:
     graded = {item.nodeid: info for item in session.items if (info := _exercise_of(item)) is not None}
+    _collected_steps.clear()
+    _collected_steps.update(info["step"] for info in graded.values())
     config = session.config
     if _is_worker(config):
         folder = config.workerinput.get("gandalf_collect_dir")  # type: ignore[attr-defined]
@@ -298,6 +314,7 @@ def pytest_collection_finish(session: pytest.Session) -> None:
 def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo[Any]) -> Any:
     if call.when == "setup":
         feedback.reset_calls()
+        remote.forget_calls()
     outcome = yield
     report = outcome.get_result()
     info = _exercise_of(item)
@@ -321,6 +338,7 @@ def _sentence(item: pytest.Item, info: dict[str, Any], excinfo: pytest.Exception
     backend = str(params.get("backend", "")) if isinstance(params.get("backend", ""), str) else ""
     step = Path(str(item.path)).parent.name
     name, error = str(info["exercise"]), excinfo.value
+    remote.flush_calls()  # the student's newest calls, worded now that a sentence needs them
     try:
         file = feedback.exercise_file(step, name, backend)
         return feedback.sentence(error, exercise=name, file=file, hint=hint, values=_assert_values(item, excinfo),
@@ -583,13 +601,17 @@ def gradescope_results(result: dict[str, Any], execution_time: float | None = No
         f"{x['step']} {x['exercise']}: {x['earned']:.2f} / {x['possible']:.2f} ({int(x['passed'])}/{int(x['tests'])})"
         for x in result["exercises"]
     ]
+    warning = result.get("isolation_warning")
     out: dict[str, Any] = {
         "score": result["earned"],
-        "output": "\n".join(lines + [f"TOTAL {result['earned']:.2f} / {result['possible']:.2f}"]),
+        "output": "\n".join(([warning] if warning else []) + lines
+                            + [f"TOTAL {result['earned']:.2f} / {result['possible']:.2f}"]),
         "visibility": "visible",
         "stdout_visibility": "hidden",
         "tests": tests,
     }
+    if "isolation" in result:  # for the instructor: how the student's code was kept from the grader
+        out["extra_data"] = {"isolation": result["isolation"], **({"isolation_warning": warning} if warning else {})}
     if execution_time is not None:
         out["execution_time"] = round(float(execution_time), 3)
     return out
@@ -622,11 +644,17 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
     result = summary()
     student = bool(config.getoption("--student") or os.environ.get(IMPL_ENV)
                    or not all(_has_solutions(info["step"]) for info in _graded.values()))
+    warning = None
     if student and not config.getoption("--grade-in-process"):  # how the student's code was kept from the checkout
         result["isolation"] = sandbox.isolation()
+        warning = sandbox.isolation_warning(result["isolation"])
+        if warning:
+            result["isolation_warning"] = warning
     which = "exercises (student)" if student else "solutions (reference)"
     tr = terminalreporter
     tr.section(f"gandalf grade — {which}")
+    if warning:  # loud, first and last: a grade that may be forged must not pass unnoticed
+        tr.write_line(warning, red=True, bold=True)
     for x in result["exercises"]:
         tr.write_line(
             f"{x['step']:<22} {x['exercise']:<28} {x['earned']:>5.1f} / {x['possible']:<5.1f}"
@@ -643,6 +671,8 @@ def pytest_terminal_summary(terminalreporter: Any, exitstatus: int, config: pyte
         log.parent.mkdir(parents=True, exist_ok=True)
         log.write_text("\n".join(_log))
         tr.write_line(f"full tracebacks of the failed tests: {log}")
+    if warning:
+        tr.write_line(warning, red=True, bold=True)
     path = config.getoption("--grade-json")
     if path:
         Path(path).write_text(json.dumps({"mode": which, **result}, indent=2))
@@ -660,6 +690,8 @@ def pytest_unconfigure(config: pytest.Config) -> None:
     for box in {box for box, _package in _sandboxes.values()}:
         box.stop()
     _sandboxes.clear()
+    shader_box.stop()
+    remote.uninstall()
     folder = getattr(config, "_gandalf_collect_dir", None)
     if folder and Path(folder).is_dir():
         for path in Path(folder).iterdir():

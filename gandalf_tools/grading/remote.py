@@ -95,16 +95,36 @@ class Session:
     def __init__(self, sandbox: Sandbox, budget: float, package: str) -> None:
         self.sandbox, self.budget, self.package = sandbox, budget, package
 
-    def call(self, message: dict[str, Any], label: str | Callable[[], str], key: str) -> Any:
+    def call(self, message: dict[str, Any], label: str | Callable[[], str], key: str,
+             hang: str = "a loop that never ends?", crash: str = "") -> Any:
         try:
             reply = self.sandbox.request({**message, "package": self.package}, label=label, key=key, budget=self.budget,
-                                         objects=trusted_object, encode_objects=_encode_object)
+                                         objects=trusted_object, encode_objects=_encode_object, hang=hang,
+                                         crash=crash)
         except SandboxFailure as exc:
             raise ExerciseTimeout(str(exc)) from None
         _warn(reply.get("warnings", []))
         if "error" in reply:
             _raise(reply["error"], label() if callable(label) else label)
         return reply.get("ok")
+
+
+#: The newest calls of the student's functions, as they came: worded (numpy's printing costs more than a round trip)
+#: only for a failed test's sentence, by :func:`flush_calls`.
+_calls: list[tuple[str, tuple[Any, ...], dict[str, Any], Any]] = []
+_KEPT_CALLS = 8
+
+
+def flush_calls() -> None:
+    """Hand the newest calls to :func:`feedback.record_call` (which words them), oldest first."""
+    for name, args, kwargs, result in _calls:
+        feedback.record_call(describe_call(name, args, kwargs), result)
+    _calls.clear()
+
+
+def forget_calls() -> None:
+    """A new test starts."""
+    _calls.clear()
 
 
 class RemoteFunction:
@@ -119,7 +139,8 @@ class RemoteFunction:
         except Exception as error:
             feedback.record_raise(describe_call(self.__name__, args, kwargs), error)
             raise
-        feedback.record_call(describe_call(self.__name__, args, kwargs), result)  # for a failed check's sentence
+        _calls.append((self.__name__, args, kwargs, result))  # for a failed check's sentence (see flush_calls)
+        del _calls[:-_KEPT_CALLS]
         return result
 
     def __repr__(self) -> str:
@@ -372,12 +393,32 @@ class RemotePackage(RemoteModule):
                                              str(Path(self.__file__).parent / f"{module}.py"))
 
 
+#: The students' folders graded in this process (resolved) -> their step package, and the sandbox of each.
+_installed: dict[Path, tuple[str, Sandbox]] = {}
+
+
+def student_folders() -> dict[Path, str]:
+    """The folders of the students' packages this grading session runs in a sandbox -> their step package."""
+    return {folder: step for folder, (step, _box) in _installed.items()}
+
+
+def hidden_outputs() -> tuple[str, ...]:
+    """The folders the grading session hides from the student's process (its grade files' folders)."""
+    return tuple(dict.fromkeys(p for _step, box in _installed.values() for p in box.hide))
+
+
+def uninstall() -> None:
+    """Forget the students' packages (the grading session is over)."""
+    _installed.clear()
+
+
 def install(step: str, folder: Path, sandbox: Sandbox, budget: float) -> RemotePackage:
     """The stand-in of ``<step>.exercises`` for ``folder``, in ``sys.modules`` (and as the step's attribute) in
     place of any real one, so that nothing in this process imports the student's files."""
     import importlib
 
     package = RemotePackage(step, folder, Session(sandbox, budget, f"{step}.exercises"))
+    _installed[Path(folder).resolve()] = (step, sandbox)
     for name in [k for k in sys.modules if k == package.__name__ or k.startswith(package.__name__ + ".")]:
         del sys.modules[name]
     sys.modules[package.__name__] = package

@@ -111,6 +111,29 @@ def isolation() -> str:
     return "process"
 
 
+#: What each isolation means for the grade, in one sentence (the doctor, the grade files and the console say it).
+MEANING = {
+    "user+mount": "the student's code runs as a user of its own in a mount and pid namespace: it cannot read the "
+                  "solutions, the tests or other submissions, nor write the grade",
+    "mount": "the student's code runs in a user, mount and pid namespace without capabilities: it cannot read the "
+             "solutions, the tests or other submissions, nor write the grade",
+    "process": "NOT ISOLATED: the student's code runs in a separate process as the grader's own user, without "
+               "namespaces, and could read the solutions and tests and write any file that user can, the grade "
+               "included; a grade made so can be forged: grade as root (Gradescope's autograder, a container) or "
+               "where unprivileged user namespaces are allowed",
+}
+
+
+def isolation_warning(mode: str) -> str | None:
+    """The warning a grade made under ``mode`` carries, with why (None where the student's code was kept from the
+    checkout)."""
+    if mode != "process":
+        return None
+    why = (f"${ISOLATION_ENV}=process asked for it" if os.environ.get(ISOLATION_ENV, "").strip() == "process" else
+           "'unshare --user --map-root-user --mount --pid' and setpriv are refused or missing here")
+    return f"WARNING: {MEANING['process']} ({why})"
+
+
 def _editable_roots() -> set[Path]:
     """Checkouts an editable install of the project points at (its finder's mapping)."""
     roots: set[Path] = set()
@@ -201,6 +224,7 @@ def recipe(fn: Callable[..., Any]) -> dict[str, Any] | None:
 
 
 _made = iter(range(1 << 30))
+_recipe_numbers = iter(range(1 << 62))  # numbers of the recipes sent (see Sandbox._exchange)
 
 
 def _uid() -> int:
@@ -213,8 +237,16 @@ class Sandbox:
     """One sandboxed process for the graded packages of a grading session, one per step (started on first use,
     again after a hang or a crash)."""
 
-    def __init__(self, step: str, folder: Path, *, hide: tuple[str, ...] = (), memory: int = MEMORY_LIMIT) -> None:
+    def __init__(self, step: str, folder: Path, *, hide: tuple[str, ...] = (), memory: int = MEMORY_LIMIT,
+                 shown: tuple[Path, ...] = (), shader_cache: Path | None = None) -> None:
         self.hide, self.memory = tuple(hide), memory
+        # A folder of the grader's where the GPU driver keeps compiled shaders across this kind of process (writable
+        # there); else the process's own folder (Mesa keeps none where it finds no home of the user: every context
+        # compiled every program again).
+        self.shader_cache = Path(shader_cache).resolve() if shader_cache is not None else None
+        # Course folders put back read-only for a process that runs no student Python (the shader process: the test
+        # helpers that render with the student's shaders); never a step's solutions.
+        self.shown = tuple(Path(p).resolve() for p in shown)
         self.folders: dict[str, Path] = {}  # step package -> the folder graded as its exercises
         self.step_dirs: dict[str, Path] = {}  # step package -> its own folder (course code)
         self.imported: set[str] = set()  # the packages the running process has imported
@@ -228,6 +260,7 @@ class Sandbox:
         self._to_child = self._from_child = -1
         self.failed: dict[str, str] = {}  # target -> the sentence its later calls fail with
         self.callables = []
+        self._sent: set[int] = set()
         self._recipes: dict[int, tuple[Callable[..., Any], dict[str, Any] | None]] = {}
 
     def add(self, step: str, folder: Path) -> None:
@@ -246,6 +279,9 @@ class Sandbox:
         pkgs = private / "pkgs"
         pkgs.mkdir()
         (pkgs / "gandalf_core").symlink_to(ROOT / "gandalf_core")
+        for shown in self.shown:
+            if shown.parent == ROOT and (shown / "__init__.py").is_file():  # a package of the course (gandalf_tools)
+                (pkgs / shown.name).symlink_to(shown)
         for source in _step_dirs(list(self.step_dirs.values())):
             target = pkgs / source.name
             target.mkdir()
@@ -263,8 +299,11 @@ class Sandbox:
         shutil.copy(here / "wire.py", private / "gandalf_wire.py")
         for name in ("tmp", "home", "pycache"):
             (private / name).mkdir()
+        if self.shader_cache is not None:
+            self.shader_cache.mkdir(mode=0o700, parents=True, exist_ok=True)
         if self.uid is not None:
-            for path in [private, *private.rglob("*")]:
+            caches = [self.shader_cache, *self.shader_cache.rglob("*")] if self.shader_cache is not None else []
+            for path in [private, *private.rglob("*"), *caches]:
                 os.lchown(path, self.uid, self.uid)
         private.chmod(0o700)
         return private
@@ -279,7 +318,7 @@ class Sandbox:
                      Path(tempfile.gettempdir()).resolve()]
         solutions = [str(d / "solutions") for d in self.step_dirs.values()]
         hide = [p for p in hidden_paths((*self.hide, *solutions))
-                if not any(q == p or p in q.parents for q in protected)]
+                if not any(q == p or p in q.parents for q in protected) and p not in self.shown]
         if self.mode == "user+mount":
             drop = f"exec setpriv --reuid={self.uid} --regid={self.uid} --clear-groups --inh-caps=-all -- \"$@\"\n"
             script, kept = self._only_what_it_needs(private)
@@ -309,7 +348,7 @@ class Sandbox:
         read-only folder, then put back only what the student's process needs: its private folder, the engine, the
         step packages (their ``solutions/`` covered again below), the virtual environment, the site folders it imports
         packages from (``solutions/`` of an installed course covered too) and Python itself."""
-        needed = [ROOT / "gandalf_core", *_step_dirs(list(self.step_dirs.values())),
+        needed = [ROOT / "gandalf_core", *self.shown, *_step_dirs(list(self.step_dirs.values())),
                   Path(sys.prefix).resolve(), Path(sys.base_prefix).resolve(), Path(sys.executable).resolve().parent,
                   *site_folders()]
         # Every top folder but the system's: another copy of the course may lie anywhere (``/work``, ``/data``,
@@ -328,13 +367,14 @@ class Sandbox:
         else:  # in a user namespace, which may not create one there: /run itself, covered for the while
             stage = Path("/run")
         lines = ["set -e", f"mount -t tmpfs -o size=64k,mode=0700 gandalf-stage '{stage}'"]
-        keep = [*needed, private]
+        writable = [private, *([self.shader_cache] if self.shader_cache is not None else [])]
+        keep = [*needed, *writable]
         for i, path in enumerate(keep):
             lines += [f"mkdir '{stage}/{i}'", f"mount --bind '{path}' '{stage}/{i}'"]
         lines += [f"mount -t tmpfs -o size=1m,mode=0755 gandalf-cover '{c}'" for c in covers]
         for i, path in enumerate(keep):
             lines += [f"mkdir -p '{path}'", f"mount --bind '{stage}/{i}' '{path}'"]
-            if path != private:
+            if path not in writable:
                 lines.append(f"mount -o remount,bind,ro '{path}'")
         lines += [f"mount -o remount,ro '{c}'" for c in covers]
         # Shared memory of its own: the machine's /dev/shm is writable by every user (a channel between sandboxes).
@@ -348,7 +388,8 @@ class Sandbox:
         from_child_r, from_child_w = os.pipe()
         env = {"PATH": os.environ.get("PATH", "/usr/bin:/bin"), "HOME": str(self.private / "home"),
                "TMPDIR": str(self.private / "tmp"), "LANG": "C.UTF-8", "OPENBLAS_NUM_THREADS": "1",
-               "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
+               "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1",
+               "MESA_SHADER_CACHE_DIR": str(self.shader_cache or self.private / "home" / ".cache")}
         with open(self.private / "stderr.txt", "wb") as err:
             self.proc = subprocess.Popen(
                 self._command(self.private, to_child_r, from_child_w), cwd=self.private, env=env,
@@ -360,6 +401,7 @@ class Sandbox:
         self.generation += 1
         self.imported = set()
         self.callables: list[Callable[..., Any]] = []  # the grader's functions the student's code may call back
+        self._sent: set[int] = set()  # the recipes this process has rebuilt (by number)
 
     def stop(self) -> None:
         """End the sandboxed process, every process of its user, and remove its folder."""
@@ -387,7 +429,8 @@ class Sandbox:
     # --- requests -------------------------------------------------------------------------------------
     def request(self, message: dict[str, Any], *, label: str | Callable[[], str], budget: float, key: str,
                 objects: Callable[[str, dict[str, Any]], Any] | None = None,
-                encode_objects: Callable[[Any], Any] | None = None) -> Any:
+                encode_objects: Callable[[Any], Any] | None = None, hang: str = "a loop that never ends?",
+                crash: str = "") -> Any:
         """Send ``message``; the reply's ``ok`` value (decoded with ``objects``) or its ``error``/``warnings`` as
         they came. ``key`` names the function for the memory of hung ones; ``label`` (or what it returns, made only
         for a message) says the call in messages."""
@@ -399,7 +442,7 @@ class Sandbox:
             raise SandboxFailure(self.import_errors[package])
         if self.proc is None:
             self._start()
-        if package not in self.imported:
+        if message["package"] is not None and package not in self.imported:
             try:
                 self._exchange({"op": "import", "package": package}, STARTUP_BUDGET + budget, None, None)
                 self.imported.add(package)
@@ -415,14 +458,15 @@ class Sandbox:
         try:
             return self._exchange(message, budget, objects, encode_objects)
         except wire.Timeout:
-            self.failed[key] = f"{said()} did not return within {budget:g} s (a loop that never ends?)"
+            self.failed[key] = f"{said()} did not return within {budget:g} s ({hang})"
         except (EOFError, wire.WireError, OSError) as exc:
             try:
                 status = self.proc.wait(timeout=2) if self.proc else None
             except subprocess.TimeoutExpired:
                 status = None
-            self.failed[key] = (f"{said()} ended its process (exit status {status}){self._last_words()}" if isinstance(
-                exc, (EOFError, OSError)) else f"{said()} sent a reply that cannot be read ({exc})")
+            ended = f"{said()} ended its process (exit status {status}){crash}{self._last_words()}"
+            self.failed[key] = ended if isinstance(exc, (EOFError, OSError)) else (
+                f"{said()} sent a reply that cannot be read ({exc})")
         except BaseException:  # the test's own time limit (or ^C) while waiting: the process is mid-call, end it
             self.failed[key] = f"{said()} was stopped by the test's time limit"
             self.stop()
@@ -445,9 +489,14 @@ class Sandbox:
 
         def number(fn: Callable[..., Any]) -> int | dict[str, Any]:
             if id(fn) not in self._recipes or self._recipes[id(fn)][0] is not fn:
-                self._recipes[id(fn)] = (fn, recipe(fn))  # the function is kept: its id stays its own
+                made = recipe(fn)
+                # the function is kept (its id stays its own); its recipe is numbered, sent whole once per process
+                self._recipes[id(fn)] = (fn, made and {**made, "id": next(_recipe_numbers)})
             rebuilt = self._recipes[id(fn)][1]
             if rebuilt is not None:
+                if rebuilt["id"] in self._sent:  # the process has it already: its number alone
+                    return {"id": rebuilt["id"]}
+                self._sent.add(rebuilt["id"])
                 return rebuilt
             callables.append(fn)
             return len(callables) - 1

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import builtins
 import importlib
+import importlib.util
 import marshal
 import os
 import sys
@@ -53,13 +54,16 @@ class Channel:
 
 
 _channel: Channel
+_functions: dict[int, Any] = {}  # the course's functions rebuilt from recipes, by number
 
 
 def _callback(index: Any) -> Any:
     """The grader's callable ``index`` (an argument such as an acceleration function): each call asks the grader;
     or a recipe: a function of the course's own code rebuilt here (see ``sandbox.recipe``)."""
-    if isinstance(index, dict):
-        return _rebuild_function(index)
+    if isinstance(index, dict):  # a recipe: whole the first time, then by its number
+        if "code" in index:
+            _functions[int(index["id"])] = _rebuild_function(index)
+        return _functions[int(index["id"])]
 
     def call(*args: Any) -> Any:
         _channel.send({"callback": index, "args": list(args)})
@@ -134,8 +138,46 @@ class _Assets:
         return self._add("material", self.materials, name, data)
 
 
+def _no_student_python() -> None:
+    """Put a stand-in of each graded folder in ``sys.modules`` as ``<step>.exercises``: its ``__file__`` (the shader
+    files beside it are read) and no submodules, so that no import in this process runs the student's Python."""
+    for step in sorted(os.listdir(PKGS)):
+        name, init = f"{step}.exercises", os.path.join(PKGS, step, "exercises", "__init__.py")
+        if name not in sys.modules and os.path.isfile(init):
+            stand_in = types.ModuleType(name, "the student's folder: its shader files, never its Python")
+            stand_in.__file__, stand_in.__path__ = init, []
+            sys.modules[name] = stand_in
+
+
+def _folders(value: Any) -> Any:
+    """``value`` with each ``{"gandalf_impl": step}`` made the stand-in of the step's graded folder (its ``__file__``
+    only: shader files are read from it, its Python is never imported here) and ``{"gandalf_path": p}`` a Path."""
+    if isinstance(value, dict) and len(value) == 1 and "gandalf_impl" in value:
+        return sys.modules.get(f"{value['gandalf_impl']}.exercises")
+    if isinstance(value, dict) and len(value) == 1 and "gandalf_files" in value:  # shader files sent by value
+        import tempfile
+
+        folder = tempfile.mkdtemp(prefix="shaders-")
+        for name, text in dict(value["gandalf_files"]).items():
+            if os.path.basename(str(name)) == name and name.endswith((".glsl", ".wgsl")):
+                with open(os.path.join(folder, name), "w") as f:
+                    f.write(str(text))
+        return types.SimpleNamespace(__name__="shaders", __file__=os.path.join(folder, "__init__.py"))
+    if isinstance(value, dict) and len(value) == 1 and "gandalf_path" in value:
+        import pathlib
+
+        step, path = value["gandalf_path"]
+        return pathlib.Path(PKGS, str(step), "exercises", str(path)) if step is not None else pathlib.Path(str(path))
+    if isinstance(value, (list, tuple)):
+        return type(value)(_folders(v) for v in value)
+    if isinstance(value, dict):
+        return {k: _folders(v) for k, v in value.items()}
+    return value
+
+
 class Server:
     def __init__(self) -> None:
+        self.helpers: dict[str, types.ModuleType] = {}
         self.packages: dict[str, types.ModuleType] = {}
         self.instances: dict[int, Any] = {}
         self.mirrors: dict[int, dict[uuid.UUID, tuple[Any, ...]]] = {}
@@ -225,9 +267,30 @@ class Server:
             mirror.pop(uuid.UUID(args[0]), None)
         return {"members": [[str(k), list(v)] for k, v in live.items()], "assets": assets.added, "result": result}
 
+    def op_helper(self, package: None, file: str, function: str, args: list[Any], kwargs: dict[str, Any]) -> Any:
+        """A function of the course's tests (its module read from ``file``) that renders with the student's shaders,
+        called with ``{"gandalf_impl": step}`` standing for the step's graded folder (its files, never imported)."""
+        _no_student_python()
+        module = self.helpers.get(file)
+        if module is None:
+            for folder in (os.path.dirname(os.path.dirname(file)), os.path.dirname(file)):  # tests/, its step's folder
+                if folder not in sys.path:
+                    sys.path.insert(0, folder)
+            name = os.path.splitext(os.path.basename(file))[0]
+            spec = importlib.util.spec_from_file_location(name, file)
+            module = importlib.util.module_from_spec(spec)
+            sys.modules[name] = module
+            spec.loader.exec_module(module)
+            self.helpers[file] = module
+        fn = module
+        for part in function.split("."):
+            fn = getattr(fn, part)
+        fn = getattr(fn, "__wrapped__", fn)  # the function itself, not the grader's router around it
+        return fn(*[_folders(a) for a in args], **{k: _folders(v) for k, v in kwargs.items()})
+
     def handle(self, request: dict[str, Any]) -> Any:
         op = request.pop("op")
-        if op != "import" and request.get("package") not in self.packages:
+        if op not in ("import", "helper") and request.get("package") not in self.packages:
             self.op_import(request["package"])
         return getattr(self, f"op_{op}")(**request)
 
@@ -238,6 +301,7 @@ def _overrides(cls: type, hook: str) -> bool:
 
 
 ROOT = os.path.dirname(os.path.abspath(__file__))
+PKGS = os.path.join(ROOT, "pkgs")
 
 
 def main() -> None:

@@ -4,8 +4,9 @@ Never pickle. A message is one frame: an 8-byte length, a 4-byte count of binary
 blob (8-byte length + bytes). In the JSON, values that JSON lacks are tagged objects:
 
 * ``{"$t": [...]}`` a tuple, ``{"$d": [[key, value], ...]}`` a dict (any plain keys), ``{"$set": [...]}`` a set;
-* ``{"$nd": i}`` the i-th blob, an ``.npy`` array read with ``allow_pickle=False`` (no object arrays), or
-  ``{"$a": [numbers], "s": shape}`` a small finite float64 array inline;
+* ``{"$r": i, "d": dtype, "s": shape}`` the i-th blob, an array's raw bytes (``dtype`` a plain number type such as
+  ``"<f8"``: no object, structured or sub-array types), or ``{"$a": [numbers], "s": shape}`` a small finite float64
+  array inline;
 * ``{"$cb": n}`` a function of the other side, called back through the channel, or ``{"$cb": recipe}`` one the
   reader rebuilds from the course's own code (:func:`gandalf_tools.grading.sandbox.recipe`);
 * ``{"$b": i}`` the i-th blob as ``bytes``;
@@ -20,7 +21,6 @@ copied into the sandbox (it imports nothing of the project).
 
 from __future__ import annotations
 
-import io
 import json
 import math
 import os
@@ -77,10 +77,8 @@ def encode_value(value: Any, blobs: list[bytes], objects: Callable[[Any], Any] |
             raise WireError(f"an array of dtype {value.dtype} (only numbers travel)")
         if value.size <= 64 and value.dtype == np.float64 and np.isfinite(value).all():
             return {"$a": value.ravel().tolist(), "s": list(value.shape)}
-        buffer = io.BytesIO()
-        np.save(buffer, np.ascontiguousarray(value), allow_pickle=False)
-        blobs.append(buffer.getvalue())
-        return {"$nd": len(blobs) - 1}
+        blobs.append(np.ascontiguousarray(value).tobytes())
+        return {"$r": len(blobs) - 1, "d": value.dtype.str, "s": list(value.shape)}
     if isinstance(value, tuple):
         return {"$t": [encode_value(v, blobs, objects, depth + 1, callbacks) for v in value]}
     if isinstance(value, list):
@@ -108,7 +106,7 @@ def decode_value(data: Any, blobs: list[bytes], objects: Callable[[str, dict[str
         return data
     if isinstance(data, list):
         return [decode_value(v, blobs, objects, callbacks) for v in data]
-    if not isinstance(data, dict) or len(data) not in (1, 2):
+    if not isinstance(data, dict) or len(data) not in (1, 2, 3):
         raise WireError(f"malformed value {str(data)[:80]}")
     if "$t" in data:
         return tuple(decode_value(v, blobs, objects, callbacks) for v in data["$t"])
@@ -123,11 +121,8 @@ def decode_value(data: Any, blobs: list[bytes], objects: Callable[[str, dict[str
         return bytes(blobs[int(data["$b"])])
     if "$a" in data:
         return np.array([float(x) for x in data["$a"]], dtype=np.float64).reshape([int(n) for n in data["s"]])
-    if "$nd" in data:
-        array = np.load(io.BytesIO(blobs[int(data["$nd"])]), allow_pickle=False)
-        if not isinstance(array, np.ndarray) or array.dtype.kind not in "biuf":
-            raise WireError("an array that is not numbers")
-        return array
+    if "$r" in data:
+        return _raw_array(blobs[int(data["$r"])], data.get("d"), data.get("s"))
     if "$cb" in data and callbacks is not None:
         ref = data["$cb"]
         return callbacks(ref if isinstance(ref, int) else decode_value(ref, blobs))
@@ -135,6 +130,20 @@ def decode_value(data: Any, blobs: list[bytes], objects: Callable[[str, dict[str
         fields = {str(k): decode_value(v, blobs, objects, callbacks) for k, v in dict(data.get("f", {})).items()}
         return objects(str(data["$o"]), fields)
     raise WireError(f"malformed value {str(data)[:80]}")
+
+
+def _raw_array(blob: bytes, dtype: Any, shape: Any) -> np.ndarray:
+    """The array ``{"$r": ...}`` names: a plain number type only, its bytes exactly the shape's (a copy: writable)."""
+    try:
+        kind = np.dtype(str(dtype))
+        dims = [int(n) for n in shape]
+    except (TypeError, ValueError) as exc:
+        raise WireError(f"an array of type {str(dtype)[:40]!r} ({exc})") from None
+    if kind.kind not in "biuf" or kind.fields is not None or kind.subdtype is not None or min(dims, default=0) < 0:
+        raise WireError(f"an array of type {kind} (only numbers travel)")
+    if math.prod(dims) * kind.itemsize != len(blob):
+        raise WireError(f"an array of shape {dims} and type {kind} in {len(blob)} bytes")
+    return np.frombuffer(blob, dtype=kind).reshape(dims).copy()
 
 
 def pack(message: Any, objects: Callable[[Any], Any] | None = None,

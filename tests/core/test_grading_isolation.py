@@ -20,6 +20,8 @@ from pathlib import Path
 
 import pytest
 
+from gandalf_tools.grading import sandbox
+
 ROOT = Path(__file__).resolve().parents[2]
 
 EXERCISES = """
@@ -227,3 +229,49 @@ def test_a_timeout_inside_a_rendering_frame_leaves_the_gpu_usable(tmp_path):
     assert not first["passed"] and "Timeout" in first["message"], first
     others = {name: t for name, t in tests.items() if name != "test_clear_colour_follows_the_hue_in_pixels[opengl-1]"}
     assert len(others) == 3 and all(t["passed"] for t in others.values()), others
+
+
+def test_a_grade_made_without_namespaces_says_so_loudly(tmp_path, monkeypatch):
+    # Where the machine allows no namespaces the student's process could forge the grade: the grade files, Gradescope's
+    # results (its output and extra_data) and the console say so; where it allows them, none of them warns.
+    monkeypatch.setenv(sandbox.ISOLATION_ENV, "process")
+    gradescope = tmp_path / "results" / "results.json"
+    proc, result = _grade(tmp_path, "--jobs", "0", "-k", "add", "--gradescope", str(gradescope))
+    assert result["isolation"] == "process" and result["isolation_warning"].startswith("WARNING: NOT ISOLATED")
+    assert f"${sandbox.ISOLATION_ENV}=process asked for it" in result["isolation_warning"]
+    assert proc.stdout.count("WARNING: NOT ISOLATED") == 2, proc.stdout[-3000:]  # before the table and after it
+    gs = json.loads(gradescope.read_text())
+    assert gs["output"].startswith("WARNING: NOT ISOLATED") and gs["extra_data"]["isolation"] == "process"
+    assert result["earned"] == pytest.approx(1.0)  # the grade itself is made the same way
+
+    monkeypatch.delenv(sandbox.ISOLATION_ENV)
+    if sandbox.isolation() == "process":
+        return  # this machine has no namespaces: nothing to compare with
+    proc, result = _grade(tmp_path, "--jobs", "0", "-k", "add", "--gradescope", str(gradescope))
+    assert result["isolation"] != "process" and "isolation_warning" not in result
+    assert "NOT ISOLATED" not in proc.stdout and "NOT ISOLATED" not in gradescope.read_text()
+
+
+def test_the_gradebook_flags_each_grade_made_without_namespaces(tmp_path, monkeypatch):
+    import csv
+
+    from gandalf_tools.grading import batch
+
+    monkeypatch.setenv(sandbox.ISOLATION_ENV, "process")
+    warning = sandbox.isolation_warning("process")
+    exercise = {"step": "step01_window", "exercise": "hsv_to_rgb", "earned": 1.0, "possible": 1.0, "passed": 3,
+                "tests": 3}
+    flagged = batch.Graded("alice", ["step01_window"], result={
+        "earned": 1.0, "possible": 1.0, "score": 1.0, "exercises": [exercise], "tests": [], "isolation": "process",
+        "isolation_warning": warning})
+    kept = batch.Graded("bob", ["step01_window"], result={
+        "earned": 1.0, "possible": 1.0, "score": 1.0, "exercises": [exercise], "tests": [], "isolation": "user+mount"})
+    csv_path, json_path = batch.write_gradebook([flagged, kept], tmp_path)
+    rows = {row["student"]: row for row in csv.DictReader(csv_path.open())}
+    assert rows["alice"]["isolation"] == "process" and rows["bob"]["isolation"] == "user+mount"
+    book = {entry["student"]: entry for entry in json.loads(json_path.read_text())}
+    assert book["alice"]["isolation_warning"] == warning and "isolation_warning" not in book["bob"]
+    batch.write_report(flagged, tmp_path / "alice.md")
+    batch.write_report(kept, tmp_path / "bob.md")
+    assert f"**Not isolated:** {warning}" in (tmp_path / "alice.md").read_text()
+    assert "Not isolated" not in (tmp_path / "bob.md").read_text()

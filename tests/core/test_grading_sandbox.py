@@ -158,6 +158,20 @@ def test_wire_round_trip_gives_plain_values_and_never_pickles():
     assert all(b"pickle" not in b for b in blobs)
 
 
+def test_arrays_travel_as_raw_numbers_of_a_plain_type_only():
+    blobs: list[bytes] = []
+    arrays = [np.arange(200.0).reshape(10, 20), np.array([np.nan, np.inf, -1.0]), np.arange(5, dtype=np.uint8),
+              np.array([True, False]), np.float32(2.5) * np.ones((2, 3, 4), np.float32), np.array(3.0)]
+    back = wire.decode_value(wire.encode_value(arrays, blobs), blobs)
+    for a, b in zip(arrays, back):
+        assert a.dtype == b.dtype and a.shape == b.shape and np.array_equal(a, b, equal_nan=True) and b.flags.writeable
+    raw = blobs[0]
+    for dtype, shape, blob in (("|O", [1], b"\0" * 8), ("[('a', '<f8')]", [1], b"\0" * 8), ("<f8", [3], raw[:16]),
+                               ("<f8", [-1], b""), ("(2,)<f8", [1], b"\0" * 16)):
+        with pytest.raises(wire.WireError):
+            wire.decode_value({"$r": 0, "d": dtype, "s": shape}, [blob])
+
+
 def test_results_come_back_as_plain_data(student):
     sneaky, f32, i, nested, mapping, nan, raw = student.values()
     assert type(sneaky) is float and sneaky == 0.25 and sneaky != 0.3  # the float subclass's __eq__ is gone
@@ -241,15 +255,27 @@ def test_an_installed_course_beside_the_packages_shows_no_solutions(tmp_path, mo
         importlib.import_module("step01_window").exercises = importlib.import_module("step01_window.exercises")
 
 
+def _course_function(scale: float):
+    """A function that :func:`sandbox.recipe` ships (as if of the engine's own code: plain captured values)."""
+    def times(x):
+        return scale * x + 1.0
+
+    times.__module__ = "gandalf_core.fake"
+    return times
+
+
 def test_a_hung_function_fails_at_once_later_and_the_others_go_on(student):
     with pytest.raises(ExerciseTimeout, match=r"^spin\(1\) did not return within 2 s"):
         student.spin(1)
     with pytest.raises(ExerciseTimeout, match=r"^spin\(1\) did not return"):
         student.spin(2)  # remembered: no second wait
     assert student.twice(4) == 8  # a fresh process
+    shipped = _course_function(3.0)  # the course's own function: sent whole once per process, then by its number
+    assert student.apply(shipped, 1.0) == student.apply(shipped, 2.0) - 3.0 == 5.0
     with pytest.raises(ExerciseTimeout, match=r"crash\(\) ended its process \(exit status 3\)"):
         student.crash()
     assert student.twice(5) == 10
+    assert student.apply(shipped, 1.0) == 5.0  # the fresh process is sent it whole again
 
 
 def test_a_system_changes_only_fields_of_the_right_kind(student):

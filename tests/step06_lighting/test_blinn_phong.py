@@ -12,6 +12,7 @@ from light_reference import assert_near_reference
 from step06_helpers import ambient, directional, inner, point, reference_sphere, render, sphere_scene
 
 from gandalf_core.resources import MaterialData
+from gandalf_tools.grading.shader_box import on_shader_box
 
 
 def _lights():
@@ -22,9 +23,14 @@ def _lights():
     ]
 
 
+@on_shader_box  # the student's shaders run in the grader's shader process; the picture comes back
+def _sphere_picture(backend, impl, material, lights):
+    return render(backend, impl, sphere_scene(material, lights))
+
+
 def _check(backend, impl, material, lights):
     expected, hit = reference_sphere(material, lights)
-    image = render(backend, impl, sphere_scene(material, lights))
+    image = _sphere_picture(backend, impl, material, lights)
     params = ", ".join(f"{k} {v:g}" for k, v in material.params.items())
     assert_near_reference(image, expected, inner(hit),
                           f"a sphere in {backend} (colour {tuple(material.color)[:3]}, {params}, {len(lights)} lights)")

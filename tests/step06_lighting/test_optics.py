@@ -14,6 +14,7 @@ from light_reference import assert_near_reference
 from step06_helpers import EYE, SIZE, inner, render, sphere_hits, sphere_scene, to_srgb8
 
 from gandalf_core.resources import CubeTextureData, MaterialData, cube_face_directions, linear_to_srgb, srgb_to_linear
+from gandalf_tools.grading.shader_box import on_shader_box
 
 
 def _unit(v):
@@ -108,13 +109,17 @@ def _expected(kind: str, tint, ior: float) -> tuple[np.ndarray, np.ndarray]:
     return to_srgb8((1 - fresnel) * tint * _env(t) + fresnel * _env(r)), hit
 
 
+@on_shader_box  # the student's shaders run in the grader's shader process; the picture comes back
+def _environment_picture(backend: str, impl, material: MaterialData) -> np.ndarray:
+    return render(backend, impl, sphere_scene(material, [], textures={"directions": _direction_cube()}))
+
+
 @pytest.mark.exercise("reflect_refract")
 @pytest.mark.parametrize("kind,tint,ior", [("mirror", (0.95, 0.93, 0.9), 1.0), ("glass", (0.85, 0.95, 1.0), 1.31),
                                           ("glass", (1.0, 1.0, 1.0), 2.4)])
 def test_environment_mapped_sphere_matches_the_numpy_reference(impl, backend, kind, tint, ior):
     params = {"ior": ior} if kind == "glass" else {}
     material = MaterialData(kind, ["directions"], color=tint, params=params)
-    scene = sphere_scene(material, [], textures={"directions": _direction_cube()})
-    image = render(backend, impl, scene)
+    image = _environment_picture(backend, impl, material)
     expected, hit = _expected(kind, tint, ior)
     assert_near_reference(image, expected, inner(hit), f"a {kind} sphere in {backend} (tint {tint}, ior {ior})")

@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 from gandalf_core import Application
+from gandalf_tools.grading.shader_box import on_shader_box
 from step07_advanced.showcase.particles import (
     SimParams,
     hash_u32,
@@ -35,6 +36,7 @@ def _kernel(backend: str, app: Application, impl, state: np.ndarray):
     return WGPUParticleKernel(app.renderer.device, impl, state)
 
 
+@on_shader_box  # the student's shaders run in the grader's shader process
 def _simulate(backend: str, impl, state: np.ndarray, params: SimParams, steps: int) -> np.ndarray:
     with Application(backend, 8, 8, headless=True) as app:
         kernel = _kernel(backend, app, impl, state)

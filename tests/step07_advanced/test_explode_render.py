@@ -21,6 +21,7 @@ from gandalf_core import Application, Scene, TransformComponent
 from gandalf_core.components import InfoComponent, MaterialComponent, MeshComponent
 from gandalf_core.render.render_system import RenderSystem
 from gandalf_core.resources import MaterialData, MeshData, ResourceError
+from gandalf_tools.grading.shader_box import on_shader_box
 from gandalf_tools.testing import compare_images, psnr
 from step07_advanced.explode import scene as explode
 from step07_advanced.explode.scene import (
@@ -48,6 +49,7 @@ def _app(backend: str, impl, size=SIZE) -> Application:
     return app
 
 
+@on_shader_box  # the student's shaders run in the grader's shader process
 def render_bunny(backend: str, impl, t: float | None, size=SIZE) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(picture, world matrix, view-projection) of the bunny exploded to time ``t`` (None: the plain shader)."""
     with _app(backend, impl, size) as app:

@@ -18,6 +18,7 @@ from step07_helpers import inner, render, sample_bilinear, to_srgb8
 from gandalf_core import Scene, TransformComponent
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.resources import MaterialData, MeshData, TextureData
+from gandalf_tools.grading.shader_box import on_shader_box
 from step07_advanced.showcase.textures import encode_normals, normal_map_from_height
 
 SIZE = (96, 72)
@@ -83,13 +84,18 @@ def reference_quad(mesh: MeshData, texture: TextureData, angle: float) -> tuple[
 CASES = [(False, 0.0), (False, 25.0), (True, -35.0)]
 
 
+@on_shader_box  # the student's shaders run in the grader's shader process; the picture comes back
+def _quad_picture(backend: str, impl, mesh: MeshData, texture: TextureData, angle: float) -> np.ndarray:
+    return render(backend, impl, quad_scene(mesh, texture, angle), size=SIZE)
+
+
 @pytest.mark.exercise("normal_map")
 @pytest.mark.parametrize(("mirrored", "angle"), CASES)
 def test_normal_mapped_quad_matches_the_numpy_reference(impl, backend, mirrored, angle):
     mesh, texture = quad(mirrored), bump_map()
     assert (mesh.tangents[:, 3] < 0).all() == mirrored
     expected, covered = reference_quad(mesh, texture, angle)
-    image = render(backend, impl, quad_scene(mesh, texture, angle), size=SIZE)
+    image = _quad_picture(backend, impl, mesh, texture, angle)
     mean, p99 = pixel_errors(image, expected, inner(covered))
     case = f"a bump-mapped quad in {backend} ({'mirrored' if mirrored else 'unmirrored'} UVs, turned {angle:g}°)"
     assert mean <= 1.0 and p99 <= 3.0, difference_sentence(image, expected, inner(covered), mean, p99, 1.0, 3.0, case)
@@ -98,7 +104,7 @@ def test_normal_mapped_quad_matches_the_numpy_reference(impl, backend, mirrored,
 @pytest.mark.exercise("normal_map")
 def test_flat_normal_map_gives_the_surface_normal(impl, backend):
     flat = encode_normals(np.tile([0.0, 0.0, 1.0], (4, 4, 1)), "flat")
-    image = render(backend, impl, quad_scene(quad(False), flat, 30.0), size=SIZE)
+    image = _quad_picture(backend, impl, quad(False), flat, 30.0)
     _, covered = reference_quad(quad(False), flat, 30.0)
     # (128, 128, 255) decodes to (0.004, 0.004, 1): colour (0.5, 0.5, 1) -> sRGB (188, 188, 255) within 1 step.
     mask = inner(covered)

@@ -21,6 +21,7 @@ from step07_helpers import check_tour_pictures_agree
 
 from gandalf_core import Application
 from gandalf_core.resources import ResourceError
+from gandalf_tools.grading.shader_box import on_shader_box
 from step07_advanced.parallax import scene as parallax
 from step07_advanced.parallax.reference import MAX_LAYERS
 
@@ -28,6 +29,7 @@ SIZE = (128, 96)
 MIN_MOVE = 4.0
 
 
+@on_shader_box  # the student's shaders run in the grader's shader process
 def render(backend: str, impl, configs: list[tuple], size=SIZE) -> list[np.ndarray]:
     """The study's view with every strip read by one method, per ``(method, layers, height_scale)`` config, as
     float64 RGB pictures (one app, one scene per config)."""

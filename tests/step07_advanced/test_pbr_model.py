@@ -37,6 +37,7 @@ from gandalf_core.resources import (
 )
 from gandalf_core.resources.gltf import DEFAULT_TEXTURES
 from gandalf_tools import testing
+from gandalf_tools.grading.shader_box import on_shader_box
 from step07_advanced.pbr_model import ibl
 from step07_advanced.pbr_model.scene import IBL_TEXTURES, check_pbr_material
 
@@ -127,15 +128,20 @@ def reference_ibl_sphere(color, metallic: float, roughness: float, size=SIZE):
     return to_srgb8(color_linear), hit
 
 
+@on_shader_box  # the student's shaders run in the grader's shader process; the picture comes back
+def _ibl_picture(backend: str, impl, color, metallic: float, roughness: float) -> np.ndarray:
+    scene = sphere_scene(color, metallic, roughness, solid_cube(IRRADIANCE8, mipmaps=False),
+                         solid_cube(PREFILTERED8, 8, levels=[np.full((6, s, s, 4), (*PREFILTERED8, 255), np.uint8)
+                                                             for s in (4, 2, 1)]), 4)
+    return render(backend, impl, scene)
+
+
 @pytest.mark.exercise("metallic_roughness")
 @pytest.mark.parametrize(("metallic", "roughness"), [(0.0, 0.5), (1.0, 0.3), (0.0, 1.0), (1.0, 0.0), (0.5, 0.8)])
 def test_image_based_light_matches_the_split_sum(impl, backend, metallic, roughness):
     color = (0.9, 0.6, 0.35)
-    scene = sphere_scene(color, metallic, roughness, solid_cube(IRRADIANCE8, mipmaps=False),
-                         solid_cube(PREFILTERED8, 8, levels=[np.full((6, s, s, 4), (*PREFILTERED8, 255), np.uint8)
-                                                             for s in (4, 2, 1)]), 4)
     # The model's shader also includes normal_map.*, another exercise: the reference's, so this one is graded alone.
-    image = render(backend, with_reference_files(impl, ("normal_map",)), scene)
+    image = _ibl_picture(backend, with_reference_files(impl, ("normal_map",)), color, metallic, roughness)
     expected, hit = reference_ibl_sphere(color, metallic, roughness)
     mean, p99 = pixel_errors(image, expected, inner(hit))
     assert mean <= 1.0 and p99 <= 3.0, (

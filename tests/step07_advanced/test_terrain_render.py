@@ -21,6 +21,7 @@ from gandalf_core import Scene, TransformComponent
 from gandalf_core.app.cli import load_impl
 from gandalf_core.components import CameraComponent, MaterialComponent, MeshComponent
 from gandalf_core.resources import ResourceError, cube
+from gandalf_tools.grading.shader_box import on_shader_box
 from gandalf_tools.testing import psnr
 from step07_advanced.terrain import opengl, patches, scene, webgpu
 from step07_advanced.terrain.heightfield import check_heights, encode_heights, fractal_heights, quantize
@@ -31,6 +32,7 @@ NEAR_EYE, NEAR_TARGET = (0.0, 2.6, 6.0), (0.0, 0.8, -2.0)
 FAR_EYE, FAR_TARGET = (0.0, 14.0, 30.0), (0.0, 0.0, 0.0)
 
 
+@on_shader_box  # the student's shaders run in the grader's shader process
 def render(backend: str, impl, size=SMALL, frames: int = 2, **scene_args) -> np.ndarray:
     with VARIANT[backend].create_app(headless=True, impl=impl, width=size[0], height=size[1], **scene_args) as app:
         app.run(frames=frames)
@@ -71,6 +73,7 @@ def _predicted(eye) -> tuple[np.ndarray, np.ndarray]:
     return patches.patch_levels(FLAT, scene.PARAMS, np.asarray(eye, dtype=np.float64))
 
 
+@on_shader_box  # the student's shaders run in the grader's shader process
 def gl_triangles(impl, eye, target) -> int:
     """Triangles the OpenGL tessellator generated for one frame (a GL_PRIMITIVES_GENERATED query)."""
     with opengl.create_app(headless=True, impl=impl, width=96, height=72, eye=eye,
@@ -82,6 +85,7 @@ def gl_triangles(impl, eye, target) -> int:
         return int(query.primitives)
 
 
+@on_shader_box  # the student's shaders run in the grader's shader process
 def wgpu_segments(impl, eye, target) -> np.ndarray:
     """Segments per patch side (n) that WebGPU's compute pass chose, read back from its levels buffer."""
     with webgpu.create_app(headless=True, impl=impl, width=96, height=72, eye=eye,
