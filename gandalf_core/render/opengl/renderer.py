@@ -173,7 +173,7 @@ class OpenGLRenderer(Renderer):
         self._lights_ubo.write(data.lights)
         self._lights_ubo.bind_to_uniform_block(1)
         if data.batches:
-            self._upload_instances(data.instances)
+            self._upload_instances(data)
         # Resolve (build on first use) everything before any pass: building a texture uses moderngl's
         # scratch texture unit, which on some drivers is the unit the shadow map is bound to.
         draws = self.resolve_draws(data, assets)
@@ -279,7 +279,16 @@ class OpenGLRenderer(Renderer):
         vao.render(moderngl.TRIANGLES, vertices=3)
         self.stats["draw_calls"] += 1
 
-    def _upload_instances(self, instances: np.ndarray) -> None:
+    def _upload_instances(self, data: FrameData) -> None:
+        instances = data.instances
+        span = self._instance_span(data)
+        if span is not None:  # the buffer holds the previous frame's rows: write the ones that changed
+            lo, hi = span
+            self.stats["instances_uploaded"] = hi - lo
+            if hi > lo:
+                self._instance_buffer.write(instances[lo:hi], offset=lo * INSTANCE_STRIDE)
+            return
+        self.stats["instances_uploaded"] = len(instances)
         capacity = self._instance_capacity(instances.nbytes)
         if capacity is None:
             # Fresh storage for this frame's data, so the driver need not wait for last frame's draws.

@@ -146,7 +146,7 @@ class WebGPURenderer(Renderer):
         queue.write_buffer(self._frame_buffer, 0, data.frame)
         queue.write_buffer(self._lights_buffer, 0, data.lights)
         if data.batches:
-            self._upload_instances(data.instances)
+            self._upload_instances(data)
         # Resolve everything before recording, so a missing resource fails before a pass is open.
         draws = [(batch, material, mesh, self._pipeline(material, mesh, data.reverse_z, batch.mirrored))
                  for batch, material, mesh in self.resolve_draws(data, assets)]
@@ -302,7 +302,16 @@ class WebGPURenderer(Renderer):
                                                                     self._sky_layout())
         return pipeline, material
 
-    def _upload_instances(self, instances: np.ndarray) -> None:
+    def _upload_instances(self, data: FrameData) -> None:
+        instances = data.instances
+        span = self._instance_span(data)
+        if span is not None:  # the buffer holds the previous frame's rows: write the ones that changed
+            lo, hi = span
+            self.stats["instances_uploaded"] = hi - lo
+            if hi > lo:
+                self.device.queue.write_buffer(self._instance_buffer, lo * INSTANCE_STRIDE, instances[lo:hi])
+            return
+        self.stats["instances_uploaded"] = len(instances)
         capacity = self._instance_capacity(instances.nbytes)
         if capacity is not None:
             if self._instance_buffer is not None:
