@@ -32,6 +32,7 @@ from ..systems.transform_system import TransformSystem
 from .base import Renderer
 from .color import srgb_rgba_to_linear
 from .frame import DrawBatch, FrameData, pack_frame, pack_instance_rows, pack_instances
+from .gpu_motion import MotionFrame, epoch_of, motion_rows
 
 DEFAULT_CLEAR = (0.0, 0.0, 0.0, 1.0)
 _FEW_INSTANCES = 8
@@ -65,6 +66,10 @@ class RenderSystem(System):
         self._mirrored_any = False
         self._frame_batches: list[DrawBatch] = []
         self._transform_system = None
+        self._order = 0  # bumped whenever the instance order changes (a new plan, sorting, mirrored splits)
+        self._motion_key: tuple | None = None
+        self._motion_rows: np.ndarray | None = None
+        self._motion_serial = 0
 
     def on_create_system(self) -> None:
         scene = self.scene
@@ -128,10 +133,15 @@ class RenderSystem(System):
         # Consecutive rows (the common case: entities created together) are read as a slice, no gather.
         consecutive = len(rows) > 0 and rows[-1] - rows[0] == len(rows) - 1 and np.all(np.diff(rows) == 1)
         self._rows = slice(int(rows[0]), int(rows[-1]) + 1) if consecutive else rows
-        self._instance_of_row = np.full(self.scene.store(TransformComponent).count, -1, dtype=np.intp)
-        self._instance_of_row[rows] = np.arange(len(rows))
+        self._number_rows(rows)
         self._plan_key = self._current_plan_key()
         self._packed_generation = None
+
+    def _number_rows(self, rows: np.ndarray) -> None:
+        """Remember which instance row each transform row is drawn as (-1: not drawn)."""
+        self._instance_of_row = np.full(self.scene.store(TransformComponent).count, -1, dtype=np.intp)
+        self._instance_of_row[rows] = np.arange(len(rows))
+        self._order += 1
 
     def _material_data(self, name: str) -> MaterialData | None:
         data = self.scene.assets.materials.get(name)
@@ -221,11 +231,15 @@ class RenderSystem(System):
         self._frame_batches = self.batches
         self._instances = pack_instances(world, self._rows, self._instances, origin)
         flipped = self._mirrored(world)
+        reordered = self._mirrored_any or any(b.transparent for b in self.batches)
         self._mirrored_any = bool(flipped.any())
         if self._mirrored_any:  # rare: mirrored instances get batches of their own, and the rows are packed anew
             self._frame_batches = self._split_mirrored(flipped)
             rows = np.concatenate([b.rows for b in self._frame_batches])
             self._instances = pack_instances(world, rows, self._instances, origin)
+            self._number_rows(rows)
+        elif reordered:  # sorted blended batches, or mirrored ones merged back: instance rows moved
+            self._number_rows(np.arange(len(world))[self._rows])
         return None
 
     def _pack_changed(self, world: np.ndarray, rows: np.ndarray | None, origin: np.ndarray) -> tuple[int, int] | None:
@@ -252,6 +266,21 @@ class RenderSystem(System):
             return None
         pack_instance_rows(world, rows, self._instances, at, origin)
         return int(at.min()), int(at.max()) + 1
+
+    def _motion_frame(self, time: float) -> MotionFrame | None:
+        """The compute pass's rows for the systems that move their entities on the GPU (None: no such system).
+        Built again only when those systems, the instance order or the motion epoch change."""
+        systems = [s for s in self.scene.systems if getattr(s, "moves_on_gpu", False) and s.enabled]
+        if not systems:
+            return None
+        epoch = epoch_of(time)
+        key = (self._order, epoch, tuple((id(s), s.motion_version) for s in systems))
+        if key != self._motion_key or self._motion_rows is None or len(self._motion_rows) != len(self._instances):
+            motions = [s.gpu_motion() for s in systems]
+            self._motion_rows = motion_rows(len(self._instances), self._instance_of_row, motions, epoch)
+            self._motion_key = (self._order, epoch, tuple((id(s), s.motion_version) for s in systems))
+            self._motion_serial += 1
+        return MotionFrame(self._motion_rows, (self._token, self._motion_serial), time - epoch)
 
     def _transforms(self) -> TransformSystem | None:
         """The scene's transform system (it says which world matrices it wrote), or None."""
@@ -299,6 +328,7 @@ class RenderSystem(System):
             span = self._pack(scene.store(TransformComponent).columns["world"], view, origin)
             batches = self._frame_batches
         self._frames += 1
+        motion = self._motion_frame(app.clock.time if app is not None else 0.0) if batches else None
         light_systems = [s for s in scene.systems if isinstance(s, LightSystem)]
         # The light system knows the lights, the renderer the depth range their shadow projection needs.
         lights = (light_systems[0].relative(origin) + light_systems[0].shadow(self.renderer.depth_range, origin)
@@ -314,6 +344,7 @@ class RenderSystem(System):
             instance_span=span,
             instances_version=(self._token, self._frames),
             instances_since=(self._token, self._frames - 1),
+            motion=motion,
             skybox=skyboxes[0][0].texture if skyboxes else None,
             reverse_z=reverse_z,
             shadows=shadows,
