@@ -4,7 +4,8 @@ entities into instanced batches, gathers their world matrices, and hands all of 
 Batches are planned again only when components come or go. Instance rows are packed again only for the
 entities whose world matrix the transform system wrote this frame (its ``changed`` rows), and the renderer
 uploads only that span: a frame in which nothing moved uploads nothing. A moving camera moves every row (they are
-camera-relative), as do blended batches (sorted every frame): those frames pack and upload every row. Instances whose world matrix mirrors
+camera-relative), as do blended batches (sorted every frame): those frames pack and upload every row.
+Instances whose world matrix mirrors
 (a negative determinant, e.g. one negative scale) turn their triangles' winding around; they are drawn in a
 batch of their own with clockwise front faces, so culling keeps the faces that point at the camera.
 """
