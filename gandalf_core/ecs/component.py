@@ -334,7 +334,11 @@ class ColumnStore:
         elif isinstance(rows, slice):
             self._touched_runs.append(np.arange(*rows.indices(self.count)))
         else:
-            self._touched_runs.append(np.asarray(rows, dtype=np.intp).reshape(-1))
+            rows = np.asarray(rows, dtype=np.intp).reshape(-1)
+            if len(rows) >= self.count:  # as many as there are rows: "all" costs less to say and to read
+                self._touched_all = True
+            else:
+                self._touched_runs.append(rows)
 
     def take_changes(self) -> np.ndarray | None:
         """The rows that may have changed since the last call (sorted, each once), or None for "any row"; the
