@@ -222,6 +222,22 @@ class Timed:
         self.totals[self.bucket] += time.perf_counter() - t0
 
 
+class TimedCall(Timed):
+    """Accumulates the time of one method of an object (``frame_data``: the render system's Python part)."""
+
+    def __init__(self, owner: Any, method: str, bucket: str, totals: dict[str, float]) -> None:
+        self.inner = getattr(owner, method)
+        self.bucket = bucket
+        self.totals = totals
+        setattr(owner, method, self)
+
+    def __call__(self, *args: Any) -> Any:
+        t0 = time.perf_counter()
+        result = self.inner(*args)
+        self.totals[self.bucket] += time.perf_counter() - t0
+        return result
+
+
 # ------------------------------------------------------------------------------------------------
 # One configuration (child process)
 # ------------------------------------------------------------------------------------------------
@@ -251,10 +267,11 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
         app.step()
         sync()
 
-    totals = {"update": 0.0, "transform": 0.0, "render": 0.0, "sync": 0.0}
+    totals = {"update": 0.0, "transform": 0.0, "render": 0.0, "gather": 0.0, "sync": 0.0}
     for system in scene.systems:
         if isinstance(system, RenderSystem):
             Timed(system, "render", totals)
+            TimedCall(system, "frame_data", "gather", totals)  # the render system's own Python, inside "render"
         elif isinstance(system, TransformSystem):
             Timed(system, "transform", totals)
         else:
@@ -317,7 +334,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
             "p99": round(float(np.percentile(ms, 99)), 3),
         },
         # CPU time per frame in each part: the rotate system, the transform system, the render system
-        # (gather + upload + draw submission) and the read-back wait.
+        # (gather + upload + draw submission; "gather" is its Python part, frame_data) and the read-back wait.
         "cpu_ms": {k: round(v * 1e3 / frames, 3) for k, v in totals.items()},
         "draw_calls": int(app.renderer.stats["draw_calls"]),
         "spawn": cfg.get("spawn", "bulk"),
@@ -413,7 +430,7 @@ def main(argv: list[str] | None = None) -> int:
         # The figures, readable, on stderr (stdout keeps the JSON lines alone).
         print(f"#   {backend:6s} {scene:10s} {record['rotate'] or 'static':6s} {record['fps']:9.1f} fps  frame p50 "
               f"{record['frame_ms']['p50']:.3f} ms  CPU ms: update {cpu['update']:.3f} transform {cpu['transform']:.3f} "
-              f"render {cpu['render']:.3f} sync {cpu['sync']:.3f}", file=sys.stderr, flush=True)
+              f"render {cpu['render']:.3f} (gather {cpu['gather']:.3f}) sync {cpu['sync']:.3f}", file=sys.stderr, flush=True)
     if args.json:
         Path(args.json).parent.mkdir(parents=True, exist_ok=True)
         Path(args.json).write_text(json.dumps(records, indent=1) + "\n")

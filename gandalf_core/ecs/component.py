@@ -331,11 +331,10 @@ class ColumnStore:
             self._touched_all = True
         elif isinstance(rows, (int, np.integer)):
             self.touched.add(int(rows))
-        elif isinstance(rows, slice):
-            self._touched_runs.append(np.arange(*rows.indices(self.count)))
         else:
-            rows = np.asarray(rows, dtype=np.intp).reshape(-1)
-            if len(rows) >= self.count:  # as many as there are rows: "all" costs less to say and to read
+            rows = (np.arange(*rows.indices(self.count)) if isinstance(rows, slice)
+                    else np.asarray(rows, dtype=np.intp).reshape(-1))
+            if 2 * len(rows) > self.count:  # most rows: recomputing them all (whole columns, no gathering) is cheaper
                 self._touched_all = True
             else:
                 self._touched_runs.append(rows)

@@ -212,6 +212,7 @@ class RenderSystem(System):
             first += batch.count
         return batches
 
+    # --8<-- [start:pack]
     def _pack(self, world: np.ndarray, view: np.ndarray, origin: np.ndarray) -> tuple[int, int] | None:
         """Bring the packed instance rows up to date with the world matrices; return the span of rows that
         changed, or None when every row was packed anew. Sets the frame's batches (:attr:`_frame_batches`)."""
@@ -224,16 +225,17 @@ class RenderSystem(System):
             if generation == seen:  # the transform system did not run: nothing moved
                 return (0, 0)
             if generation == seen + 1:
-                span = self._pack_changed(world, transforms.changed, origin)
+                span = self._pack_changed(world, transforms.changed, origin, transforms.positive_scales)
                 if span is not None:
                     return span
         self._packed_origin[:] = origin
         self._sort_transparent(world, view)  # may reorder the blended batches: a new self.batches
         self._frame_batches = self.batches
         self._instances = pack_instances(world, self._rows, self._instances, origin)
-        flipped = self._mirrored(world)
+        # With every scale positive no instance can mirror: the per-instance determinants are not needed.
+        flipped = None if transforms is not None and transforms.positive_scales else self._mirrored(world)
         reordered = self._mirrored_any or any(b.transparent for b in self.batches)
-        self._mirrored_any = bool(flipped.any())
+        self._mirrored_any = flipped is not None and bool(flipped.any())
         if self._mirrored_any:  # rare: mirrored instances get batches of their own, and the rows are packed anew
             self._frame_batches = self._split_mirrored(flipped)
             rows = np.concatenate([b.rows for b in self._frame_batches])
@@ -242,8 +244,10 @@ class RenderSystem(System):
         elif reordered:  # sorted blended batches, or mirrored ones merged back: instance rows moved
             self._number_rows(np.arange(len(world))[self._rows])
         return None
+    # --8<-- [end:pack]
 
-    def _pack_changed(self, world: np.ndarray, rows: np.ndarray | None, origin: np.ndarray) -> tuple[int, int] | None:
+    def _pack_changed(self, world: np.ndarray, rows: np.ndarray | None, origin: np.ndarray,
+                      positive_scales: bool = False) -> tuple[int, int] | None:
         """Pack the instance rows of the store ``rows`` written this frame; their span, or None when they must all
         be packed again (every row changed, or one of them turned mirrored)."""
         if rows is None:
@@ -258,7 +262,9 @@ class RenderSystem(System):
         if not len(at):
             return (0, 0)
         m = world[rows, :3, :3]
-        if len(rows) <= _FEW_INSTANCES:  # plain floats: cheaper than numpy calls on a handful of rows
+        if positive_scales:
+            positive = True
+        elif len(rows) <= _FEW_INSTANCES:  # plain floats: cheaper than numpy calls on a handful of rows
             positive = all(a0 * (b1 * c2 - b2 * c1) + a1 * (b2 * c0 - b0 * c2) + a2 * (b0 * c1 - b1 * c0) > 0.0
                            for (a0, a1, a2), (b0, b1, b2), (c0, c1, c2) in m.tolist())
         else:
@@ -268,6 +274,7 @@ class RenderSystem(System):
         pack_instance_rows(world, rows, self._instances, at, origin)
         return int(at.min()), int(at.max()) + 1
 
+    # --8<-- [start:motion_frame]
     def _motion_frame(self, time: float) -> MotionFrame | None:
         """The compute pass's rows for the systems that move their entities on the GPU (None: no such system).
         Built again only when those systems, the instance order or the motion epoch change."""
@@ -282,6 +289,7 @@ class RenderSystem(System):
             self._motion_key = (self._order, epoch, tuple((id(s), s.motion_version) for s in systems))
             self._motion_serial += 1
         return MotionFrame(self._motion_rows, (self._token, self._motion_serial), time - epoch)
+    # --8<-- [end:motion_frame]
 
     def _transforms(self) -> TransformSystem | None:
         """The scene's transform system (it says which world matrices it wrote), or None."""

@@ -66,6 +66,7 @@ class SpinSystem(System):
         """Whether the render system's compute pass moves this system's entities."""
         return self.path == "gpu"
 
+    # --8<-- [start:paths]
     def on_update_system(self, ts: float) -> None:
         if self.path == "entity":
             super().on_update_system(ts)
@@ -77,6 +78,7 @@ class SpinSystem(System):
             self._joined = {e: joined.get(e, now) for e in self.entities}
             self._motion = None
             self._plan_key = self._current_key()
+    # --8<-- [end:paths]
 
     def on_update_entity(self, ts, entity, components) -> None:
         spin, transform = components
@@ -133,6 +135,7 @@ class SpinSystem(System):
             self._motion = self._build_motion()
         return self._motion
 
+    # --8<-- [start:gpu_motion]
     def _build_motion(self) -> GpuMotion:
         scene = self.scene
         store = scene.store(TransformComponent)
@@ -150,3 +153,4 @@ class SpinSystem(System):
             axes[local] = quat_rotate(store.columns["quaternion"][rows[local]], axes[local])
         return GpuMotion(rows=rows, axes=axes, speeds=np.radians([s.speed for s in spins]),
                          joined=np.array([self._joined.get(e, 0.0) for e in self.entities], dtype=np.float64))
+    # --8<-- [end:gpu_motion]

@@ -49,6 +49,9 @@ class TransformSystem(System):
         self.changed: np.ndarray | None = None
         #: Bumped by every update (a reader compares it with the generation it saw last).
         self.generation = 0
+        #: True when every scale written so far is positive: then no world matrix mirrors (det(T R S) = sx sy sz
+        #: for a proper rotation, and a product of positive determinants down a hierarchy). False says "may".
+        self.positive_scales = False
 
     def on_update_system(self, ts: float) -> None:
         scene = self.scene
@@ -73,6 +76,7 @@ class TransformSystem(System):
             self.changed = self._update_rows(store, changes)
             return
         self.changed = None
+        self.positive_scales = bool(store.columns["scale"][:n].min() > 0.0)
         q = _usable_quaternions(store.columns["quaternion"][:n])
         world = store.columns["world"][:n]
         if not self._levels:  # a flat scene: local is world, written in place
@@ -88,12 +92,14 @@ class TransformSystem(System):
         for rows, parent_rows in self._levels:
             world[rows] = world[parent_rows] @ local[rows]
 
+    # --8<-- [start:update_rows]
     def _update_rows(self, store: ColumnStore, rows: np.ndarray) -> np.ndarray:
         """Recompute the world matrices of ``rows`` and of everything below them; return the rows written."""
         if not len(rows):
             return rows
         n = store.count
         columns = store.columns
+        self.positive_scales = self.positive_scales and bool(columns["scale"][rows].min() > 0.0)
         local = self._build(store, _usable_quaternions(columns["quaternion"][rows]), None, rows)
         world = columns["world"]
         if not self._levels:
@@ -115,6 +121,7 @@ class TransformSystem(System):
                 children = child_rows[picked]
                 world[children] = world[parent_rows[picked]] @ self._local[children]
         return written
+    # --8<-- [end:update_rows]
 
     @staticmethod
     def _resolve_by_jumping(world: np.ndarray, n: int, rows: np.ndarray, parents: np.ndarray) -> None:
