@@ -428,9 +428,10 @@ def main(argv: list[str] | None = None) -> int:
         records.append(record)
         cpu = record["cpu_ms"]
         # The figures, readable, on stderr (stdout keeps the JSON lines alone).
-        print(f"#   {backend:6s} {scene:10s} {record['rotate'] or 'static':6s} {record['fps']:9.1f} fps  frame p50 "
-              f"{record['frame_ms']['p50']:.3f} ms  CPU ms: update {cpu['update']:.3f} transform {cpu['transform']:.3f} "
-              f"render {cpu['render']:.3f} (gather {cpu['gather']:.3f}) sync {cpu['sync']:.3f}", file=sys.stderr, flush=True)
+        print(f"#   {backend:6s} {scene:10s} {record['rotate'] or 'static':6s} {record['fps']:9.1f} fps  "
+              f"frame p50 {record['frame_ms']['p50']:.3f} ms  CPU ms: update {cpu['update']:.3f} "
+              f"transform {cpu['transform']:.3f} render {cpu['render']:.3f} (gather {cpu['gather']:.3f}) "
+              f"sync {cpu['sync']:.3f}", file=sys.stderr, flush=True)
     if args.json:
         Path(args.json).parent.mkdir(parents=True, exist_ok=True)
         Path(args.json).write_text(json.dumps(records, indent=1) + "\n")
