@@ -50,8 +50,10 @@ def grid(count: int) -> np.ndarray:
                     1) * SPACING
 
 
-def build_scene(impl: ModuleType | None = None, *, path: str = "gpu", count: int = COUNT) -> Scene:
-    """``count`` spinning cubes whose spin runs on ``path``; the camera sees them all."""
+def build_scene(impl: ModuleType | None = None, *, path: str = "gpu", count: int = COUNT, local: bool = False
+                ) -> Scene:
+    """``count`` spinning cubes whose spin runs on ``path``; the camera sees them all. ``local``: each cube spins
+    about its own (tilted) axis instead of the world's."""
     del impl  # no exercise: the scene is the same for the exercises and the solutions
     scene = Scene("step07_gpu_motion")
     scene.assets.mesh("cube", primitives.cube())
@@ -68,11 +70,13 @@ def build_scene(impl: ModuleType | None = None, *, path: str = "gpu", count: int
                         CameraComponent(50.0, 0.1, 10.0 * side * SPACING + 50.0))
     axes, speeds = spins(count)
     start = np.radians(37.0 * np.arange(count))
-    quaternions = np.stack([np.cos(start / 2), np.zeros(count), np.sin(start / 2), np.zeros(count)], 1)
+    # A start pose turned about a tilted axis, so that a local spin axis differs from the world's.
+    tilt = np.array([0.3, 1.0, 0.2]) / np.linalg.norm([0.3, 1.0, 0.2])
+    quaternions = np.concatenate([np.cos(start / 2)[:, None], np.sin(start / 2)[:, None] * tilt], 1)
     scene.create_entities(count, TransformComponent.batch(translations=grid(count), quaternions=quaternions,
                                                           scales=0.8),
                           MeshComponent("cube"), MaterialComponent("cube"),
-                          [SpinComponent(axis, speed) for axis, speed in zip(axes, speeds)])
+                          [SpinComponent(axis, speed, local=local) for axis, speed in zip(axes, speeds)])
     scene.add_system(SpinSystem(path=path))
     return scene
 

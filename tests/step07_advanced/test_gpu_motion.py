@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 from gandalf_core import Application, TransformComponent
+from gandalf_core.components import MaterialComponent, MeshComponent
 from gandalf_core.ecs import LinkComponent
 from gandalf_core.math import quat_from_axis_angle, quat_mul, trs
 from gandalf_core.render.frame import pack_instances
@@ -30,14 +31,22 @@ COUNT = 64
 MAX_FLIPPED = int(0.002 * W * H)
 
 
-def render(backend: str, path: str, frames: int = FRAMES, start: float = 0.0, count: int = COUNT):
+def render(backend: str, path: str, frames: int = FRAMES, start: float = 0.0, count: int = COUNT,
+           local: bool = False, late: int = 0):
+    """The scene after ``frames`` frames; ``late`` more cubes join (in front) after the first frames."""
     app = Application(backend, W, H, headless=True, fixed_dt=1 / 60)
     try:
         app.clock.time = start
-        app.add_scene(build_scene(path=path, count=count))
+        scene = build_scene(path=path, count=count, local=local)
+        app.add_scene(scene)
         app.step()
         first = app.capture()
-        for _ in range(frames - 1):
+        for frame in range(frames - 1):
+            if late and frame == frames // 2:
+                for k in range(late):
+                    scene.create_entity(TransformComponent((1.2 * k - 1.0, 0.8, 4.0), (10.0 * k, 0, 0), 0.4),
+                                        MeshComponent("cube"), MaterialComponent("cube"),
+                                        SpinComponent((1.0, 0.5 * k, 0.2), 90.0 + 20 * k, local=local))
             app.step()
         return first, app.capture(), dict(app.renderer.stats)
     finally:
@@ -70,6 +79,15 @@ def test_the_motion_epoch_rolls_over_without_a_jump(backend: str) -> None:
     _first, cpu, _ = render(backend, "entity", start=start)
     _first, gpu, _ = render(backend, "gpu", start=start)
     assert_same(gpu, cpu, f"across the epoch at {MOTION_EPOCH} s")
+
+
+@pytest.mark.parametrize("backend", ["opengl", "webgpu"])
+def test_local_spins_and_cubes_that_join_later_match_the_cpu(backend: str) -> None:
+    """A local axis becomes the world axis R0·a once; cubes created mid-run start turning from their own pose."""
+    _first, cpu, _ = render(backend, "entity", count=27, local=True, late=2)
+    _first, gpu, stats = render(backend, "gpu", count=27, local=True, late=2)
+    assert_same(gpu, cpu, "local spins, two cubes joining at frame 20")
+    assert stats["instances_uploaded"] == 0  # after the joining frame, nothing is uploaded again
 
 
 def test_the_kernel_reference_matches_the_quaternion_spin() -> None:
