@@ -127,3 +127,13 @@ def test_the_gpu_path_refuses_an_entity_in_a_hierarchy() -> None:
 def test_a_spin_system_names_a_path_it_does_not_have() -> None:
     with pytest.raises(ValueError, match="path must be one of entity, batch, gpu, got 'cuda'"):
         SpinSystem(path="cuda")
+
+
+def test_a_saved_scene_keeps_the_path_its_spin_system_takes(tmp_path) -> None:
+    from step07_advanced.usd import load_scene, save_scene
+
+    for path in ("gpu", "batch"):
+        saved = save_scene(build_scene(path=path, count=8), tmp_path / f"{path}.usda")
+        loaded = load_scene(saved)
+        (system,) = [s for s in loaded.systems if isinstance(s, SpinSystem)]
+        assert system.path == path
