@@ -67,6 +67,8 @@ class RenderSystem(System):
         self._mirrored_any = False
         self._frame_batches: list[DrawBatch] = []
         self._transform_system = None
+        self._camera_key: tuple | None = None  # what the last camera() was computed from, and its result
+        self._camera_value: tuple[np.ndarray, np.ndarray, np.ndarray, bool] | None = None
         self._order = 0  # bumped whenever the instance order changes (a new plan, sorting, mirrored splits)
         self._motion_key: tuple | None = None
         self._motion_rows: np.ndarray | None = None
@@ -98,19 +100,30 @@ class RenderSystem(System):
     def camera(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool]:
         """(view, projection, eye position, reverse_z) of the primary camera; identity when there is none.
 
-        With no camera, positions are already clip-space coordinates (step 02 starts there).
+        With no camera, positions are already clip-space coordinates (step 02 starts there). The matrices are
+        computed again only when the camera's pose, its fields or the target's aspect change (every frame reads
+        them; they are read-only arrays).
         """
         chosen = self.primary_camera()
         if chosen is None:
             return np.eye(4), np.eye(4), np.zeros(3), False
         entity, camera, transform = chosen
         world = transform.world
+        depth = self.renderer.depth_range_for(camera.reverse_z)
+        key = (world.tobytes(), camera.fov, camera.near, camera.far, camera.projection, camera.height, camera.aspect,
+               camera.reverse_z, depth, self.renderer.aspect)
+        if key == self._camera_key:
+            return self._camera_value
         try:
             view = invert_affine(world)
         except ValueError as exc:
             raise ValueError(f"camera {self.scene.describe(entity)}: its world matrix is singular ({exc})") from None
-        projection = camera.projection_matrix(self.renderer.depth_range_for(camera.reverse_z), self.renderer.aspect)
-        return view, projection, world[:3, 3].copy(), camera.reverse_z
+        projection = camera.projection_matrix(depth, self.renderer.aspect)
+        eye = world[:3, 3].copy()
+        for matrix in (view, projection, eye):
+            matrix.flags.writeable = False
+        self._camera_key, self._camera_value = key, (view, projection, eye, camera.reverse_z)
+        return self._camera_value
 
     def plan(self) -> None:
         """Group entities by (material, mesh): opaque batches first, sorted so that batches sharing a
