@@ -137,3 +137,20 @@ def test_a_saved_scene_keeps_the_path_its_spin_system_takes(tmp_path) -> None:
         loaded = load_scene(saved)
         (system,) = [s for s in loaded.systems if isinstance(s, SpinSystem)]
         assert system.path == path
+
+
+def test_more_instances_than_one_dispatch_or_binding_holds_is_an_error_naming_the_limit() -> None:
+    from types import SimpleNamespace
+
+    from gandalf_core.render.webgpu.motion import WGPUMotionPass
+
+    motion = object.__new__(WGPUMotionPass)
+    motion.device = SimpleNamespace(limits={"max-compute-workgroups-per-dimension": 65535,
+                                            "max-storage-buffer-binding-size": 2**31})
+    motion._check_limits(None, 65535 * 64)  # the largest count one dispatch covers
+    with pytest.raises(ValueError, match=r"65537 workgroups of 64, more than this device dispatches at once \(65535\)"):
+        motion._check_limits(None, 65536 * 64 + 1)
+    motion.device.limits["max-storage-buffer-binding-size"] = 134217728  # WebGPU's default: 2,796,202 instances
+    motion._check_limits(None, 134217728 // 48)
+    with pytest.raises(ValueError, match=r"instance rows \(134217776 bytes\) are more than this device binds"):
+        motion._check_limits(None, 134217728 // 48 + 1)

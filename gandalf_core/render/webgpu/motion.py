@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 import wgpu
 
+from ..frame import INSTANCE_STRIDE
 from ..gpu_motion import KERNEL, WORKGROUP, MotionFrame
 from ..shader_files import SNIPPETS_DIR, load_shader
 
@@ -36,10 +37,11 @@ class WGPUMotionPass:
         self.motion: Any = None
         self.moved: Any = None
         self.version: tuple[object, int] | None = None
-        self._group: tuple[Any, Any, Any] | None = None  # (instances, motion, bind group)
+        self._group: tuple[Any, Any, int, Any] | None = None  # (instances, motion, bytes bound, bind group)
 
     def record(self, encoder: Any, instances: Any, count: int, frame: MotionFrame) -> Any:
         """Record the pass that moves ``count`` rows of ``instances``; the buffer the draws read them from."""
+        self._check_limits(instances, count)
         queue = self.device.queue
         rows = frame.rows
         if self.motion is None or self.motion.size < rows.nbytes:
@@ -59,25 +61,40 @@ class WGPUMotionPass:
                                                    usage=wgpu.BufferUsage.STORAGE | wgpu.BufferUsage.VERTEX)
             self.stats["buffers_created"] += 1
             self._group = None
-        if self._group is None or self._group[0] is not instances or self._group[1] is not self.motion:
+        size = count * INSTANCE_STRIDE  # bound as used, not the buffer's whole (power-of-two) capacity
+        if self._group is None or self._group[:3] != (instances, self.motion, size):
             group = self.device.create_bind_group(layout=self.layout, entries=[
                 {"binding": 0, "resource": {"buffer": self.params}},
-                {"binding": 1, "resource": {"buffer": instances}},
-                {"binding": 2, "resource": {"buffer": self.motion}},
-                {"binding": 3, "resource": {"buffer": self.moved}},
+                {"binding": 1, "resource": {"buffer": instances, "offset": 0, "size": size}},
+                {"binding": 2, "resource": {"buffer": self.motion, "offset": 0, "size": rows.nbytes}},
+                {"binding": 3, "resource": {"buffer": self.moved, "offset": 0, "size": size}},
             ])
-            self._group = (instances, self.motion, group)
+            self._group = (instances, self.motion, size, group)
         params = self._params
         params[0] = frame.time
         params.view(np.uint32)[1] = count
         queue.write_buffer(self.params, 0, params)
         compute = encoder.begin_compute_pass()
         compute.set_pipeline(self.pipeline)
-        compute.set_bind_group(0, self._group[2])
+        compute.set_bind_group(0, self._group[3])
         compute.dispatch_workgroups(-(-count // WORKGROUP))
         compute.end()
         self.stats["motion_passes"] += 1
         return self.moved
+
+    def _check_limits(self, instances: Any, count: int) -> None:
+        """The device's limits on one dispatch and one storage binding, as errors that say what to do."""
+        limits = self.device.limits
+        groups = -(-count // WORKGROUP)
+        if groups > limits["max-compute-workgroups-per-dimension"]:
+            raise ValueError(f"GPU-driven motion: {count} instances need {groups} workgroups of {WORKGROUP}, more than "
+                             f"this device dispatches at once ({limits['max-compute-workgroups-per-dimension']}); "
+                             "move fewer entities on the GPU, or split them over several scenes")
+        size = count * INSTANCE_STRIDE
+        if size > limits["max-storage-buffer-binding-size"]:
+            raise ValueError(f"GPU-driven motion: the instance rows ({size} bytes) are more than this device "
+                             f"binds as one storage buffer ({limits['max-storage-buffer-binding-size']} bytes); "
+                             "request a device with a higher max_storage_buffer_binding_size, or move fewer entities")
 
     def release(self) -> None:
         for obj in (self.motion, self.moved, self.params):
