@@ -152,5 +152,5 @@ def test_more_instances_than_one_dispatch_or_binding_holds_is_an_error_naming_th
         motion._check_limits(None, 65536 * 64 + 1)
     motion.device.limits["max-storage-buffer-binding-size"] = 134217728  # WebGPU's default: 2,796,202 instances
     motion._check_limits(None, 134217728 // 48)
-    with pytest.raises(ValueError, match=r"instance rows \(134217776 bytes\) are more than this device binds"):
+    with pytest.raises(ValueError, match=r"instance rows \(134217744 bytes\) are more than this device binds"):
         motion._check_limits(None, 134217728 // 48 + 1)
