@@ -27,6 +27,11 @@ class GLMotionPass:
 
     def run(self, instances: moderngl.Buffer, count: int, frame: MotionFrame) -> moderngl.Buffer:
         """Move ``count`` instance rows of ``instances``; the buffer the draws read them from."""
+        groups = -(-count // WORKGROUP)
+        limit = int(self.ctx.info["GL_MAX_COMPUTE_WORK_GROUP_COUNT"][0])
+        if groups > limit:
+            raise ValueError(f"GPU-driven motion: {count} instances need {groups} workgroups of {WORKGROUP}, more than "
+                             f"this context dispatches at once ({limit}); move fewer entities on the GPU")
         rows = frame.rows
         if self.version != frame.version or self.motion is None or self.motion.size < rows.nbytes:
             if self.motion is None or self.motion.size < rows.nbytes:
@@ -46,7 +51,7 @@ class GLMotionPass:
         self.moved.bind_to_storage_buffer(2)
         self.program["u_time"].value = frame.time
         self.program["u_count"].value = count
-        self.program.run(group_x=-(-count // WORKGROUP))
+        self.program.run(group_x=groups)
         self.ctx.memory_barrier()  # the draws read what the kernel wrote
         self.stats["motion_passes"] += 1
         return self.moved
