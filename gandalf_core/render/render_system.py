@@ -230,6 +230,8 @@ class RenderSystem(System):
         """Bring the packed instance rows up to date with the world matrices; return the span of rows that
         changed, or None when every row was packed anew. Sets the frame's batches (:attr:`_frame_batches`)."""
         transforms = self._transforms()
+        if transforms is not None and not transforms.enabled:  # paused: world matrices may be written by hand
+            transforms = None
         generation = transforms.generation if transforms is not None else None
         seen, self._packed_generation = self._packed_generation, generation
         same_origin = bool(np.array_equal(origin, self._packed_origin))

@@ -160,3 +160,20 @@ def test_a_moving_camera_repacks_every_row(backend: str) -> None:
         assert app.renderer.stats["instances_uploaded"] == 50  # camera-relative rows all moved
     finally:
         app.close()
+
+
+@pytest.mark.parametrize("backend", ["opengl", "webgpu"])
+def test_with_the_transform_system_paused_every_row_is_packed(backend: str) -> None:
+    """Paused, the transform system says nothing about what changed: a world matrix written by hand must still
+    be drawn, so every row is packed and uploaded."""
+    scene, ids = grid_scene(20)
+    app = app_with(backend, scene)
+    try:
+        app.step()
+        next(s for s in scene.systems if isinstance(s, TransformSystem)).enabled = False
+        moved = scene.get_component(ids[3], TransformComponent)
+        moved.world = moved.world @ np.diag([2.0, 2.0, 2.0, 1.0])
+        app.step()
+        assert app.renderer.stats["instances_uploaded"] == 20
+    finally:
+        app.close()
