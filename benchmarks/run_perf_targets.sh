@@ -8,6 +8,7 @@ set -u
 out="${1:-${OUT:-perf-out}}"
 py="${2:-python3}"
 mkdir -p "$out"
+out="$(cd "$out" && pwd)"  # absolute: the runs below start from the repository root
 cd "$(dirname "$0")/.."
 common=(--frames 300 --warmup 30 --max-seconds 3 --size 1280x720)
 {
