@@ -18,6 +18,7 @@ from typing import Any
 #: (what, backend-independent threshold, how it is judged)
 TARGETS = [
     ("1k rotating, CPU path / raw", 0.8), ("10k rotating, CPU path / raw", 0.8),
+    ("1k rotating, CPU angle path / raw", 0.8), ("10k rotating, CPU angle path / raw", 0.8),
     ("1k rotating, GPU path / raw", 1.0), ("10k rotating, GPU path / raw", 1.0),
     ("100k rotating, GPU path fps", 600.0), ("1M rotating, GPU path fps", 60.0),
     ("100k static + 1 moving / one entity (fps)", 0.8),
@@ -60,6 +61,8 @@ def judge(records: list[dict[str, Any]], raw: dict[tuple[str, int], float]) -> l
         values = {
             "1k rotating, CPU path / raw": ratio(fps("cubes1k", "batch"), raw.get((backend, 1000))),
             "10k rotating, CPU path / raw": ratio(fps("cubes10k", "batch"), raw.get((backend, 10000))),
+            "1k rotating, CPU angle path / raw": ratio(fps("cubes1k", "angle"), raw.get((backend, 1000))),
+            "10k rotating, CPU angle path / raw": ratio(fps("cubes10k", "angle"), raw.get((backend, 10000))),
             "1k rotating, GPU path / raw": ratio(fps("cubes1k", "gpu"), raw.get((backend, 1000))),
             "10k rotating, GPU path / raw": ratio(fps("cubes10k", "gpu"), raw.get((backend, 10000))),
             "100k rotating, GPU path fps": fps("cubes100k", "gpu"),
