@@ -13,6 +13,8 @@ scene5     100       yes
 cubes1k    1,000     yes
 cubes10k   10,000    yes
 cubes100k  100,000   yes
+cubes1m    1,000,000 yes
+static100k 100,001   one (100k static models and 1 rotating one)
 =========  ========  ========
 
 Every configuration (backend x scene) runs in a fresh Python process, so its peak RSS
@@ -27,7 +29,9 @@ system comes in two forms (``--rotate``):
 * ``entity``: the teaching form, ``on_update_entity`` called once per entity;
 * ``angle``: each entity's rotation set from an absolute angle (``phase + speed * time``) straight into
   the quaternion column, as ``raw_ceiling.py`` builds its matrices: no quaternion product, so what is
-  left is the engine's own per-frame cost.
+  left is the engine's own per-frame cost;
+* ``gpu``: the engine's ``SpinSystem(path="gpu")``: no per-frame CPU work for the models, the renderer's
+  compute pass turns their instance rows (GPU-driven motion).
 
 Every measured frame ends with a read-back (``--sync``) so the GPU has finished the frame:
 
@@ -65,23 +69,27 @@ SCENES: dict[str, tuple[int, bool]] = {
     "cubes1k": (1_000, True),
     "cubes10k": (10_000, True),
     "cubes100k": (100_000, True),
+    "cubes1m": (1_000_000, True),
+    "static100k": (100_001, "one"),  # 100k static models and one rotating: what did not change must cost nothing
 }
 MODELS = ("cube", "sphere")
-ROTATE_MODES = ("batch", "entity", "angle")
+ROTATE_MODES = ("batch", "entity", "angle", "gpu")
 SYNC_MODES = ("pixel", "full", "none")
 
 
 # ------------------------------------------------------------------------------------------------
 # The scene (runs in the child process)
 # ------------------------------------------------------------------------------------------------
-def build_scene(n: int, rotating: bool, model: str, rotate_mode: str, spawn: str = "bulk") -> tuple[Any, Any]:
-    """The benchmark scene and its model's MeshData: ``n`` lit models on a grid, a camera that sees them all."""
+def build_scene(n: int, rotating: bool | str, model: str, rotate_mode: str, spawn: str = "bulk") -> tuple[Any, Any]:
+    """The benchmark scene and its model's MeshData: ``n`` lit models on a grid, a camera that sees them all;
+    ``rotating``: all of them turn (True), none (False), or only the last one (``"one"``)."""
     from bench_rotate import RotateComponent, RotateEntitySystem
 
     from gandalf_core import Scene, System, TransformComponent
     from gandalf_core.components import CameraComponent, ClearColorComponent, MaterialComponent, MeshComponent
     from gandalf_core.math import quat_from_axis_angle, quat_mul
     from gandalf_core.resources import MaterialData, primitives
+    from gandalf_core.systems.spin import SpinComponent, SpinSystem
 
     class RotateBatchSystem(System):
         """Fast form: one vectorised quaternion product over the store's quaternion column."""
@@ -107,15 +115,17 @@ def build_scene(n: int, rotating: bool, model: str, rotate_mode: str, spawn: str
                 return
             half = 0.5 * self._speeds * ts
             step = np.concatenate([np.cos(half)[:, None], np.sin(half)[:, None] * self._axes], axis=1)
-            q = self.scene.store(TransformComponent).column("quaternion")
+            store = self.scene.store(TransformComponent)
+            q = store.columns["quaternion"]
             q[self._rows] = quat_mul(step, q[self._rows])
+            store.touch(self._rows)  # only these rows changed: the engine recomputes and uploads them alone
 
     class RotateAngleSystem(RotateBatchSystem):
         """Absolute angles: q = (cos(a/2), sin(a/2) * axis) with a = phase + speed * time, written in place."""
 
         def _plan(self) -> None:
             super()._plan()
-            q = self.scene.store(TransformComponent).column("quaternion")[self._rows]
+            q = self.scene.store(TransformComponent).read("quaternion")[self._rows]
             self._phase = 2.0 * np.arctan2(np.linalg.norm(q[:, 1:], axis=1), q[:, 0])
             rows = self._rows
             consecutive = len(rows) and rows[-1] - rows[0] == len(rows) - 1 and np.all(np.diff(rows) == 1)
@@ -129,9 +139,11 @@ def build_scene(n: int, rotating: bool, model: str, rotate_mode: str, spawn: str
                 return
             self._time += ts
             half = 0.5 * (self._phase + self._speeds * self._time)
-            q = self.scene.store(TransformComponent).column("quaternion")
+            store = self.scene.store(TransformComponent)
+            q = store.columns["quaternion"]
             q[self._target, 0] = np.cos(half)
             q[self._target, 1:] = np.sin(half)[:, None] * self._axes
+            store.touch(self._target)
 
     scene = Scene(f"bench-{n}")
     mesh = primitives.cube() if model == "cube" else primitives.uv_sphere(0.6, 32, 16)
@@ -149,20 +161,27 @@ def build_scene(n: int, rotating: bool, model: str, rotate_mode: str, spawn: str
         quats[:, 0], quats[:, 2] = np.cos(half), np.sin(half)
         parts: list[Any] = [TransformComponent.batch(translations=grid_positions(n), quaternions=quats),
                             MeshComponent("model"), MaterialComponent("lit")]
-        if rotating:
+        if rotating is True and rotate_mode == "gpu":
+            parts.append([SpinComponent(y_axis, 30.0 + 10.0 * (i % 7)) for i in range(n)])
+        elif rotating is True:
             parts.append([RotateComponent(y_axis, 30.0 + 10.0 * (i % 7)) for i in range(n)])
-        scene.create_entities(n, *parts)
+        ids = scene.create_entities(n, *parts)
+        if rotating == "one":
+            scene.add_component(ids[-1], SpinComponent(y_axis, 45.0) if rotate_mode == "gpu"
+                                else RotateComponent(y_axis, 45.0))
     for i, position in enumerate(grid_positions(n) if spawn == "loop" else ()):
         components: list[Any] = [
             TransformComponent(position, quaternion=quat_from_axis_angle(y_axis, 0.1 * i)),
             MeshComponent("model"),
             MaterialComponent("lit"),
         ]
-        if rotating:
-            components.append(RotateComponent(y_axis, 30.0 + 10.0 * (i % 7)))
+        if rotating is True or (rotating == "one" and i == n - 1):
+            speed = 30.0 + 10.0 * (i % 7)
+            components.append(SpinComponent(y_axis, speed) if rotate_mode == "gpu" else RotateComponent(y_axis, speed))
         scene.create_entity(*components)
     if rotating:
-        systems = {"batch": RotateBatchSystem, "entity": RotateEntitySystem, "angle": RotateAngleSystem}
+        systems = {"batch": RotateBatchSystem, "entity": RotateEntitySystem, "angle": RotateAngleSystem,
+                   "gpu": lambda: SpinSystem(path="gpu")}
         scene.add_system(systems[rotate_mode]())
     return scene, mesh
 
@@ -203,6 +222,22 @@ class Timed:
         self.totals[self.bucket] += time.perf_counter() - t0
 
 
+class TimedCall(Timed):
+    """Accumulates the time of one method of an object (``frame_data``: the render system's Python part)."""
+
+    def __init__(self, owner: Any, method: str, bucket: str, totals: dict[str, float]) -> None:
+        self.inner = getattr(owner, method)
+        self.bucket = bucket
+        self.totals = totals
+        setattr(owner, method, self)
+
+    def __call__(self, *args: Any) -> Any:
+        t0 = time.perf_counter()
+        result = self.inner(*args)
+        self.totals[self.bucket] += time.perf_counter() - t0
+        return result
+
+
 # ------------------------------------------------------------------------------------------------
 # One configuration (child process)
 # ------------------------------------------------------------------------------------------------
@@ -232,10 +267,11 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
         app.step()
         sync()
 
-    totals = {"update": 0.0, "transform": 0.0, "render": 0.0, "sync": 0.0}
+    totals = {"update": 0.0, "transform": 0.0, "render": 0.0, "gather": 0.0, "sync": 0.0}
     for system in scene.systems:
         if isinstance(system, RenderSystem):
             Timed(system, "render", totals)
+            TimedCall(system, "frame_data", "gather", totals)  # the render system's own Python, inside "render"
         elif isinstance(system, TransformSystem):
             Timed(system, "transform", totals)
         else:
@@ -298,7 +334,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
             "p99": round(float(np.percentile(ms, 99)), 3),
         },
         # CPU time per frame in each part: the rotate system, the transform system, the render system
-        # (gather + upload + draw submission) and the read-back wait.
+        # (gather + upload + draw submission; "gather" is its Python part, frame_data) and the read-back wait.
         "cpu_ms": {k: round(v * 1e3 / frames, 3) for k, v in totals.items()},
         "draw_calls": int(app.renderer.stats["draw_calls"]),
         "spawn": cfg.get("spawn", "bulk"),
@@ -355,6 +391,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--profile", type=int, default=0, metavar="N",
                         help="cProfile the measured frames and print the top N functions to stderr")
     parser.add_argument("--png", default=None, metavar="DIR", help="save each configuration's last frame here")
+    parser.add_argument("--json", default=None, metavar="FILE",
+                        help="also write every record (and the host line) to FILE as one JSON list")
     args = bench_common.parse_or_answer(parser, argv, run_config)
     if args is None:  # a child: it printed its record
         return 0
@@ -369,9 +407,10 @@ def main(argv: list[str] | None = None) -> int:
     if frames < 1 or warmup < 0:
         raise SystemExit("--frames must be >= 1 and --warmup >= 0")
 
-    print(json.dumps({"bench": "gandalf-scenes-host", "python": platform.python_version(),
-                      "machine": platform.machine(), "cpus": os.cpu_count(),
-                      "platform": platform.platform()}), flush=True)
+    host = {"bench": "gandalf-scenes-host", "python": platform.python_version(), "machine": platform.machine(),
+            "cpus": os.cpu_count(), "platform": platform.platform(), "rotate": args.rotate}
+    print(json.dumps(host), flush=True)
+    records: list[dict[str, Any]] = [host]
     failures = 0
     plan = [(backend, scene) for backend in backends for scene in scenes]
     started = time.perf_counter()
@@ -382,8 +421,20 @@ def main(argv: list[str] | None = None) -> int:
         cfg = {"backend": backend, "scene": scene, "size": size, "frames": frames, "warmup": warmup,
                "max_seconds": args.max_seconds, "model": args.model, "rotate": args.rotate,
                "sync": args.sync, "profile": args.profile, "png": args.png, "spawn": args.spawn}
-        if run_child(__file__, cfg, {"bench": "gandalf-scenes", "backend": backend, "scene": scene}) is None:
+        record = run_child(__file__, cfg, {"bench": "gandalf-scenes", "backend": backend, "scene": scene})
+        if record is None:
             failures += 1
+            continue
+        records.append(record)
+        cpu = record["cpu_ms"]
+        # The figures, readable, on stderr (stdout keeps the JSON lines alone).
+        print(f"#   {backend:6s} {scene:10s} {record['rotate'] or 'static':6s} {record['fps']:9.1f} fps  "
+              f"frame p50 {record['frame_ms']['p50']:.3f} ms  CPU ms: update {cpu['update']:.3f} "
+              f"transform {cpu['transform']:.3f} render {cpu['render']:.3f} (gather {cpu['gather']:.3f}) "
+              f"sync {cpu['sync']:.3f}", file=sys.stderr, flush=True)
+    if args.json:
+        Path(args.json).parent.mkdir(parents=True, exist_ok=True)
+        Path(args.json).write_text(json.dumps(records, indent=1) + "\n")
     return 1 if failures else 0
 
 

@@ -13,4 +13,4 @@ its hooks (:mod:`gandalf_core.app.extensions`), so every step opens the editor w
 """
 
 #: The techniques, in the order the step page teaches them (each is a sub-package of this step).
-TECHNIQUES = ("showcase", "terrain", "explode", "filter", "pbr_model", "parallax", "pathtracer")
+TECHNIQUES = ("showcase", "terrain", "explode", "filter", "pbr_model", "parallax", "pathtracer", "gpu_motion")

@@ -36,6 +36,8 @@ class TransformComponent(ColumnarComponent):
                         expected="w, x, y, z; scaled to unit length, all zero reads as no rotation")
     scale = Vector(3, 1.0, uniform=True, expected="x, y, z, or one number for all three")
     world = Vector((4, 4), np.eye(4), expected="a 4x4 matrix")
+    #: The transform system computes ``world`` from the others: reading it marks nothing as changed.
+    derived = frozenset({"world"})
 
     def __init__(
         self,

@@ -7,6 +7,14 @@ scene-wide numpy columns while it belongs to a scene, so a system can update eve
 
 Reading a columnar field gives a live view of its row (so ``transform.translation[1] += 1`` works);
 copy it (``.copy()``) to keep a value, since rows move when other entities leave the scene.
+
+**What changed.** A store remembers which rows may have changed since a system last asked
+(:meth:`ColumnStore.take_changes`), so a system that derives data from the columns (the transform system's world
+matrices) recomputes only those rows. Any write of a field marks its row, and so does *reading* one (the live view
+it returns may be written through); ``store.column(name)`` marks every row (the caller may write any of them).
+A batch system that writes a few rows says so with :meth:`ColumnStore.touch` after writing ``store.columns``;
+code that only reads uses :meth:`ColumnStore.read`. Derived columns (``derived``: the world matrix) are the
+output of such a system: reading them marks nothing.
 """
 
 from __future__ import annotations
@@ -19,6 +27,8 @@ import numpy as np
 _ND = np.ndarray
 _F64 = np.dtype(np.float64)
 _NUMBER = (float, int, np.float64)
+_NO_ROWS = np.zeros(0, dtype=np.intp)
+_NO_ROWS.flags.writeable = False
 
 
 class Component:
@@ -47,6 +57,8 @@ class RowField:
     reading a field is the per-entity path's hottest line.)"""
 
     name: str
+    #: False for a derived column (``ColumnarComponent.derived``): reading its live view marks no change.
+    tracks = True
 
     def __get__(self, obj: Any, owner: type | None = None) -> Any:
         if obj is None:
@@ -54,6 +66,8 @@ class RowField:
         store = obj._store
         if store is None:
             return obj._local[self.name]
+        if self.tracks:  # the live view may be written through: the row counts as changed
+            store.touched.add(obj._row)
         return store.columns[self.name][obj._row]
 
     def _store_row(self, obj: Any, value: np.ndarray) -> None:
@@ -63,6 +77,7 @@ class RowField:
             obj._local[self.name] = value
         else:
             store.columns[self.name][obj._row] = value
+            store.touched.add(obj._row)
 
     def _store_fast(self, obj: Any, value: np.ndarray) -> bool:
         """Store the checked float64 ``value`` of a fast path (the component keeps a copy); True."""
@@ -71,6 +86,7 @@ class RowField:
             obj._local[self.name] = value.copy()
         else:
             store.columns[self.name][obj._row] = value
+            store.touched.add(obj._row)
         return True
 
 
@@ -126,6 +142,8 @@ class ColumnarComponent(Component):
     """
 
     columns: ClassVar[dict[str, tuple[tuple[int, ...], Any]]] = {}
+    #: Columns a system computes from the others (a world matrix): reading them marks no row as changed.
+    derived: ClassVar[frozenset[str]] = frozenset()
     _defaults: ClassVar[dict[str, np.ndarray]] = {}
 
     def __init_subclass__(cls, **kwargs: Any) -> None:
@@ -139,6 +157,9 @@ class ColumnarComponent(Component):
         for name, (shape, _default) in cls.columns.items():
             if not hasattr(getattr(cls, name, None), "column_shape"):  # a plain column: the unchecked descriptor
                 setattr(cls, name, _ColumnField(name, tuple(shape)))
+            descriptor = vars(cls).get(name)
+            if isinstance(descriptor, RowField):
+                descriptor.tracks = name not in cls.derived
         # Built once per class: creating 100k components then costs a few array copies each.
         cls._defaults = {
             name: np.array(np.broadcast_to(np.asarray(default, np.float64), shape))
@@ -233,6 +254,10 @@ class ColumnStore:
         self.owners: list[ColumnarComponent] = []
         #: Bumped when a row moves (a removal swaps the last row in): caches of row indices compare it.
         self.layout_version = 0
+        #: Rows written (or read through a live view) one at a time since :meth:`take_changes`.
+        self.touched: set[int] = set()
+        self._touched_all = True  # every row may have changed (new rows, a whole-column view handed out)
+        self._touched_runs: list[np.ndarray] = []  # rows a batch system named with touch()
 
     def attach(self, component: ColumnarComponent) -> None:
         if self.count == self.capacity:
@@ -243,6 +268,7 @@ class ColumnStore:
         component._store, component._row = self, row
         self.owners.append(component)
         self.count += 1
+        self._touched_all = True
 
     def attach_batch(self, batch: ColumnBatch) -> list[ColumnarComponent]:
         """Append ``batch.count`` rows in one write per column; return their new component objects."""
@@ -267,6 +293,7 @@ class ColumnStore:
             state["_local"] = None
         self.owners.extend(made)
         self.count = end
+        self._touched_all = True
         return made
 
     def detach(self, component: ColumnarComponent) -> None:
@@ -282,10 +309,57 @@ class ColumnStore:
         component._store, component._row = None, -1
         self.count -= 1
         self.layout_version += 1
+        self._touched_all = True
 
     def column(self, name: str) -> np.ndarray:
-        """A view of the live rows of column ``name`` (shape ``(count, *field_shape)``)."""
+        """A writable view of the live rows of column ``name`` (shape ``(count, *field_shape)``). Every row
+        counts as changed (the caller may write any); read with :meth:`read`, or name the rows written with
+        :meth:`touch` after writing ``columns[name]``, to say less."""
+        if name not in self.component_type.derived:
+            self._touched_all = True
         return self.columns[name][: self.count]
+
+    def read(self, name: str) -> np.ndarray:
+        """A read-only view of the live rows of column ``name``: marks nothing as changed."""
+        view = self.columns[name][: self.count]
+        view.flags.writeable = False
+        return view
+
+    def touch(self, rows: Any = None) -> None:
+        """Say which rows were written through ``columns``: an index array, a slice, one row, or None for all."""
+        if rows is None:
+            self._touched_all = True
+        elif isinstance(rows, (int, np.integer)):
+            self.touched.add(int(rows))
+        else:
+            rows = (np.arange(*rows.indices(self.count)) if isinstance(rows, slice)
+                    else np.asarray(rows, dtype=np.intp).reshape(-1))
+            if 2 * len(rows) > self.count:  # most rows: recomputing them all (whole columns, no gathering) is cheaper
+                self._touched_all = True
+            else:
+                self._touched_runs.append(rows)
+
+    def take_changes(self) -> np.ndarray | None:
+        """The rows that may have changed since the last call (sorted, each once), or None for "any row"; the
+        record starts empty again. (One system owns it: the transform system for the transform store.)"""
+        everything = self._touched_all
+        touched, runs = self.touched, self._touched_runs
+        self._touched_all = False
+        if everything:
+            touched.clear()
+            runs.clear()
+            return None
+        if not touched and not runs:
+            return _NO_ROWS
+        if not runs:  # rows written one at a time only: unique already
+            rows = np.fromiter(touched, dtype=np.intp, count=len(touched))
+            rows.sort()
+        else:  # rows named by touch() may repeat
+            parts = [*runs, np.fromiter(touched, dtype=np.intp, count=len(touched))]
+            rows = np.unique(np.concatenate(parts))
+        touched.clear()
+        runs.clear()
+        return rows[rows < self.count]
 
     def rows_of(self, components: list[ColumnarComponent]) -> np.ndarray:
         """Row indices of ``components`` (for fancy indexing into columns)."""

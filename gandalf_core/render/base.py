@@ -48,6 +48,8 @@ class Renderer(ABC):
     #: A :class:`~gandalf_core.render.capture.FrameRecorder` while a frame is captured, else None: the pass and draw
     #: loops call it, so a frame that is not captured pays one test of a local variable per draw.
     recorder: Any = None
+    #: ``instances_version`` of the rows the instance buffer holds (see :meth:`_instance_span`).
+    _instances_uploaded: tuple[object, int] | None = None
 
     def __init__(self, width: int, height: int, window: Any = None) -> None:
         if int(width) <= 0 or int(height) <= 0:
@@ -190,6 +192,15 @@ class Renderer(ABC):
         built from ``render/shaders`` in this renderer's language on first use."""
         name, stem = PASS_SHADERS[kind]
         return self.shaders.build(name, *engine_shader_files(stem, self.shading_language))
+
+    def _instance_span(self, data: FrameData) -> tuple[int, int] | None:
+        """The rows of ``data.instances`` to upload when the instance buffer already holds the frame they are
+        counted from (``data.instances_since``); None: upload them all. Remembers the version uploaded."""
+        uploaded, self._instances_uploaded = self._instances_uploaded, data.instances_version
+        if (data.instance_span is None or uploaded is None or uploaded != data.instances_since
+                or self._instance_buffer is None or self._instance_buffer.size < data.instances.nbytes):
+            return None
+        return data.instance_span
 
     def _instance_capacity(self, nbytes: int) -> int | None:
         """The size of a new instance buffer when the current one cannot hold ``nbytes`` (None: it can)."""

@@ -46,6 +46,7 @@ from ..resources.blocks import LIGHTS_BYTES as LIGHTS_BYTES
 from ..resources.blocks import MAX_LIGHTS as MAX_LIGHTS
 from ..resources.blocks import SHADOW_BYTES as SHADOW_BYTES
 from ..resources.blocks import SHADOW_MAP_SIZE as SHADOW_MAP_SIZE
+from .gpu_motion import MotionFrame
 
 INSTANCE_FLOATS = 12
 INSTANCE_STRIDE = INSTANCE_FLOATS * 4
@@ -85,6 +86,15 @@ class FrameData:
     lights: bytes  # the lights uniform block (LIGHTS_BLOCK_BYTES)
     batches: list[DrawBatch]  # opaque ones first, then the transparent ones back to front
     instances: np.ndarray | None  # (total instances, 12) float32
+    #: The rows of ``instances`` that changed since the frame ``instances_since`` named ([lo, hi): upload only
+    #: those), or None: all of them are new.
+    instance_span: tuple[int, int] | None = None
+    #: (source, frame number) of these instance rows, and of the frame ``instance_span`` is counted from: a renderer
+    #: that uploaded exactly that frame last may upload the span alone; any other renderer uploads every row.
+    instances_version: tuple[object, int] | None = None
+    instances_since: tuple[object, int] | None = None
+    #: GPU-driven motion: the compute pass that moves instance rows before the draws read them (None: no pass).
+    motion: MotionFrame | None = None
     skybox: str | None = None  # cube texture name, or None for no sky pass (drawn after the opaque batches)
     reverse_z: bool = False
     shadows: bool = False  # a shadow-casting light is on: draw the shadow map before the main pass
@@ -203,6 +213,14 @@ _LAST_CLIP_TO_DIRECTION: tuple[bytes, np.ndarray] = (b"", np.eye(4))
 def instance_capacity(nbytes: int) -> int:
     """Bytes to allocate for ``nbytes`` of instance data: powers of two from 4 KiB, so growth is rare."""
     return 1 << max(12, (nbytes - 1).bit_length())
+
+
+def pack_instance_rows(world: np.ndarray, rows: np.ndarray, out: np.ndarray, at: np.ndarray,
+                       origin: np.ndarray | None) -> None:
+    """Pack ``world[rows]`` into the instance rows ``out[at]`` (as :func:`pack_instances` does for all of them)."""
+    packed = out.reshape(-1, 3, 4)
+    packed[at, :, :3] = world[rows, :3, :3]
+    packed[at, :, 3] = world[rows, :3, 3] if origin is None else world[rows, :3, 3] - origin
 
 
 def pack_instances(world: np.ndarray, rows: np.ndarray | slice, out: np.ndarray | None = None,

@@ -1,8 +1,11 @@
 """The render system: the last system of a frame. Backend-neutral: it reads components, groups
 entities into instanced batches, gathers their world matrices, and hands all of it to the renderer.
 
-Batches are planned again only when components come or go; every frame costs one numpy gather
-of the world matrices and one upload, whatever the number of entities. Instances whose world matrix mirrors
+Batches are planned again only when components come or go. Instance rows are packed again only for the
+entities whose world matrix the transform system wrote this frame (its ``changed`` rows), and the renderer
+uploads only that span: a frame in which nothing moved uploads nothing. A moving camera moves every row (they are
+camera-relative), as do blended batches (sorted every frame): those frames pack and upload every row.
+Instances whose world matrix mirrors
 (a negative determinant, e.g. one negative scale) turn their triangles' winding around; they are drawn in a
 batch of their own with clockwise front faces, so culling keeps the faces that point at the camera.
 """
@@ -26,9 +29,11 @@ from ..math import depth_range, invert_affine
 from ..math.transform import cross3
 from ..resources import MaterialData
 from ..systems.light_system import LightSystem, pack_lights, pack_shadow
+from ..systems.transform_system import TransformSystem
 from .base import Renderer
 from .color import srgb_rgba_to_linear
-from .frame import DrawBatch, FrameData, pack_frame, pack_instances
+from .frame import DrawBatch, FrameData, pack_frame, pack_instance_rows, pack_instances
+from .gpu_motion import MotionFrame, epoch_of, motion_rows
 
 DEFAULT_CLEAR = (0.0, 0.0, 0.0, 1.0)
 _FEW_INSTANCES = 8
@@ -53,6 +58,21 @@ class RenderSystem(System):
         #: frame is then only cleared, and its overlays drawn, instead of drawing the scene a second time.
         self.draws_scene = True
         self._blank_frame: bytes | None = None  # the frame block of a cleared frame, made on first use
+        # What the packed rows were made from: the transform system's generation and the origin (None: repack all).
+        self._packed_generation: int | None = None
+        self._packed_origin = np.full(3, np.nan)
+        self._instance_of_row: np.ndarray | None = None  # store row -> instance row (-1: not drawn)
+        self._frames = 0
+        self._token = object()  # names this system's instance rows to the renderer
+        self._mirrored_any = False
+        self._frame_batches: list[DrawBatch] = []
+        self._transform_system = None
+        self._camera_key: tuple | None = None  # what the last camera() was computed from, and its result
+        self._camera_value: tuple[np.ndarray, np.ndarray, np.ndarray, bool] | None = None
+        self._order = 0  # bumped whenever the instance order changes (a new plan, sorting, mirrored splits)
+        self._motion_key: tuple | None = None
+        self._motion_rows: np.ndarray | None = None
+        self._motion_serial = 0
 
     def on_create_system(self) -> None:
         scene = self.scene
@@ -80,19 +100,30 @@ class RenderSystem(System):
     def camera(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool]:
         """(view, projection, eye position, reverse_z) of the primary camera; identity when there is none.
 
-        With no camera, positions are already clip-space coordinates (step 02 starts there).
+        With no camera, positions are already clip-space coordinates (step 02 starts there). The matrices are
+        computed again only when the camera's pose, its fields or the target's aspect change (every frame reads
+        them; they are read-only arrays).
         """
         chosen = self.primary_camera()
         if chosen is None:
             return np.eye(4), np.eye(4), np.zeros(3), False
         entity, camera, transform = chosen
         world = transform.world
+        depth = self.renderer.depth_range_for(camera.reverse_z)
+        key = (world.tobytes(), camera.fov, camera.near, camera.far, camera.projection, camera.height, camera.aspect,
+               camera.reverse_z, depth, self.renderer.aspect)
+        if key == self._camera_key:
+            return self._camera_value
         try:
             view = invert_affine(world)
         except ValueError as exc:
             raise ValueError(f"camera {self.scene.describe(entity)}: its world matrix is singular ({exc})") from None
-        projection = camera.projection_matrix(self.renderer.depth_range_for(camera.reverse_z), self.renderer.aspect)
-        return view, projection, world[:3, 3].copy(), camera.reverse_z
+        projection = camera.projection_matrix(depth, self.renderer.aspect)
+        eye = world[:3, 3].copy()
+        for matrix in (view, projection, eye):
+            matrix.flags.writeable = False
+        self._camera_key, self._camera_value = key, (view, projection, eye, camera.reverse_z)
+        return self._camera_value
 
     def plan(self) -> None:
         """Group entities by (material, mesh): opaque batches first, sorted so that batches sharing a
@@ -116,7 +147,15 @@ class RenderSystem(System):
         # Consecutive rows (the common case: entities created together) are read as a slice, no gather.
         consecutive = len(rows) > 0 and rows[-1] - rows[0] == len(rows) - 1 and np.all(np.diff(rows) == 1)
         self._rows = slice(int(rows[0]), int(rows[-1]) + 1) if consecutive else rows
+        self._number_rows(rows)
         self._plan_key = self._current_plan_key()
+        self._packed_generation = None
+
+    def _number_rows(self, rows: np.ndarray) -> None:
+        """Remember which instance row each transform row is drawn as (-1: not drawn)."""
+        self._instance_of_row = np.full(self.scene.store(TransformComponent).count, -1, dtype=np.intp)
+        self._instance_of_row[rows] = np.arange(len(rows))
+        self._order += 1
 
     def _material_data(self, name: str) -> MaterialData | None:
         data = self.scene.assets.materials.get(name)
@@ -186,6 +225,95 @@ class RenderSystem(System):
             first += batch.count
         return batches
 
+    # --8<-- [start:pack]
+    def _pack(self, world: np.ndarray, view: np.ndarray, origin: np.ndarray) -> tuple[int, int] | None:
+        """Bring the packed instance rows up to date with the world matrices; return the span of rows that
+        changed, or None when every row was packed anew. Sets the frame's batches (:attr:`_frame_batches`)."""
+        transforms = self._transforms()
+        if transforms is not None and not transforms.enabled:  # paused: world matrices may be written by hand
+            transforms = None
+        generation = transforms.generation if transforms is not None else None
+        seen, self._packed_generation = self._packed_generation, generation
+        same_origin = bool(np.array_equal(origin, self._packed_origin))
+        if (seen is not None and same_origin and self._instances is not None and not self._mirrored_any
+                and not any(b.transparent for b in self.batches)):
+            if generation == seen:  # the transform system did not run: nothing moved
+                return (0, 0)
+            if generation == seen + 1:
+                span = self._pack_changed(world, transforms.changed, origin, transforms.positive_scales)
+                if span is not None:
+                    return span
+        self._packed_origin[:] = origin
+        self._sort_transparent(world, view)  # may reorder the blended batches: a new self.batches
+        self._frame_batches = self.batches
+        self._instances = pack_instances(world, self._rows, self._instances, origin)
+        # With every scale positive no instance can mirror: the per-instance determinants are not needed.
+        flipped = None if transforms is not None and transforms.positive_scales else self._mirrored(world)
+        reordered = self._mirrored_any or any(b.transparent for b in self.batches)
+        self._mirrored_any = flipped is not None and bool(flipped.any())
+        if self._mirrored_any:  # rare: mirrored instances get batches of their own, and the rows are packed anew
+            self._frame_batches = self._split_mirrored(flipped)
+            rows = np.concatenate([b.rows for b in self._frame_batches])
+            self._instances = pack_instances(world, rows, self._instances, origin)
+            self._number_rows(rows)
+        elif reordered:  # sorted blended batches, or mirrored ones merged back: instance rows moved
+            self._number_rows(np.arange(len(world))[self._rows])
+        return None
+    # --8<-- [end:pack]
+
+    def _pack_changed(self, world: np.ndarray, rows: np.ndarray | None, origin: np.ndarray,
+                      positive_scales: bool = False) -> tuple[int, int] | None:
+        """Pack the instance rows of the store ``rows`` written this frame; their span, or None when they must all
+        be packed again (every row changed, or one of them turned mirrored)."""
+        if rows is None:
+            return None
+        if not len(rows):
+            return (0, 0)
+        rows = rows[rows < len(self._instance_of_row)]
+        at = self._instance_of_row[rows]
+        drawn = at >= 0
+        if not drawn.all():
+            rows, at = rows[drawn], at[drawn]
+        if not len(at):
+            return (0, 0)
+        m = world[rows, :3, :3]
+        if positive_scales:
+            positive = True
+        elif len(rows) <= _FEW_INSTANCES:  # plain floats: cheaper than numpy calls on a handful of rows
+            positive = all(a0 * (b1 * c2 - b2 * c1) + a1 * (b2 * c0 - b0 * c2) + a2 * (b0 * c1 - b1 * c0) > 0.0
+                           for (a0, a1, a2), (b0, b1, b2), (c0, c1, c2) in m.tolist())
+        else:
+            positive = bool((np.einsum("ij,ij->i", m[:, :, 0], cross3(m[:, :, 1], m[:, :, 2])) > 0.0).all())
+        if not positive:  # mirrored (or too small to tell): the full path decides and splits the batches
+            return None
+        pack_instance_rows(world, rows, self._instances, at, origin)
+        return int(at.min()), int(at.max()) + 1
+
+    # --8<-- [start:motion_frame]
+    def _motion_frame(self, time: float) -> MotionFrame | None:
+        """The compute pass's rows for the systems that move their entities on the GPU (None: no such system).
+        Built again only when those systems, the instance order or the motion epoch change."""
+        systems = [s for s in self.scene.systems if getattr(s, "moves_on_gpu", False) and s.enabled]
+        if not systems:
+            return None
+        epoch = epoch_of(time)
+        key = (self._order, epoch, tuple((id(s), s.motion_version) for s in systems))
+        if key != self._motion_key or self._motion_rows is None or len(self._motion_rows) != len(self._instances):
+            motions = [s.gpu_motion() for s in systems]
+            self._motion_rows = motion_rows(len(self._instances), self._instance_of_row, motions, epoch)
+            self._motion_key = (self._order, epoch, tuple((id(s), s.motion_version) for s in systems))
+            self._motion_serial += 1
+        return MotionFrame(self._motion_rows, (self._token, self._motion_serial), time - epoch)
+    # --8<-- [end:motion_frame]
+
+    def _transforms(self) -> TransformSystem | None:
+        """The scene's transform system (it says which world matrices it wrote), or None."""
+        found = self._transform_system
+        if found is None or found.scene is not self.scene:
+            found = next((s for s in self.scene.systems if isinstance(s, TransformSystem)), None)
+            self._transform_system = found
+        return found
+
     def _current_plan_key(self) -> tuple[int, int]:
         # Batches change when this system's entities change, and row indices when any transform row moves.
         return (self.version, self.scene.store(TransformComponent).layout_version)
@@ -219,16 +347,12 @@ class RenderSystem(System):
                            depth_ends, origin)
         # --8<-- [end:camera_relative]
         batches = self.batches
+        span: tuple[int, int] | None = None
         if batches:
-            world = scene.store(TransformComponent).columns["world"]
-            self._sort_transparent(world, view)  # may reorder the blended batches: a new self.batches
-            batches = self.batches
-            self._instances = pack_instances(world, self._rows, self._instances, origin)
-            flipped = self._mirrored(world)
-            if flipped.any():  # rare: mirrored instances get batches of their own, and the rows are packed anew
-                batches = self._split_mirrored(flipped)
-                rows = np.concatenate([b.rows for b in batches])
-                self._instances = pack_instances(world, rows, self._instances, origin)
+            span = self._pack(scene.store(TransformComponent).columns["world"], view, origin)
+            batches = self._frame_batches
+        self._frames += 1
+        motion = self._motion_frame(app.clock.time if app is not None else 0.0) if batches else None
         light_systems = [s for s in scene.systems if isinstance(s, LightSystem)]
         # The light system knows the lights, the renderer the depth range their shadow projection needs.
         lights = (light_systems[0].relative(origin) + light_systems[0].shadow(self.renderer.depth_range, origin)
@@ -241,6 +365,10 @@ class RenderSystem(System):
             lights=lights,
             batches=batches,
             instances=self._instances if batches else None,
+            instance_span=span,
+            instances_version=(self._token, self._frames),
+            instances_since=(self._token, self._frames - 1),
+            motion=motion,
             skybox=skyboxes[0][0].texture if skyboxes else None,
             reverse_z=reverse_z,
             shadows=shadows,

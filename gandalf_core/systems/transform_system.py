@@ -1,6 +1,9 @@
 """The transform system: world matrices for every entity, parents before children, once per frame.
 
-All local matrices are built in one vectorised pass (``TRSBatch``); the hierarchy is then resolved
+Only rows that changed are recomputed: the transform store reports the rows written since the last frame
+(``ColumnStore.take_changes``), and those rows and their descendants get new matrices (a static scene costs
+nothing per frame). On a full pass (the first frame, a new hierarchy, a whole column handed out for writing),
+all local matrices are built in one vectorised pass (``TRSBatch``); the hierarchy is then resolved
 level by level (every entity at depth *d* in one batched matrix product), so a child is always
 recomputed after any ancestor moved and 100k entities cost a few numpy calls. A deep hierarchy (more than
 :data:`DEEP` levels: a 1,000-link chain) would cost one call per level; it is resolved by pointer jumping
@@ -25,7 +28,13 @@ DEEP = 12
 
 
 class TransformSystem(System):
-    """Writes ``TransformComponent.world`` for every entity that has a Transform."""
+    """Writes ``TransformComponent.world`` for every entity that has a Transform.
+
+    Only what changed is paid for: the rows the store reports as changed (:meth:`ColumnStore.take_changes`) and
+    their descendants are recomputed; a frame in which nothing moved costs one call. After each update
+    :attr:`changed` holds the rows whose world matrix was written (None: all of them) and :attr:`generation`
+    counts the updates, so a reader that saw every generation needs to look at those rows only.
+    """
 
     def __init__(self) -> None:
         super().__init__([TransformComponent])
@@ -33,14 +42,26 @@ class TransformSystem(System):
         self._levels: list[tuple[np.ndarray, np.ndarray]] = []
         self._jumps: tuple[np.ndarray, np.ndarray] | None = None  # (rows with a parent, their parent rows)
         self._trs = TRSBatch()
+        self._trs_changed = TRSBatch()  # its own scratch: the changed rows are fewer, and their number varies
         self._local: np.ndarray | None = None
+        self._moved: np.ndarray | None = None  # per row: changed itself or below a changed ancestor
+        #: Rows whose world matrix the last update wrote (sorted), or None when it wrote every row.
+        self.changed: np.ndarray | None = None
+        #: Bumped by every update (a reader compares it with the generation it saw last).
+        self.generation = 0
+        #: True when every scale written so far is positive: then no world matrix mirrors (det(T R S) = sx sy sz
+        #: for a proper rotation, and a product of positive determinants down a hierarchy). False says "may".
+        self.positive_scales = False
 
     def on_update_system(self, ts: float) -> None:
         scene = self.scene
         assert scene is not None
         store = scene.store(TransformComponent)
+        self.generation += 1
+        changes = store.take_changes()
         n = store.count
         if n == 0:
+            self.changed = changes if changes is not None else np.zeros(0, np.intp)
             return
         key = (scene.hierarchy_version, self.version, store.layout_version)
         if key != self._plan_key:
@@ -50,14 +71,14 @@ class TransformSystem(System):
                 self._jumps = (np.concatenate([rows for rows, _ in self._levels]),
                                np.concatenate([parents for _, parents in self._levels]))
             self._plan_key = key
-        q = store.column("quaternion")
-        # TRSBatch builds the exact rotation for any non-zero quaternion length, so no renormalising pass;
-        # a zero quaternion (never valid) means "no rotation".
-        degenerate = np.einsum("ij,ij->i", q, q) < _MIN_QUAT_NORM**2
-        if degenerate.any():
-            q = q.copy()
-            q[degenerate] = (1.0, 0.0, 0.0, 0.0)
-        world = store.column("world")
+            changes = None
+        if changes is not None and (self._jumps is None or not len(changes)):
+            self.changed = self._update_rows(store, changes)
+            return
+        self.changed = None
+        self.positive_scales = bool(store.columns["scale"][:n].min() > 0.0)
+        q = _usable_quaternions(store.columns["quaternion"][:n])
+        world = store.columns["world"][:n]
         if not self._levels:  # a flat scene: local is world, written in place
             self._build(store, q, world)
             return
@@ -70,6 +91,37 @@ class TransformSystem(System):
             return
         for rows, parent_rows in self._levels:
             world[rows] = world[parent_rows] @ local[rows]
+
+    # --8<-- [start:update_rows]
+    def _update_rows(self, store: ColumnStore, rows: np.ndarray) -> np.ndarray:
+        """Recompute the world matrices of ``rows`` and of everything below them; return the rows written."""
+        if not len(rows):
+            return rows
+        n = store.count
+        columns = store.columns
+        self.positive_scales = self.positive_scales and bool(columns["scale"][rows].min() > 0.0)
+        local = self._build(store, _usable_quaternions(columns["quaternion"][rows]), None, rows)
+        world = columns["world"]
+        if not self._levels:
+            world[rows] = local
+            return rows
+        self._local[rows] = local
+        if self._moved is None or len(self._moved) != n:
+            self._moved = np.zeros(n, dtype=bool)
+        moved = self._moved
+        moved[:] = False
+        moved[rows] = True
+        for child_rows, parent_rows in self._levels:  # a child moves when its parent did
+            moved[child_rows] |= moved[parent_rows]
+        written = np.flatnonzero(moved)
+        world[written] = self._local[written]
+        for child_rows, parent_rows in self._levels:
+            picked = moved[child_rows]
+            if picked.any():
+                children = child_rows[picked]
+                world[children] = world[parent_rows[picked]] @ self._local[children]
+        return written
+    # --8<-- [end:update_rows]
 
     @staticmethod
     def _resolve_by_jumping(world: np.ndarray, n: int, rows: np.ndarray, parents: np.ndarray) -> None:
@@ -84,14 +136,19 @@ class TransformSystem(System):
             ancestor[active] = ancestor[up]
             active = active[ancestor[active] >= 0]
 
-    def _build(self, store: ColumnStore, q: np.ndarray, out: np.ndarray) -> np.ndarray:
-        """The local matrices; TRSBatch checks the columns are finite, and a failure is told per entity here
-        (NaN can come in through a field's live view), so the check costs the frame nothing extra."""
+    def _build(self, store: ColumnStore, q: np.ndarray, out: np.ndarray | None,
+               rows: np.ndarray | None = None) -> np.ndarray:
+        """The local matrices (of ``rows``, or of every row); TRSBatch checks the columns are finite, and a failure
+        is told per entity here (NaN can come in through a field's live view), so the check costs nothing extra."""
+        n = store.count
+        columns = store.columns
         try:
-            return self._trs(store.column("translation"), q, store.column("scale"), out=out)
+            if rows is None:
+                return self._trs(columns["translation"][:n], q, columns["scale"][:n], out=out)
+            return self._trs_changed(columns["translation"][rows], q, columns["scale"][rows], out=out)
         except ValueError:
             for field in ("translation", "quaternion", "scale"):
-                column = store.column(field)
+                column = store.read(field)
                 bad = ~np.isfinite(column.reshape(len(column), -1)).all(axis=1)
                 if bad.any():
                     row = int(np.flatnonzero(bad)[0])
@@ -139,6 +196,16 @@ class TransformSystem(System):
             (np.array(rows, dtype=np.intp), np.array(parents, dtype=np.intp))
             for _, (rows, parents) in sorted(by_level.items())
         ]
+
+
+def _usable_quaternions(q: np.ndarray) -> np.ndarray:
+    """``q`` with (near-)zero quaternions, never valid, replaced by the identity ("no rotation"). TRSBatch builds
+    the exact rotation for any other length, so no renormalising pass."""
+    degenerate = np.einsum("ij,ij->i", q, q) < _MIN_QUAT_NORM**2
+    if degenerate.any():
+        q = q.copy()
+        q[degenerate] = (1.0, 0.0, 0.0, 0.0)
+    return q
 
 
 def world_matrix(scene: Scene, entity: uuid.UUID) -> np.ndarray:

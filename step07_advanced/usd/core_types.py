@@ -26,4 +26,5 @@ COMPONENTS = {
     FlyControllerComponent: ("speed", "sensitivity", "yaw", "pitch", "min_pitch", "max_pitch"),
     SpinComponent: ("axis", "speed", "local"),
 }
-SYSTEMS = {TransformSystem: (), LightSystem: (), OrbitControllerSystem: (), FlyControllerSystem: (), SpinSystem: ()}
+SYSTEMS = {TransformSystem: (), LightSystem: (), OrbitControllerSystem: (), FlyControllerSystem: (),
+           SpinSystem: ("path",)}

@@ -35,6 +35,7 @@ from .libs import (
     TextureLib,
     make_current,
 )
+from .motion import GLMotionPass
 
 GL_FRAMEBUFFER_SRGB = 0x8DB9
 GL_TEXTURE_CUBE_MAP_SEAMLESS = 0x884F
@@ -88,6 +89,8 @@ class OpenGLRenderer(Renderer):
         self._sky: tuple[GLShader, moderngl.VertexArray] | None = None
         self._shadow: tuple[moderngl.Texture, moderngl.Framebuffer] | None = None
         self._instance_buffer: moderngl.Buffer | None = None
+        self._drawn_instances: moderngl.Buffer | None = None  # the instance rows the draws read (moved or not)
+        self._motion: GLMotionPass | None = None  # the GPU-driven motion pass, built on first use
         self._vaos: dict[tuple[str, str], moderngl.VertexArray] = {}
         # Released or replaced resources take what refers to them along (rebuilt on their next use).
         self.meshes.on_forget.append(self._forget_vertex_arrays)
@@ -175,7 +178,12 @@ class OpenGLRenderer(Renderer):
         self._lights_ubo.write(data.lights)
         self._lights_ubo.bind_to_uniform_block(1)
         if data.batches:
-            self._upload_instances(data.instances)
+            self._upload_instances(data)
+        self._drawn_instances = self._instance_buffer
+        if data.motion is not None and data.batches:  # GPU-driven motion: the draws read the moved rows
+            if self._motion is None:
+                self._motion = GLMotionPass(self.ctx, self.stats)
+            self._drawn_instances = self._motion.run(self._instance_buffer, len(data.instances), data.motion)
         # Resolve (build on first use) everything before any pass: building a texture uses moderngl's
         # scratch texture unit, which on some drivers is the unit the shadow map is bound to.
         draws = self.resolve_draws(data, assets)
@@ -235,7 +243,7 @@ class OpenGLRenderer(Renderer):
         offset = batch.first_instance * INSTANCE_STRIDE
         for i, location in enumerate(INSTANCE_LOCATIONS):
             if location in shader.attributes:
-                vao.bind(location, "f", self._instance_buffer, "4f", offset=offset + 16 * i,
+                vao.bind(location, "f", self._drawn_instances, "4f", offset=offset + 16 * i,
                          stride=INSTANCE_STRIDE, divisor=1)
         # --8<-- [start:patches]
         if shader.patch_vertices is not None:  # a tessellation program draws patches, never triangles
@@ -307,7 +315,16 @@ class OpenGLRenderer(Renderer):
             vao.render(moderngl.TRIANGLES, vertices=3)
         self.stats["draw_calls"] += 1
 
-    def _upload_instances(self, instances: np.ndarray) -> None:
+    def _upload_instances(self, data: FrameData) -> None:
+        instances = data.instances
+        span = self._instance_span(data)
+        if span is not None:  # the buffer holds the previous frame's rows: write the ones that changed
+            lo, hi = span
+            self.stats["instances_uploaded"] = hi - lo
+            if hi > lo:
+                self._instance_buffer.write(instances[lo:hi], offset=lo * INSTANCE_STRIDE)
+            return
+        self.stats["instances_uploaded"] = len(instances)
         capacity = self._instance_capacity(instances.nbytes)
         if capacity is None:
             # Fresh storage for this frame's data, so the driver need not wait for last frame's draws.
@@ -428,6 +445,8 @@ class OpenGLRenderer(Renderer):
             lib.release()
         if self._instance_buffer is not None:
             self._instance_buffer.release()
+        if self._motion is not None:
+            self._motion.release()
         self._frame_ubo.release()
         self._lights_ubo.release()
         self._release_targets()

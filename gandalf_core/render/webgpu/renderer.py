@@ -26,6 +26,7 @@ from ..shader_files import engine_shader_files, load_shader
 from ..texture_checks import check_target_size
 from .device import request_device
 from .libs import BufferLib, MaterialLib, MeshLib, ShaderLib, TextureLib, WGPUMaterial, WGPUMesh, WGPUShader
+from .motion import WGPUMotionPass
 from .validation import attribute_of, first_cause, missing_input
 
 COLOR_FORMAT = "rgba8unorm-srgb"
@@ -112,6 +113,8 @@ class WebGPURenderer(Renderer):
         self.shaders.on_forget.append(
             lambda name: [self._pipelines.pop(k) for k in list(self._pipelines) if k[0] == name])
         self._instance_buffer: Any = None
+        self._drawn_instances: Any = None  # the instance rows the draws read (moved or not)
+        self._motion: WGPUMotionPass | None = None  # the GPU-driven motion pass, built on first use
         #: The colour format the frame being recorded is drawn in (pipelines are built per format).
         self._target_format = COLOR_FORMAT
         #: A surface texture drawn and submitted but not yet presented (see :meth:`_present_pending`).
@@ -154,7 +157,7 @@ class WebGPURenderer(Renderer):
         queue.write_buffer(self._frame_buffer, 0, data.frame)
         queue.write_buffer(self._lights_buffer, 0, data.lights)
         if data.batches:
-            self._upload_instances(data.instances)
+            self._upload_instances(data)
         # Resolve everything before recording, so a missing resource fails before a pass is open.
         draws = [(batch, material, mesh, self._pipeline(material, mesh, data.reverse_z, batch.mirrored))
                  for batch, material, mesh in self.resolve_draws(data, assets)]
@@ -163,6 +166,12 @@ class WebGPURenderer(Renderer):
         recorder = self.recorder  # a frame capture (render/capture.py), or None
         if recorder is not None:
             recorder.begin_frame(data.frame, data.lights, encoder)
+        self._drawn_instances = self._instance_buffer
+        if data.motion is not None and data.batches:  # GPU-driven motion: the draws read the moved rows
+            if self._motion is None:
+                self._motion = WGPUMotionPass(self.device, self.stats)
+            self._drawn_instances = self._motion.record(encoder, self._instance_buffer, len(data.instances),
+                                                        data.motion)
         frame_group = self._frame_group
         if data.shadows:
             frame_group = self._draw_shadow_map(encoder, draws)
@@ -250,7 +259,7 @@ class WebGPURenderer(Renderer):
             vbo, _layout = self.meshes.vertex_buffer(mesh, attributes)
             rpass.set_vertex_buffer(slot, vbo)
             slot += 1
-        rpass.set_vertex_buffer(slot, self._instance_buffer, batch.first_instance * INSTANCE_STRIDE)
+        rpass.set_vertex_buffer(slot, self._drawn_instances, batch.first_instance * INSTANCE_STRIDE)
         if mesh.data.indirect is not None:  # the count a compute pass wrote; the instances are the batch's
             buffer = self.indirect_buffer(mesh.name, mesh.data)
             self.device.queue.write_buffer(buffer, 4, np.array([batch.count, 0, 0], dtype=np.uint32).tobytes())
@@ -338,13 +347,23 @@ class WebGPURenderer(Renderer):
                                                                     self._sky_layout())
         return pipeline, material
 
-    def _upload_instances(self, instances: np.ndarray) -> None:
+    def _upload_instances(self, data: FrameData) -> None:
+        instances = data.instances
+        span = self._instance_span(data)
+        if span is not None:  # the buffer holds the previous frame's rows: write the ones that changed
+            lo, hi = span
+            self.stats["instances_uploaded"] = hi - lo
+            if hi > lo:
+                self.device.queue.write_buffer(self._instance_buffer, lo * INSTANCE_STRIDE, instances[lo:hi])
+            return
+        self.stats["instances_uploaded"] = len(instances)
         capacity = self._instance_capacity(instances.nbytes)
         if capacity is not None:
             if self._instance_buffer is not None:
                 self._instance_buffer.destroy()
             self._instance_buffer = self.device.create_buffer(
-                size=capacity, usage=wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.COPY_DST
+                # STORAGE too: the GPU-driven motion pass reads the rows from it.
+                size=capacity, usage=wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.COPY_DST | wgpu.BufferUsage.STORAGE
             )
         self.device.queue.write_buffer(self._instance_buffer, 0, instances)
 
@@ -467,6 +486,8 @@ class WebGPURenderer(Renderer):
         self._sky_materials.clear()
         if self._instance_buffer is not None:
             self._instance_buffer.destroy()
+        if self._motion is not None:
+            self._motion.release()
         if self._shadow is not None:
             self._shadow[0].destroy()
             self._shadow = None

@@ -1,0 +1,125 @@
+"""The performance targets, judged from one run's JSON: the engine's CPU path and GPU-driven path against the raw
+ceiling, many spinning cubes on the GPU, 100k static models with one moving, one entity's frame.
+
+usage: python benchmarks/perf_targets.py OUT_DIR   (reads the files ``run_perf_targets.sh`` writes there,
+writes ``OUT_DIR/targets.md`` and ``OUT_DIR/targets.json`` and prints the table)
+
+Inputs: ``scenes-*.json`` (``bench_scenes.py --json``: a list of records, the host first) and ``raw.jsonl``
+(``raw_ceiling.py``'s JSON lines). Ratios are of fps measured in the same run.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+from typing import Any
+
+#: (what, backend-independent threshold, how it is judged)
+TARGETS = [
+    ("1k rotating, CPU path / raw", 0.8), ("10k rotating, CPU path / raw", 0.8),
+    ("1k rotating, CPU angle path / raw", 0.8), ("10k rotating, CPU angle path / raw", 0.8),
+    ("1k rotating, GPU path / raw", 1.0), ("10k rotating, GPU path / raw", 1.0),
+    ("100k rotating, GPU path fps", 600.0), ("1M rotating, GPU path fps", 60.0),
+    ("100k static + 1 moving / one entity (fps)", 0.8),
+]
+ONE_ENTITY_MS = {"opengl": 0.2, "webgpu": 0.4}
+
+
+def load(out: Path) -> tuple[list[dict[str, Any]], dict[tuple[str, int], float]]:
+    records = []
+    for path in sorted(out.glob("scenes-*.json")):
+        records += [r for r in json.loads(path.read_text()) if r.get("bench") == "gandalf-scenes" and "fps" in r]
+    raw = {}
+    raw_path = out / "raw.jsonl"
+    if raw_path.is_file():
+        for line in raw_path.read_text().splitlines():
+            if line.startswith("{"):
+                r = json.loads(line)
+                raw[(r["backend"], int(r["n"]))] = float(r["fps"])
+    return records, raw
+
+
+def find(records: list[dict[str, Any]], backend: str, scene: str, rotate: str | None) -> dict[str, Any] | None:
+    for r in records:
+        if r["backend"] == backend and r["scene"] == scene and (rotate is None or r.get("rotate") == rotate):
+            return r
+    return None
+
+
+def judge(records: list[dict[str, Any]], raw: dict[tuple[str, int], float]) -> list[dict[str, Any]]:
+    rows = []
+    for backend in ("opengl", "webgpu"):
+        def fps(scene: str, rotate: str | None, backend: str = backend) -> float | None:
+            r = find(records, backend, scene, rotate)
+            return None if r is None else float(r["fps"])
+
+        def ratio(a: float | None, b: float | None) -> float | None:
+            return None if a is None or not b else a / b
+
+        one = find(records, backend, "scene1", None)
+        values = {
+            "1k rotating, CPU path / raw": ratio(fps("cubes1k", "batch"), raw.get((backend, 1000))),
+            "10k rotating, CPU path / raw": ratio(fps("cubes10k", "batch"), raw.get((backend, 10000))),
+            "1k rotating, CPU angle path / raw": ratio(fps("cubes1k", "angle"), raw.get((backend, 1000))),
+            "10k rotating, CPU angle path / raw": ratio(fps("cubes10k", "angle"), raw.get((backend, 10000))),
+            "1k rotating, GPU path / raw": ratio(fps("cubes1k", "gpu"), raw.get((backend, 1000))),
+            "10k rotating, GPU path / raw": ratio(fps("cubes10k", "gpu"), raw.get((backend, 10000))),
+            "100k rotating, GPU path fps": fps("cubes100k", "gpu"),
+            "1M rotating, GPU path fps": fps("cubes1m", "gpu"),
+            "100k static + 1 moving / one entity (fps)": ratio(fps("static100k", "batch"), fps("scene1", None)),
+        }
+        for what, threshold in TARGETS:
+            value = values[what]
+            rows.append({"backend": backend, "target": what, "value": value, "threshold": threshold,
+                         "met": value is not None and value >= threshold})
+        p50 = None if one is None else float(one["frame_ms"]["p50"])
+        rows.append({"backend": backend, "target": "one entity, p50 ms a frame", "value": p50,
+                     "threshold": ONE_ENTITY_MS[backend], "met": p50 is not None and p50 <= ONE_ENTITY_MS[backend]})
+    return rows
+
+
+def frame_cost_rows(out: Path) -> list[dict[str, Any]]:
+    """The frame's Python at 1k (``frame-cost-*.json``): the target is at most 0.2 ms on a CPU path."""
+    rows = []
+    for path in sorted(out.glob("frame-cost-*.json")):
+        for r in json.loads(path.read_text()):
+            rows.append({"backend": r["backend"], "target": f"Python a frame at {r['n']}, {r['rotate']} path (ms)",
+                         "value": r["python_ms"], "threshold": 0.2, "met": r["python_ms"] <= 0.2})
+    return rows
+
+
+def cpu_table(records: list[dict[str, Any]]) -> str:
+    lines = ["| backend | scene | path | fps | p50 ms | rotate ms | transform ms | render ms (gather) | sync ms |",
+             "|---|---|---|---:|---:|---:|---:|---:|---:|"]
+    for r in records:
+        c = r["cpu_ms"]
+        lines.append(f"| {r['backend']} | {r['scene']} | {r.get('rotate') or 'static'} | {r['fps']} | "
+                     f"{r['frame_ms']['p50']} | {c['update']} | {c['transform']} | {c['render']} "
+                     f"({c.get('gather', '—')}) | {c['sync']} |")
+    return "\n".join(lines) + "\n"
+
+
+def main(argv: list[str]) -> int:
+    if len(argv) != 1:
+        print(__doc__.split("\n\n")[1], file=sys.stderr)
+        return 2
+    out = Path(argv[0])
+    records, raw = load(out)
+    rows = judge(records, raw) + frame_cost_rows(out)
+    lines = ["| backend | target | measured | threshold | met |", "|---|---|---:|---:|---|"]
+    for row in rows:
+        value = "missing" if row["value"] is None else f"{row['value']:.3g}"
+        met = "—" if row["value"] is None else "yes" if row["met"] else "no"
+        # Thresholds are floors, except times (ms): those are ceilings.
+        lines.append(f"| {row['backend']} | {row['target']} | {value} | {row['threshold']} | {met} |")
+    table = "\n".join(lines) + "\n\n" + cpu_table(records)
+    (out / "targets.md").write_text(table)
+    (out / "targets.json").write_text(json.dumps({"targets": rows, "raw_fps": {f"{b}-{n}": v for (b, n), v in
+                                                                              raw.items()}}, indent=1))
+    print(table)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main(sys.argv[1:]))

@@ -1,0 +1,80 @@
+"""GPU-driven motion, the part both backends share: what a system hands the render system for entities whose
+motion the GPU evaluates, and the per-instance rows the compute pass reads.
+
+A system that moves its entities on the GPU (``SpinSystem(path="gpu")``) leaves their Transform at the pose they
+had when they joined (so the CPU neither recomputes nor uploads them: they are static there) and offers
+``gpu_motion()``: their transform rows and, per row, a world axis, a speed (rad/s) and the time they joined. The
+render system turns that into :data:`MOTION_FLOATS` float32 per instance, in instance order; each frame the
+renderer runs one compute pass (``render/shaders/motion_spin.comp`` / ``.wgsl``) that turns every instance's rows
+by ``R(axis, speed · t + phase)`` and draws from the result. An instance with speed 0 and phase 0 is copied.
+
+**Time in float32.** The kernel gets ``t`` = seconds since an *epoch* (:data:`MOTION_EPOCH` wide), and every
+instance a phase ``speed · (epoch − joined)`` wrapped to [0, 2π) in float64. So the angle it forms,
+``speed · t + phase``, has ``t < 1024`` s whatever the run time: its float32 error stays under
+``|speed| · 1024 · 2⁻²⁴ ≈ 6e-5 · |speed|`` rad plus a few ulp of 2π. When the clock passes the epoch's end the
+render system starts a new epoch and writes the phases again (once every 17 minutes, O(N) then).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..systems.motion import GpuMotion
+
+#: float32 per instance in the motion buffer: (axis x, y, z, speed rad/s), (phase rad, 0, 0, 0).
+MOTION_FLOATS = 8
+#: Seconds an epoch lasts (as the frame block's ``time.x`` wrap): float32 steps 1.2e-4 s at its end.
+MOTION_EPOCH = 1024.0
+#: The kernel's workgroup size (``local_size_x`` / ``@workgroup_size``).
+WORKGROUP = 64
+#: The kernel's file stem in ``render/shaders`` (``.comp`` for GLSL 4.30, ``.wgsl``).
+KERNEL = "motion_spin"
+
+
+@dataclass
+class MotionFrame:
+    """What a frame hands the renderer: the motion rows (instance order), their version (uploaded again only when
+    it changes) and the kernel's time since the epoch."""
+
+    rows: np.ndarray  # (instances, MOTION_FLOATS) float32
+    version: tuple[object, int]
+    time: float
+
+
+def motion_rows(count: int, instance_of_row: np.ndarray, motions: list[GpuMotion], epoch: float) -> np.ndarray:
+    """The motion buffer's rows for ``count`` instances (``instance_of_row``: transform row -> instance, -1 when not
+    drawn): zeros (no motion) except where a motion names a drawn row. Phases in float64, wrapped to one turn."""
+    out = np.zeros((count, MOTION_FLOATS), dtype=np.float32)
+    for motion in motions:
+        known = np.flatnonzero(motion.rows < len(instance_of_row))
+        at = instance_of_row[motion.rows[known]]
+        known, at = known[at >= 0], at[at >= 0]
+        out[at, 0:3] = motion.axes[known]
+        out[at, 3] = motion.speeds[known]
+        out[at, 4] = np.mod(motion.speeds[known] * (epoch - motion.joined[known]), 2.0 * math.pi)
+    return out
+
+
+def epoch_of(time: float) -> float:
+    """The start of the epoch ``time`` falls in (a whole number of :data:`MOTION_EPOCH`)."""
+    return math.floor(time / MOTION_EPOCH) * MOTION_EPOCH
+
+
+def spin_rows_np(rows: np.ndarray, axes: np.ndarray, angles: np.ndarray) -> np.ndarray:
+    """The kernel in float64: instance ``rows`` (n, 12) turned about ``axes`` (n, 3) by ``angles`` (n,) — the
+    reference the tests compare the GPU's result with."""
+    m = np.asarray(rows, np.float64).reshape(-1, 3, 4)
+    a = np.asarray(axes, np.float64)
+    c, s = np.cos(angles), np.sin(angles)
+    k = 1.0 - c
+    x, y, z = a[:, 0], a[:, 1], a[:, 2]
+    r = np.empty((len(m), 3, 3))
+    r[:, 0] = np.stack([c + k * x * x, k * x * y - s * z, k * x * z + s * y], 1)
+    r[:, 1] = np.stack([k * y * x + s * z, c + k * y * y, k * y * z - s * x], 1)
+    r[:, 2] = np.stack([k * z * x - s * y, k * z * y + s * x, c + k * z * z], 1)
+    out = m.copy()
+    out[:, :, :3] = r @ m[:, :, :3]
+    return out.reshape(-1, 12)

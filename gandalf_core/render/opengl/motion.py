@@ -1,0 +1,62 @@
+"""The GPU-driven motion pass on OpenGL: a compute shader (GLSL 4.30) reads the frame's instance buffer and the
+motion rows as shader storage buffers and writes the moved rows into a buffer the draws then read as their
+instance attributes (a GL buffer is only bytes: the same object is a storage and a vertex buffer)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import moderngl
+
+from ..capabilities import require_opengl
+from ..gpu_motion import KERNEL, WORKGROUP, MotionFrame
+from ..shader_files import SNIPPETS_DIR, load_shader
+
+
+class GLMotionPass:
+    """Built on the first frame that has GPU-driven motion: the kernel, the motion rows and the output buffer."""
+
+    def __init__(self, ctx: moderngl.Context, stats: Any) -> None:
+        require_opengl(ctx, 430, "compute shaders", "GPU-driven motion")
+        self.ctx = ctx
+        self.stats = stats
+        self.program = ctx.compute_shader(load_shader(SNIPPETS_DIR / f"{KERNEL}.comp", "compute", "glsl").text)
+        self.motion: moderngl.Buffer | None = None
+        self.moved: moderngl.Buffer | None = None
+        self.version: tuple[object, int] | None = None
+
+    def run(self, instances: moderngl.Buffer, count: int, frame: MotionFrame) -> moderngl.Buffer:
+        """Move ``count`` instance rows of ``instances``; the buffer the draws read them from."""
+        groups = -(-count // WORKGROUP)
+        limit = int(self.ctx.info["GL_MAX_COMPUTE_WORK_GROUP_COUNT"][0])
+        if groups > limit:
+            raise ValueError(f"GPU-driven motion: {count} instances need {groups} workgroups of {WORKGROUP}, more than "
+                             f"this context dispatches at once ({limit}); move fewer entities on the GPU")
+        rows = frame.rows
+        if self.version != frame.version or self.motion is None or self.motion.size < rows.nbytes:
+            if self.motion is None or self.motion.size < rows.nbytes:
+                if self.motion is not None:
+                    self.motion.release()
+                self.motion = self.ctx.buffer(reserve=max(rows.nbytes, 16))
+                self.stats["buffers_created"] += 1
+            self.motion.write(rows)
+            self.version = frame.version
+        if self.moved is None or self.moved.size < instances.size:
+            if self.moved is not None:
+                self.moved.release()
+            self.moved = self.ctx.buffer(reserve=instances.size)
+            self.stats["buffers_created"] += 1
+        instances.bind_to_storage_buffer(0)
+        self.motion.bind_to_storage_buffer(1)
+        self.moved.bind_to_storage_buffer(2)
+        self.program["u_time"].value = frame.time
+        self.program["u_count"].value = count
+        self.program.run(group_x=groups)
+        self.ctx.memory_barrier()  # the draws read what the kernel wrote
+        self.stats["motion_passes"] += 1
+        return self.moved
+
+    def release(self) -> None:
+        for obj in (self.motion, self.moved, self.program):
+            if obj is not None:
+                obj.release()

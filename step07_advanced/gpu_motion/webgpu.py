@@ -1,0 +1,17 @@
+"""Step 07 GPU-driven motion, WebGPU variant: ``python -m step07_advanced.gpu_motion.webgpu``.
+
+The engine's compute pass (WGSL, ``render/shaders/motion_spin.wgsl``) is recorded in the frame's command encoder
+before the render passes and writes a buffer that the draws bind as their instance vertex buffer.
+"""
+
+from __future__ import annotations
+
+from gandalf_core.app.cli import launcher
+
+from .scene import PART
+
+create_app, main = launcher(PART, "webgpu", __doc__)
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
