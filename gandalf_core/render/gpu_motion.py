@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..resources.layout import BlockLayout
 from ..systems.motion import GpuMotion
 
 #: float32 per instance in the motion buffer: (axis x, y, z, speed rad/s), (phase rad, 0, 0, 0).
@@ -32,6 +33,15 @@ MOTION_EPOCH = 1024.0
 WORKGROUP = 64
 #: The kernel's file stem in ``render/shaders`` (``.comp`` for GLSL 4.30, ``.wgsl``).
 KERNEL = "motion_spin"
+#: The kernel's uniform block, declared once: the time since the epoch and the number of instances.
+PARAMS_LAYOUT = BlockLayout("MotionParams", [("time", "float"), ("count", "uint")])
+#: Its GL binding point (0 and 1 are the engine's Frame and Lights); WGSL: @group(0) @binding(0).
+PARAMS_BINDING = 4
+#: The block as the kernels include it (``#include "motion_params.glsl"`` / ``"motion_params.wgsl"``).
+PARAMS_INCLUDES = {
+    "motion_params.glsl": PARAMS_LAYOUT.glsl(None, {"time": "u_time", "count": "u_count"}, binding=PARAMS_BINDING),
+    "motion_params.wgsl": PARAMS_LAYOUT.wgsl("params", 0, 0),
+}
 
 
 @dataclass

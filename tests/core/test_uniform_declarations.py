@@ -14,6 +14,7 @@ from pathlib import Path
 
 import pytest
 
+from gandalf_core.render.gpu_motion import PARAMS_INCLUDES as MOTION_INCLUDES
 from gandalf_core.resources.blocks import ENGINE_SNIPPETS, material_snippets
 from gandalf_core.resources.layout import BlockLayout, LayoutError
 from step07_advanced.filter.shaders import PARAMS_INCLUDES as FILTER_INCLUDES
@@ -76,7 +77,8 @@ def test_the_check_sees_what_it_forbids():
 def test_the_generated_includes_are_the_blocks_declarations():
     """The text the shaders include is what the layouts write, in both languages."""
     generated = {**ENGINE_SNIPPETS, **material_snippets(BlockLayout("Material", [("color", "vec4")])),
-                 **PATHTRACER_INCLUDES, **TESSELLATE_INCLUDES, **SIM_INCLUDES, **FILTER_INCLUDES}
+                 **PATHTRACER_INCLUDES, **TESSELLATE_INCLUDES, **SIM_INCLUDES, **FILTER_INCLUDES,
+                 **MOTION_INCLUDES}
     for name, text in generated.items():
         assert _by_hand(text), f"{name}: generated text with no uniform block"
         assert name.endswith((".glsl", ".wgsl"))

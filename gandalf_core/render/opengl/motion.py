@@ -9,7 +9,7 @@ from typing import Any
 import moderngl
 
 from ..capabilities import require_opengl
-from ..gpu_motion import KERNEL, WORKGROUP, MotionFrame
+from ..gpu_motion import KERNEL, PARAMS_BINDING, PARAMS_INCLUDES, PARAMS_LAYOUT, WORKGROUP, MotionFrame
 from ..shader_files import SNIPPETS_DIR, load_shader
 
 
@@ -20,7 +20,9 @@ class GLMotionPass:
         require_opengl(ctx, 430, "compute shaders", "GPU-driven motion")
         self.ctx = ctx
         self.stats = stats
-        self.program = ctx.compute_shader(load_shader(SNIPPETS_DIR / f"{KERNEL}.comp", "compute", "glsl").text)
+        self.program = ctx.compute_shader(load_shader(SNIPPETS_DIR / f"{KERNEL}.comp", "compute", "glsl",
+                                                           generated=PARAMS_INCLUDES).text)
+        self.params = ctx.buffer(reserve=PARAMS_LAYOUT.size)
         self.motion: moderngl.Buffer | None = None
         self.moved: moderngl.Buffer | None = None
         self.version: tuple[object, int] | None = None
@@ -49,14 +51,14 @@ class GLMotionPass:
         instances.bind_to_storage_buffer(0)
         self.motion.bind_to_storage_buffer(1)
         self.moved.bind_to_storage_buffer(2)
-        self.program["u_time"].value = frame.time
-        self.program["u_count"].value = count
+        self.params.write(PARAMS_LAYOUT.pack({"time": frame.time, "count": count}))
+        self.params.bind_to_uniform_block(PARAMS_BINDING)
         self.program.run(group_x=groups)
         self.ctx.memory_barrier()  # the draws read what the kernel wrote
         self.stats["motion_passes"] += 1
         return self.moved
 
     def release(self) -> None:
-        for obj in (self.motion, self.moved, self.program):
+        for obj in (self.motion, self.moved, self.params, self.program):
             if obj is not None:
                 obj.release()

@@ -7,8 +7,8 @@ layout(local_size_x = 64) in;
 layout(std430, binding = 0) readonly buffer Base { vec4 base[]; };
 layout(std430, binding = 1) readonly buffer Motion { vec4 motion[]; };
 layout(std430, binding = 2) writeonly buffer Moved { vec4 moved[]; };
-uniform float u_time;  // seconds since the motion's epoch (under 1024 s: float32 keeps 1e-4 s)
-uniform uint u_count;
+// u_time: seconds since the motion's epoch (under 1024 s: float32 keeps 1e-4 s); u_count: instances.
+#include "motion_params.glsl"
 
 void main() {
     uint i = gl_GlobalInvocationID.x;

@@ -2,11 +2,8 @@
 // base: the instance rows the CPU uploaded (3 vec4 an instance: the affine rows of the model matrix, translation
 // in .w, camera-relative). motion: 2 vec4 an instance: (world axis, speed rad/s), (phase rad, 0, 0, 0).
 // The turned model is R(axis, speed * time + phase) * M: the 3x3 part turns, the translation stays.
-struct MotionParams {
-    time: f32,  // seconds since the motion's epoch (under 1024 s: float32 keeps 1e-4 s)
-    count: u32,
-};
-@group(0) @binding(0) var<uniform> params: MotionParams;
+// params.time: seconds since the motion's epoch (under 1024 s: float32 keeps 1e-4 s); params.count: instances.
+#include "motion_params.wgsl"
 @group(0) @binding(1) var<storage, read> base: array<vec4<f32>>;
 @group(0) @binding(2) var<storage, read> motion: array<vec4<f32>>;
 @group(0) @binding(3) var<storage, read_write> moved: array<vec4<f32>>;

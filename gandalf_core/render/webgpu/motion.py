@@ -6,11 +6,10 @@ from __future__ import annotations
 
 from typing import Any
 
-import numpy as np
 import wgpu
 
 from ..frame import INSTANCE_STRIDE
-from ..gpu_motion import KERNEL, WORKGROUP, MotionFrame
+from ..gpu_motion import KERNEL, PARAMS_INCLUDES, PARAMS_LAYOUT, WORKGROUP, MotionFrame
 from ..shader_files import SNIPPETS_DIR, load_shader
 
 
@@ -20,7 +19,7 @@ class WGPUMotionPass:
     def __init__(self, device: Any, stats: Any) -> None:
         self.device = device
         self.stats = stats
-        source = load_shader(SNIPPETS_DIR / f"{KERNEL}.wgsl", None, "wgsl")
+        source = load_shader(SNIPPETS_DIR / f"{KERNEL}.wgsl", None, "wgsl", generated=PARAMS_INCLUDES)
         storage = wgpu.ShaderStage.COMPUTE
         self.layout = device.create_bind_group_layout(entries=[
             {"binding": 0, "visibility": storage, "buffer": {"type": "uniform"}},
@@ -32,8 +31,8 @@ class WGPUMotionPass:
         self.pipeline = device.create_compute_pipeline(
             layout=device.create_pipeline_layout(bind_group_layouts=[self.layout]),
             compute={"module": module, "entry_point": "cs_main"}, label="motion")
-        self.params = device.create_buffer(size=16, usage=wgpu.BufferUsage.UNIFORM | wgpu.BufferUsage.COPY_DST)
-        self._params = np.zeros(4, dtype=np.float32)
+        self.params = device.create_buffer(size=max(PARAMS_LAYOUT.size, 16),
+                                           usage=wgpu.BufferUsage.UNIFORM | wgpu.BufferUsage.COPY_DST)
         self.motion: Any = None
         self.moved: Any = None
         self.version: tuple[object, int] | None = None
@@ -70,10 +69,7 @@ class WGPUMotionPass:
                 {"binding": 3, "resource": {"buffer": self.moved, "offset": 0, "size": size}},
             ])
             self._group = (instances, self.motion, size, group)
-        params = self._params
-        params[0] = frame.time
-        params.view(np.uint32)[1] = count
-        queue.write_buffer(self.params, 0, params)
+        queue.write_buffer(self.params, 0, PARAMS_LAYOUT.pack({"time": frame.time, "count": count}))
         compute = encoder.begin_compute_pass()
         compute.set_pipeline(self.pipeline)
         compute.set_bind_group(0, self._group[3])
