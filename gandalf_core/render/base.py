@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from ..resources.assets import Assets
-from .frame import PASS_SHADERS, DrawBatch, FrameData, instance_capacity
+from .frame import INSTANCE_STRIDE, PASS_SHADERS, DrawBatch, FrameData, instance_capacity
 from .library import ResourceLib
 from .patches import check_patch_draw
 from .shader_files import engine_shader_files
@@ -208,6 +208,29 @@ class Renderer(ABC):
             return None
         self.stats["buffers_created"] += 1
         return instance_capacity(nbytes)
+
+    def _upload_instances(self, data: FrameData) -> None:
+        """Write the frame's instance rows: only the span that changed when the buffer holds the previous frame's
+        rows, else all of them (into a new buffer when they do not fit)."""
+        instances = data.instances
+        span = self._instance_span(data)
+        if span is not None:
+            lo, hi = span
+            self.stats["instances_uploaded"] = hi - lo
+            if hi > lo:
+                self._write_instances(instances[lo:hi], lo * INSTANCE_STRIDE)
+            return
+        self.stats["instances_uploaded"] = len(instances)
+        self._renew_instance_buffer(self._instance_capacity(instances.nbytes))
+        self._write_instances(instances, 0)
+
+    def _renew_instance_buffer(self, capacity: int | None) -> None:
+        """Before a whole upload: a new instance buffer of ``capacity`` bytes (None: the current one is kept)."""
+        raise NotImplementedError
+
+    def _write_instances(self, rows: np.ndarray, offset: int) -> None:
+        """Write ``rows`` into the instance buffer at byte ``offset``."""
+        raise NotImplementedError
 
     def save_png(self, path: str | Path) -> Path:
         """Write the last frame to a PNG file."""

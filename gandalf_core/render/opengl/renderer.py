@@ -315,25 +315,17 @@ class OpenGLRenderer(Renderer):
             vao.render(moderngl.TRIANGLES, vertices=3)
         self.stats["draw_calls"] += 1
 
-    def _upload_instances(self, data: FrameData) -> None:
-        instances = data.instances
-        span = self._instance_span(data)
-        if span is not None:  # the buffer holds the previous frame's rows: write the ones that changed
-            lo, hi = span
-            self.stats["instances_uploaded"] = hi - lo
-            if hi > lo:
-                self._instance_buffer.write(instances[lo:hi], offset=lo * INSTANCE_STRIDE)
-            return
-        self.stats["instances_uploaded"] = len(instances)
-        capacity = self._instance_capacity(instances.nbytes)
+    def _renew_instance_buffer(self, capacity: int | None) -> None:
         if capacity is None:
             # Fresh storage for this frame's data, so the driver need not wait for last frame's draws.
             self._instance_buffer.orphan()
-        else:
-            if self._instance_buffer is not None:
-                self._instance_buffer.release()
-            self._instance_buffer = self.ctx.buffer(reserve=capacity, dynamic=True)
-        self._instance_buffer.write(instances)
+            return
+        if self._instance_buffer is not None:
+            self._instance_buffer.release()
+        self._instance_buffer = self.ctx.buffer(reserve=capacity, dynamic=True)
+
+    def _write_instances(self, rows: np.ndarray, offset: int) -> None:
+        self._instance_buffer.write(rows, offset=offset)
 
     def _apply_state(self, data: MaterialData, reverse_z: bool, mirrored: bool = False) -> None:
         state = (data.cull, data.depth_test, data.depth_write, data.blend, reverse_z, mirrored)

@@ -347,25 +347,18 @@ class WebGPURenderer(Renderer):
                                                                     self._sky_layout())
         return pipeline, material
 
-    def _upload_instances(self, data: FrameData) -> None:
-        instances = data.instances
-        span = self._instance_span(data)
-        if span is not None:  # the buffer holds the previous frame's rows: write the ones that changed
-            lo, hi = span
-            self.stats["instances_uploaded"] = hi - lo
-            if hi > lo:
-                self.device.queue.write_buffer(self._instance_buffer, lo * INSTANCE_STRIDE, instances[lo:hi])
+    def _renew_instance_buffer(self, capacity: int | None) -> None:
+        if capacity is None:
             return
-        self.stats["instances_uploaded"] = len(instances)
-        capacity = self._instance_capacity(instances.nbytes)
-        if capacity is not None:
-            if self._instance_buffer is not None:
-                self._instance_buffer.destroy()
-            self._instance_buffer = self.device.create_buffer(
-                # STORAGE too: the GPU-driven motion pass reads the rows from it.
-                size=capacity, usage=wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.COPY_DST | wgpu.BufferUsage.STORAGE
-            )
-        self.device.queue.write_buffer(self._instance_buffer, 0, instances)
+        if self._instance_buffer is not None:
+            self._instance_buffer.destroy()
+        self._instance_buffer = self.device.create_buffer(
+            # STORAGE too: the GPU-driven motion pass reads the rows from it.
+            size=capacity, usage=wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.COPY_DST | wgpu.BufferUsage.STORAGE
+        )
+
+    def _write_instances(self, rows: np.ndarray, offset: int) -> None:
+        self.device.queue.write_buffer(self._instance_buffer, offset, rows)
 
     def _pipeline(self, material: WGPUMaterial, mesh: WGPUMesh, reverse_z: bool,
                   mirrored: bool = False) -> tuple[Any, tuple[str, ...]]:
