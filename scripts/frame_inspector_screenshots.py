@@ -11,7 +11,6 @@ viewport (the sphere), and the texture viewer showing the shadow map.
 
 from __future__ import annotations
 
-import argparse
 import os
 import sys
 from pathlib import Path
@@ -82,19 +81,7 @@ def shoot(backend: str, width: int, height: int, out: Path) -> Path:
     return path
 
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0],
-                                     formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
-    parser.add_argument("--out", type=Path, default=ROOT / "docs" / "images", help="folder for the PNG files")
-    parser.add_argument("--size", default="1280x720", help="WIDTHxHEIGHT of the editor frame")
-    parser.add_argument("--backends", default="opengl,webgpu")
-    args = parser.parse_args(argv)
-    width, height = (int(v) for v in args.size.lower().split("x"))
-    args.out.mkdir(parents=True, exist_ok=True)
-    for backend in args.backends.split(","):
-        print(shoot(backend.strip(), width, height, args.out))
-    return 0
-
-
 if __name__ == "__main__":
-    raise SystemExit(main())
+    from editor_screenshots import main  # the editor pictures' options, written once
+
+    raise SystemExit(main(shoot=shoot, doc=__doc__))
