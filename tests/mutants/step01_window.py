@@ -65,19 +65,31 @@ def _(pkg):
     patch(pkg, "hue.hsv_to_rgb", hsv_to_rgb)
 
 
+def _hsv_by_remainder(h, s, v, pick):
+    """hue % 360 (Python's remainder, not fmod): -1e-15 % 360 rounds to 360.0, sector 6; ``pick(table, sector)``
+    chooses the channels from the six sectors' table."""
+    sector = (h % 360.0) / 60.0
+    chroma = v * s
+    x = chroma * (1.0 - abs(sector % 2.0 - 1.0))
+    table = [(chroma, x, 0.0), (x, chroma, 0.0), (0.0, chroma, x), (0.0, x, chroma), (x, 0.0, chroma),
+             (chroma, 0.0, x)]
+    r, g, b = pick(table, sector)
+    return (r + v - chroma, g + v - chroma, b + v - chroma)
+
+
 @mutant(MUTANTS, STEP, "hsv_to_rgb", "tiny-negative-hue", "hue % 360 with six sectors: -1e-15 % 360 is 360.0, "
         "sector 6 is off the table")
 def _(pkg):
-    def hsv_to_rgb(h, s, v):
-        sector = (h % 360.0) / 60.0
-        chroma = v * s
-        x = chroma * (1.0 - abs(sector % 2.0 - 1.0))
-        table = [(chroma, x, 0.0), (x, chroma, 0.0), (0.0, chroma, x), (0.0, x, chroma), (x, 0.0, chroma),
-                 (chroma, 0.0, x)]
-        r, g, b = table[int(sector)]
-        return (r + v - chroma, g + v - chroma, b + v - chroma)
+    patch(pkg, "hue.hsv_to_rgb", lambda h, s, v: _hsv_by_remainder(h, s, v, lambda table, sector: table[int(sector)]))
 
-    patch(pkg, "hue.hsv_to_rgb", hsv_to_rgb)
+
+@mutant(MUTANTS, STEP, "hsv_to_rgb", "tiny-negative-hue-black", "hue % 360, then a sector test per range of 60° "
+        "(h' in [0, 1), ..., [5, 6)) and black otherwise: -1e-15 % 360 is 360.0, which no range holds")
+def _(pkg):
+    def pick(table, sector):
+        return next((channels for k, channels in enumerate(table) if k <= sector < k + 1), (0.0, 0.0, 0.0))
+
+    patch(pkg, "hue.hsv_to_rgb", lambda h, s, v: _hsv_by_remainder(h, s, v, pick))
 
 
 def _system(pkg, update):
