@@ -30,7 +30,7 @@ sys.path.insert(0, str(ROOT))
 def check(backend: str, width: int, height: int, frames: int) -> dict:
     import importlib
 
-    from gandalf_core.render.capture import capture_frame
+    from step07_advanced.editor.frame_inspector.capture import capture_frame
 
     module = importlib.import_module(f"step07_advanced.showcase.{backend}")
     app = module.create_app(headless=True, width=width, height=height)

@@ -16,10 +16,9 @@ import numpy as np
 from ...resources import MaterialData, ResourceError
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
-from ..base import Renderer
+from ..base import NOT_RECORDING, Renderer
 from ..capabilities import FLOOR, GL_FLOOR, CapabilityError, Needs, check, opengl_offer
 from ..frame import FRAME_FLOATS, INSTANCE_STRIDE, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
-from ..frame_records import NOT_RECORDING
 from ..texture_checks import check_target_size
 from . import raw_gl
 from .libs import (
@@ -188,7 +187,7 @@ class OpenGLRenderer(Renderer):
         # scratch texture unit, which on some drivers is the unit the shadow map is bound to.
         draws = self.resolve_draws(data, assets)
         sky = self._prepare_sky(data.skybox, assets) if data.skybox is not None else None
-        recorder = self.recorder  # a frame capture (render/capture.py), or None
+        recorder = self.recorder  # the frame-capture hook (see Renderer.recorder), or None
         if recorder is not None:
             recorder.begin_frame(self._frame_ubo.read(), self._lights_ubo.read())
         if data.shadows:

@@ -17,11 +17,10 @@ import wgpu
 from ...resources import MaterialData, ResourceError
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_has
-from ..base import Renderer
+from ..base import NOT_RECORDING, Renderer
 from ..capabilities import FLOOR, Needs
 from ..errors import ShaderCompileError
 from ..frame import FRAME_FLOATS, INSTANCE_STRIDE, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
-from ..frame_records import NOT_RECORDING
 from ..shader_files import engine_shader_files, load_shader
 from ..texture_checks import check_target_size
 from .device import request_device
@@ -163,7 +162,7 @@ class WebGPURenderer(Renderer):
                  for batch, material, mesh in self.resolve_draws(data, assets)]
         sky = self._sky_draw(data.skybox, assets, data.reverse_z) if data.skybox is not None else None
         encoder = self.device.create_command_encoder()
-        recorder = self.recorder  # a frame capture (render/capture.py), or None
+        recorder = self.recorder  # the frame-capture hook (see Renderer.recorder), or None
         if recorder is not None:
             recorder.begin_frame(data.frame, data.lights, encoder)
         self._drawn_instances = self._instance_buffer

@@ -42,7 +42,7 @@ def texture_sources(renderer: Any) -> list[TextureSource]:
     out = [TextureSource(FRAME_COLOR, "color target", (renderer.width, renderer.height)),
            TextureSource(FRAME_DEPTH, "depth", (renderer.width, renderer.height))]
     if getattr(renderer, "_shadow", None) is not None:
-        from .frame import SHADOW_MAP_SIZE
+        from gandalf_core.render.frame import SHADOW_MAP_SIZE
 
         out.append(TextureSource(SHADOW_MAP, "depth", (SHADOW_MAP_SIZE, SHADOW_MAP_SIZE)))
     for name in renderer.textures.names():
@@ -117,7 +117,7 @@ _GL_PACK_ALIGNMENT = 0x0D05
 
 
 def _read_gl(renderer: Any, source: TextureSource, face: int, level: int) -> np.ndarray:
-    from .opengl.raw_gl import _gl_function
+    from gandalf_core.render.opengl.raw_gl import gl_function
 
     renderer.make_current()
     if source.name == FRAME_COLOR:
@@ -130,12 +130,12 @@ def _read_gl(renderer: Any, source: TextureSource, face: int, level: int) -> np.
         texture, flip = renderer.textures.get(source.name), False
         target = _GL_TEXTURE_CUBE_MAP if source.kind == "cube" else _GL_TEXTURE_2D
     int_p = ctypes.POINTER(ctypes.c_int)
-    get = _gl_function("glGetIntegerv", (ctypes.c_uint, int_p))
-    bind = _gl_function("glBindTexture", (ctypes.c_uint, ctypes.c_uint))
-    level_iv = _gl_function("glGetTexLevelParameteriv", (ctypes.c_uint, ctypes.c_int, ctypes.c_uint, int_p))
-    image = _gl_function("glGetTexImage", (ctypes.c_uint, ctypes.c_int, ctypes.c_uint, ctypes.c_uint,
+    get = gl_function("glGetIntegerv", (ctypes.c_uint, int_p))
+    bind = gl_function("glBindTexture", (ctypes.c_uint, ctypes.c_uint))
+    level_iv = gl_function("glGetTexLevelParameteriv", (ctypes.c_uint, ctypes.c_int, ctypes.c_uint, int_p))
+    image = gl_function("glGetTexImage", (ctypes.c_uint, ctypes.c_int, ctypes.c_uint, ctypes.c_uint,
                                            ctypes.c_void_p))
-    pixel_store = _gl_function("glPixelStorei", (ctypes.c_uint, ctypes.c_int))
+    pixel_store = gl_function("glPixelStorei", (ctypes.c_uint, ctypes.c_int))
     previous, width, height = ctypes.c_int(), ctypes.c_int(), ctypes.c_int()
     get(_GL_BINDING[target], ctypes.byref(previous))
     bind(target, texture.glo)

@@ -1,18 +1,14 @@
 """The records of a captured frame (:mod:`.capture`): passes in order, and per draw what went into it.
 
-Kept apart from the recorder so that the renderers' base (which holds the "not recording" stand-in) needs nothing
-else of the capture.
+Kept apart from the recorder (:mod:`.capture`) so that the per-draw description it calls (:mod:`.inspect_draw`)
+can build records without importing it back.
 """
 
 from __future__ import annotations
 
 import uuid
-from contextlib import nullcontext
 from dataclasses import dataclass, field
 from typing import Any
-
-#: What a renderer's hooks return when nothing is being captured (reusable, costs one attribute test).
-NOT_RECORDING = nullcontext()
 
 
 @dataclass

@@ -18,8 +18,9 @@ from typing import Any
 
 import numpy as np
 
+from gandalf_core.render.frame import DrawBatch
+
 from .capture import DrawRecord, FrameCapture, FrameRecorder, name_entities
-from .frame import DrawBatch
 
 #: The passes a pick replays (the shadow map and the overlays write no pixel of the scene).
 PICKED_PASSES = ("opaque", "sky", "transparent")
@@ -60,7 +61,7 @@ class Pick:
 def pick(app: Any, x: int, y: int) -> Pick:
     """Render ``app``'s scene once more (its next frame's data, into the renderer's own target) and pick pixel
     (``x`` from the left, ``y`` from the top)."""
-    from .render_system import RenderSystem
+    from gandalf_core.render.render_system import RenderSystem
 
     systems = [s for s in app.scene.systems if isinstance(s, RenderSystem)]
     if not systems:
