@@ -69,6 +69,9 @@ class Renderer(ABC):
         #: render_pass)`` at the end of the scene's render pass (colour ``renderer.color_view``, depth
         #: ``renderer.depth_view``), so that an overlay draws into the frame without a pass of its own.
         self.overlays: list[Callable[..., None]] = []
+        #: GPU objects that code outside the engine keeps with this renderer (a frame's ``instance_pass``, step 07's
+        #: GPU-driven motion), by name: each has ``release()``, called when the renderer is released.
+        self.attachments: dict[str, Any] = {}
 
     @property
     def aspect(self) -> float:

@@ -30,11 +30,11 @@ from gandalf_core.render.render_system import RenderSystem
 from gandalf_core.resources.blocks import BLOCK_BINDINGS, FRAME_LAYOUT, LIGHTS_LAYOUT, WGSL_BINDINGS
 
 from .frame_records import DrawRecord, FrameCapture, PassRecord
-from .gpu_timer import GpuTimer, gpu_timer
+from .gpu_timer import GpuTimer
 from .inspect_draw import describe_draw
 
 __all__ = ["NOT_RECORDING", "DrawRecord", "FrameCapture", "FrameRecorder", "PassRecord", "capture_frame",
-           "compute_recorded", "name_entities"]
+           "compute_recorded", "gpu_timer", "name_entities"]
 
 class FrameRecorder:
     """Receives a renderer's pass and draw hooks while one frame is captured (see :func:`capture_frame`)."""
@@ -221,6 +221,17 @@ class FrameRecorder:
                               bool(batch is not None and batch.mirrored), sky)
         return describe_draw(self.renderer, index, pass_name, shader, batch, material, mesh, reverse_z,
                              self._blocks, sky, pipeline)
+
+
+def gpu_timer(renderer: Any) -> GpuTimer:
+    """A timer for ``renderer``'s context or device (check :attr:`GpuTimer.available`)."""
+    if renderer.backend == "opengl":
+        from .gpu_timer_gl import GLTimer
+
+        return GLTimer(renderer.ctx)
+    from .gpu_timer_wgpu import WGPUTimer
+
+    return WGPUTimer(renderer.device, getattr(renderer, "adapter", None))
 
 
 #: The recorder capturing a frame of each context or device (by id), while it captures.

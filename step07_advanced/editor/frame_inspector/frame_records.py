@@ -10,6 +10,10 @@ import uuid
 from dataclasses import dataclass, field
 from typing import Any
 
+import numpy as np
+
+from gandalf_core.render.frame import DrawBatch
+
 
 @dataclass
 class DrawRecord:
@@ -75,3 +79,12 @@ class FrameCapture:
     def draws_of(self, entity: uuid.UUID) -> list[DrawRecord]:
         """The draws that drew ``entity``."""
         return [d for d in self.draws if entity in d.entities]
+
+
+def instance_batches(draw: DrawRecord) -> list[DrawBatch | None]:
+    """One batch per instance of a scene draw (None for the sky's one triangle)."""
+    if draw.mesh is None:
+        return [None]
+    return [DrawBatch(draw.mesh, draw.material, np.array(draw.rows[i:i + 1] or [0], dtype=np.intp),
+                      first_instance=draw.first_instance + i, mirrored=draw.mirrored)
+            for i in range(draw.instances)]

@@ -12,7 +12,9 @@ begins and ends, and :meth:`GpuTimer.results` gives each label's milliseconds on
   :attr:`GpuTimer.reason` says why.
 
 Costs nothing unless a timer is made: no query object exists before. The labels are the caller's; a label used
-twice adds up. A typical use (what the frame capture does; a benchmark can do the same)::
+twice adds up. Each API's timer is in :mod:`.gpu_timer_gl` and :mod:`.gpu_timer_wgpu`;
+:func:`~.capture.gpu_timer` makes the one of a renderer. A typical use (what the frame capture does; a benchmark
+can do the same)::
 
     timer = gpu_timer(renderer)
     timer.begin("opaque", where)   # where: the WebGPU encoder or pass encoder the draws go into (ignored by GL)
@@ -28,8 +30,6 @@ rasterised by the CPU's threads, so a per-draw split is coarse; on a GPU they ti
 from __future__ import annotations
 
 from typing import Any
-
-from gandalf_core.render.gpu_timing import TIMESTAMP_FEATURES, TIMING_VARIABLE
 
 #: WebGPU's largest query set: at most this many timestamps (half as many spans) per timed frame.
 MAX_TIMESTAMPS = 4096
@@ -108,124 +108,3 @@ class GpuTimer:
 
     def _read(self, count: int) -> list[int]:
         raise NotImplementedError
-
-
-class GLTimer(GpuTimer):
-    """``glQueryCounter(GL_TIMESTAMP)`` queries on a moderngl context (made current before each call)."""
-
-    _GL_TIMESTAMP = 0x8E28
-    _GL_QUERY_RESULT = 0x8866
-    _GL_QUERY_COUNTER_BITS = 0x8864
-
-    def __init__(self, ctx: Any) -> None:
-        super().__init__()
-        import ctypes
-
-        from gandalf_core.render.opengl import raw_gl
-        from gandalf_core.render.opengl.libs import make_current
-
-        self.ctx, self._ctypes, self._make_current = ctx, ctypes, make_current
-        self._ids: list[int] = []
-        uint_p = ctypes.POINTER(ctypes.c_uint)
-        try:
-            self._gen = raw_gl.gl_function("glGenQueries", (ctypes.c_int, uint_p))
-            self._delete = raw_gl.gl_function("glDeleteQueries", (ctypes.c_int, uint_p))
-            self._counter = raw_gl.gl_function("glQueryCounter", (ctypes.c_uint, ctypes.c_uint))
-            self._result = raw_gl.gl_function("glGetQueryObjectui64v", (ctypes.c_uint, ctypes.c_uint,
-                                                                          ctypes.POINTER(ctypes.c_uint64)))
-            query_iv = raw_gl.gl_function("glGetQueryiv", (ctypes.c_uint, ctypes.c_uint,
-                                                             ctypes.POINTER(ctypes.c_int)))
-        except RuntimeError:
-            self.reason = "this OpenGL library exports no timer queries (glQueryCounter)"
-            return
-        make_current(ctx)
-        bits = ctypes.c_int()
-        query_iv(self._GL_TIMESTAMP, self._GL_QUERY_COUNTER_BITS, ctypes.byref(bits))
-        if bits.value <= 0:
-            self.reason = f"{ctx.info.get('GL_RENDERER', 'this driver')} has no GL_TIMESTAMP counter"
-            return
-        self.available = True
-        self.reason = f"GL_TIMESTAMP queries ({bits.value} bits) on {ctx.info.get('GL_RENDERER', '?')}"
-
-    def _stamp(self, where: Any) -> int | None:
-        index = self._count
-        if index >= len(self._ids):
-            grow = max(64, len(self._ids))
-            ids = (self._ctypes.c_uint * grow)()
-            self._make_current(self.ctx)
-            self._gen(grow, ids)
-            self._ids.extend(ids)
-        self._counter(self._ids[index], self._GL_TIMESTAMP)
-        self._count += 1
-        return index
-
-    def _read(self, count: int) -> list[int]:
-        self._make_current(self.ctx)
-        value = self._ctypes.c_uint64()
-        out = []
-        for query in self._ids[:count]:
-            self._result(query, self._GL_QUERY_RESULT, self._ctypes.byref(value))
-            out.append(value.value)
-        return out
-
-    def release(self) -> None:
-        if self._ids:
-            self._make_current(self.ctx)
-            self._delete(len(self._ids), (self._ctypes.c_uint * len(self._ids))(*self._ids))
-            self._ids = []
-
-
-class WGPUTimer(GpuTimer):
-    """Timestamps written with wgpu-native's ``write_timestamp`` into one query set, resolved into a buffer."""
-
-    def __init__(self, device: Any, adapter: Any = None) -> None:
-        super().__init__()
-        self.device = device
-        missing = [f for f in TIMESTAMP_FEATURES if f not in device.features]
-        if missing:
-            offered = adapter is not None and set(TIMESTAMP_FEATURES) <= set(adapter.features)
-            name = adapter.info.get("device", "this adapter") if adapter is not None else "this adapter"
-            self.reason = (f"the WebGPU device lacks {', '.join(repr(f) for f in missing)}: "
-                           + (f"{name} offers them; start with {TIMING_VARIABLE}=1 to request them" if offered
-                              else f"{name} does not offer them (a browser never offers timestamps inside passes)"))
-            return
-        import wgpu
-        from wgpu.backends.wgpu_native import extras
-
-        self._write = extras.write_timestamp
-        self._set = device.create_query_set(type="timestamp", count=MAX_TIMESTAMPS, label="gpu timer")
-        self._buffer = device.create_buffer(size=MAX_TIMESTAMPS * 8,
-                                            usage=wgpu.BufferUsage.QUERY_RESOLVE | wgpu.BufferUsage.COPY_SRC)
-        self.available = True
-        self.reason = f"WebGPU timestamp queries on {adapter.info.get('device', '?') if adapter else 'this device'}"
-
-    def _stamp(self, where: Any) -> int | None:
-        if where is None or self._count >= MAX_TIMESTAMPS:
-            return None
-        index = self._count
-        self._write(where, self._set, index)
-        self._count += 1
-        return index
-
-    def resolve(self, encoder: Any = None) -> None:
-        if self.available and self._count and encoder is not None:
-            encoder.resolve_query_set(self._set, 0, self._count, self._buffer, 0)
-
-    def _read(self, count: int) -> list[int]:
-        import numpy as np
-
-        data = self.device.queue.read_buffer(self._buffer, 0, count * 8)
-        return np.frombuffer(data, dtype=np.uint64).tolist()
-
-    def release(self) -> None:
-        if self.available:
-            self._set.destroy()
-            self._buffer.destroy()
-            self.available = False
-
-
-def gpu_timer(renderer: Any) -> GpuTimer:
-    """A timer for ``renderer``'s context or device (check :attr:`GpuTimer.available`)."""
-    if renderer.backend == "opengl":
-        return GLTimer(renderer.ctx)
-    return WGPUTimer(renderer.device, getattr(renderer, "adapter", None))

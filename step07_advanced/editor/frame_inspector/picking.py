@@ -16,10 +16,6 @@ import uuid
 from dataclasses import dataclass
 from typing import Any
 
-import numpy as np
-
-from gandalf_core.render.frame import DrawBatch
-
 from .capture import DrawRecord, FrameCapture, FrameRecorder, name_entities
 
 #: The passes a pick replays (the shadow map and the overlays write no pixel of the scene).
@@ -96,9 +92,10 @@ def pick_captured(renderer: Any, capture: FrameCapture, data: Any, assets: Any, 
     calls = dict(renderer.stats)
     try:
         if renderer.backend == "opengl":
-            samples, depth = _replay_gl(renderer, draws, data, assets, x, y)
+            from .picking_gl import replay
         else:
-            samples, depth = _replay_wgpu(renderer, draws, data, assets, x, y)
+            from .picking_wgpu import replay
+        samples, depth = replay(renderer, draws, data, assets, x, y)
     finally:
         renderer.stats.update(calls)  # a pick is not a frame: the counters stay the frame's
     winner = None
@@ -110,115 +107,3 @@ def pick_captured(renderer: Any, capture: FrameCapture, data: Any, assets: Any, 
     draw, instance = winner
     entity = draw.entities[instance] if instance is not None and instance < len(draw.entities) else None
     return Pick(x, y, draw, instance, entity, depth)
-
-
-def _instances(draw: DrawRecord) -> list[DrawBatch | None]:
-    """One batch per instance of a scene draw (None for the sky's one triangle)."""
-    if draw.mesh is None:
-        return [None]
-    return [DrawBatch(draw.mesh, draw.material, np.array(draw.rows[i:i + 1] or [0], dtype=np.intp),
-                      first_instance=draw.first_instance + i, mirrored=draw.mirrored)
-            for i in range(draw.instances)]
-
-
-def _replay_gl(renderer: Any, draws: list[DrawRecord], data: Any, assets: Any, x: int,
-               y: int) -> tuple[list[Any], float]:
-    renderer.make_current()
-    ctx = renderer.ctx
-    fbo = renderer.framebuffer
-    fbo.use()
-    gl_y = renderer.height - 1 - y  # GL's rows count from the bottom
-    pixel = (x, gl_y, 1, 1)
-    r, g, b, a = (float(c) for c in data.clear_color)
-    fbo.depth_mask = True
-    fbo.clear(r, g, b, a, depth=0.0 if data.reverse_z else 1.0, viewport=pixel)
-    renderer._clip_depth(data.reverse_z)
-    renderer._state = None
-    results: list[Any] = []
-    fbo.scissor = pixel
-    try:
-        for draw in draws:
-            if draw.mesh is None:  # the sky
-                sky = renderer._prepare_sky(draw.sky, assets)
-                query = ctx.query(samples=True)
-                with query:
-                    renderer._draw_sky(sky, data.reverse_z)
-                results.append(((draw, None), query))
-                continue
-            material = renderer.materials.get(draw.material)
-            mesh = renderer.meshes.get(draw.mesh)
-            renderer._apply_state(material.data, data.reverse_z, draw.mirrored)
-            material.apply()
-            for i, batch in enumerate(_instances(draw)):
-                query = ctx.query(samples=True)
-                with query:
-                    renderer._draw_batch(material.shader, mesh, batch)
-                results.append(((draw, i), query))
-        depth = np.frombuffer(fbo.read(viewport=pixel, attachment=-1, dtype="f4"), dtype=np.float32)[0]
-    finally:
-        fbo.scissor = None
-        renderer._clip_depth(False)
-        renderer._state = None
-    return [(key, query.samples) for key, query in results], float(depth)
-
-
-def _replay_wgpu(renderer: Any, draws: list[DrawRecord], data: Any, assets: Any, x: int,
-                 y: int) -> tuple[list[Any], float]:
-    import wgpu
-
-    device = renderer.device
-    count = sum(len(_instances(d)) for d in draws) or 1
-    usage = wgpu.TextureUsage
-    size = (renderer.width, renderer.height, 1)
-    color = device.create_texture(size=size, format=renderer._target_format, usage=usage.RENDER_ATTACHMENT)
-    depth = device.create_texture(size=size, format="depth32float", usage=usage.RENDER_ATTACHMENT | usage.COPY_SRC)
-    queries = device.create_query_set(type="occlusion", count=count)
-    resolved = device.create_buffer(size=8 * count, usage=wgpu.BufferUsage.QUERY_RESOLVE | wgpu.BufferUsage.COPY_SRC)
-    try:
-        encoder = device.create_command_encoder()
-        rpass = encoder.begin_render_pass(
-            color_attachments=[{"view": color.create_view(), "clear_value": tuple(float(c) for c in data.clear_color),
-                                "load_op": "clear", "store_op": "store"}],
-            depth_stencil_attachment={"view": depth.create_view(), "depth_clear_value": 0.0 if data.reverse_z
-                                      else 1.0, "depth_load_op": "clear", "depth_store_op": "store"},
-            occlusion_query_set=queries,
-        )
-        rpass.set_scissor_rect(x, y, 1, 1)
-        shadow = renderer._shadow
-        rpass.set_bind_group(0, shadow[2] if data.shadows and shadow is not None else renderer._frame_group)
-        keys: list[Any] = []
-        for draw in draws:
-            if draw.mesh is None:  # the sky
-                pipeline, group = renderer._sky_draw(draw.sky, assets, data.reverse_z)
-                rpass.set_pipeline(pipeline)
-                rpass.set_bind_group(1, group)
-                rpass.begin_occlusion_query(len(keys))
-                rpass.draw(3)
-                rpass.end_occlusion_query()
-                keys.append((draw, None))
-                continue
-            material = renderer.materials.get(draw.material)
-            mesh = renderer.meshes.get(draw.mesh)
-            pipeline, attributes = renderer._pipeline(material, mesh, data.reverse_z, draw.mirrored)
-            rpass.set_pipeline(pipeline)
-            if material.bind_group is not None:
-                rpass.set_bind_group(1, material.bind_group)
-            for i, batch in enumerate(_instances(draw)):
-                rpass.begin_occlusion_query(len(keys))
-                renderer._draw_batch(rpass, material.shader, mesh, attributes, batch)
-                rpass.end_occlusion_query()
-                keys.append((draw, i))
-        rpass.end()
-        encoder.resolve_query_set(queries, 0, count, resolved, 0)
-        device.queue.submit([encoder.finish()])
-        samples = np.frombuffer(device.queue.read_buffer(resolved, 0, 8 * count), dtype=np.uint64).tolist()
-        # A depth texture is copied whole or not at all (WebGPU's rule): read it all, keep one texel.
-        data_bytes = device.queue.read_texture({"texture": depth, "origin": (0, 0, 0), "aspect": "depth-only"},
-                                               {"offset": 0, "bytes_per_row": 4 * renderer.width,
-                                                "rows_per_image": renderer.height}, size)
-        value = float(np.frombuffer(data_bytes, dtype=np.float32)[y * renderer.width + x])
-    finally:
-        for obj in (color, depth, resolved):
-            obj.destroy()
-        queries.destroy()
-    return list(zip(keys, samples)), value

@@ -13,44 +13,14 @@ and targets carry ``COPY_SRC`` for it; a depth texture is read whole at level 0,
 
 from __future__ import annotations
 
-import ctypes
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
-FRAME_COLOR, FRAME_DEPTH, SHADOW_MAP = "frame colour", "frame depth", "shadow map"
-CUBE_FACES = ("+X", "-X", "+Y", "-Y", "+Z", "-Z")
+from .texture_sources import CUBE_FACES, FRAME_COLOR, FRAME_DEPTH, SHADOW_MAP, TextureSource, texture_sources
 
-
-@dataclass(frozen=True)
-class TextureSource:
-    """A readable texture: ``name``, ``kind`` ("2d", "cube", "color target" or "depth"), size of level 0, levels."""
-
-    name: str
-    kind: str
-    size: tuple[int, int]
-    levels: int = 1
-
-    @property
-    def faces(self) -> int:
-        return 6 if self.kind == "cube" else 1
-
-
-def texture_sources(renderer: Any) -> list[TextureSource]:
-    """What :func:`read_source` can read now."""
-    out = [TextureSource(FRAME_COLOR, "color target", (renderer.width, renderer.height)),
-           TextureSource(FRAME_DEPTH, "depth", (renderer.width, renderer.height))]
-    if getattr(renderer, "_shadow", None) is not None:
-        from gandalf_core.render.frame import SHADOW_MAP_SIZE
-
-        out.append(TextureSource(SHADOW_MAP, "depth", (SHADOW_MAP_SIZE, SHADOW_MAP_SIZE)))
-    for name in renderer.textures.names():
-        data = renderer.textures.data_of(name)
-        cube = not hasattr(data, "width")
-        size = (data.size, data.size) if cube else (data.width, data.height)
-        out.append(TextureSource(name, "cube" if cube else "2d", size, data.mip_levels))
-    return out
+__all__ = ["CUBE_FACES", "FRAME_COLOR", "FRAME_DEPTH", "SHADOW_MAP", "TextureSource", "display_rgba", "read_source",
+           "release_display", "texture_sources", "upload_display"]
 
 
 def read_source(renderer: Any, name: str, face: int = 0, level: int = 0) -> np.ndarray:
@@ -63,8 +33,10 @@ def read_source(renderer: Any, name: str, face: int = 0, level: int = 0) -> np.n
         raise ValueError(f"texture viewer: '{name}' has {source.faces} face(s) and {source.levels} level(s); "
                          f"asked for face {face}, level {level}")
     if renderer.backend == "opengl":
-        return _read_gl(renderer, source, face, level)
-    return _read_wgpu(renderer, source, face, level)
+        from .texture_readback_gl import read
+    else:
+        from .texture_readback_wgpu import read
+    return read(renderer, source, face, level)
 
 
 def display_rgba(texels: np.ndarray) -> np.ndarray:
@@ -82,22 +54,11 @@ def upload_display(renderer: Any, rgba: np.ndarray, texture: Any = None) -> tupl
     """``rgba`` (from :func:`display_rgba`) in a plain RGBA8 texture a GUI can show: ``(texture, shown)``, where
     ``shown`` is what a GUI renderer registers (the GL texture, the wgpu texture's view). ``texture`` (one this
     function made, of the same size) is written again instead of making a new one."""
-    height, width = rgba.shape[:2]
     if renderer.backend == "opengl":
-        renderer.make_current()
-        if texture is None:
-            texture = renderer.ctx.texture((width, height), 4)
-        texture.write(np.ascontiguousarray(rgba).tobytes())
-        return texture, texture
-    import wgpu
-
-    if texture is None:
-        texture = renderer.device.create_texture(size=(width, height, 1), format="rgba8unorm", label="texture viewer",
-                                                 usage=wgpu.TextureUsage.TEXTURE_BINDING | wgpu.TextureUsage.COPY_DST)
-    renderer.device.queue.write_texture({"texture": texture, "mip_level": 0, "origin": (0, 0, 0)},
-                                        np.ascontiguousarray(rgba), {"offset": 0, "bytes_per_row": 4 * width},
-                                        (width, height, 1))
-    return texture, texture.create_view()
+        from .texture_readback_gl import upload
+    else:
+        from .texture_readback_wgpu import upload
+    return upload(renderer, np.ascontiguousarray(rgba), texture)
 
 
 def release_display(texture: Any) -> None:
@@ -106,70 +67,3 @@ def release_display(texture: Any) -> None:
         texture.release()
     else:
         texture.destroy()
-
-
-# --- OpenGL ---------------------------------------------------------------------------------------
-_GL_TEXTURE_2D, _GL_TEXTURE_CUBE_MAP, _GL_CUBE_FACE0 = 0x0DE1, 0x8513, 0x8515
-_GL_BINDING = {_GL_TEXTURE_2D: 0x8069, _GL_TEXTURE_CUBE_MAP: 0x8514}
-_GL_TEXTURE_WIDTH, _GL_TEXTURE_HEIGHT = 0x1000, 0x1001
-_GL_RGBA, _GL_UNSIGNED_BYTE, _GL_DEPTH_COMPONENT, _GL_FLOAT = 0x1908, 0x1401, 0x1902, 0x1406
-_GL_PACK_ALIGNMENT = 0x0D05
-
-
-def _read_gl(renderer: Any, source: TextureSource, face: int, level: int) -> np.ndarray:
-    from gandalf_core.render.opengl.raw_gl import gl_function
-
-    renderer.make_current()
-    if source.name == FRAME_COLOR:
-        texture, target, flip = renderer._color, _GL_TEXTURE_2D, True
-    elif source.name == FRAME_DEPTH:
-        texture, target, flip = renderer._depth, _GL_TEXTURE_2D, True
-    elif source.name == SHADOW_MAP:
-        texture, target, flip = renderer._shadow[0], _GL_TEXTURE_2D, True
-    else:  # library textures are written top row first: read back in the same order
-        texture, flip = renderer.textures.get(source.name), False
-        target = _GL_TEXTURE_CUBE_MAP if source.kind == "cube" else _GL_TEXTURE_2D
-    int_p = ctypes.POINTER(ctypes.c_int)
-    get = gl_function("glGetIntegerv", (ctypes.c_uint, int_p))
-    bind = gl_function("glBindTexture", (ctypes.c_uint, ctypes.c_uint))
-    level_iv = gl_function("glGetTexLevelParameteriv", (ctypes.c_uint, ctypes.c_int, ctypes.c_uint, int_p))
-    image = gl_function("glGetTexImage", (ctypes.c_uint, ctypes.c_int, ctypes.c_uint, ctypes.c_uint,
-                                           ctypes.c_void_p))
-    pixel_store = gl_function("glPixelStorei", (ctypes.c_uint, ctypes.c_int))
-    previous, width, height = ctypes.c_int(), ctypes.c_int(), ctypes.c_int()
-    get(_GL_BINDING[target], ctypes.byref(previous))
-    bind(target, texture.glo)
-    face_target = _GL_CUBE_FACE0 + face if target == _GL_TEXTURE_CUBE_MAP else target
-    try:
-        level_iv(face_target, level, _GL_TEXTURE_WIDTH, ctypes.byref(width))
-        level_iv(face_target, level, _GL_TEXTURE_HEIGHT, ctypes.byref(height))
-        depth = source.kind == "depth"
-        out = np.empty((height.value, width.value) + (() if depth else (4,)), dtype=np.float32 if depth else np.uint8)
-        pixel_store(_GL_PACK_ALIGNMENT, 1)
-        image(face_target, level, _GL_DEPTH_COMPONENT if depth else _GL_RGBA, _GL_FLOAT if depth else _GL_UNSIGNED_BYTE,
-              out.ctypes.data)
-    finally:
-        bind(target, previous.value)
-    return np.ascontiguousarray(out[::-1]) if flip else out
-
-
-# --- WebGPU ---------------------------------------------------------------------------------------
-def _read_wgpu(renderer: Any, source: TextureSource, face: int, level: int) -> np.ndarray:
-    if source.name == FRAME_COLOR:
-        texture = renderer._color
-    elif source.name == FRAME_DEPTH:
-        texture = renderer._depth
-    elif source.name == SHADOW_MAP:
-        texture = renderer._shadow[0]
-    else:
-        texture = renderer.textures.get(source.name).texture
-    width, height = max(1, source.size[0] >> level), max(1, source.size[1] >> level)
-    depth = source.kind == "depth"
-    where: dict[str, Any] = {"texture": texture, "mip_level": level, "origin": (0, 0, face)}
-    if depth:
-        where["aspect"] = "depth-only"
-    data = renderer.device.queue.read_texture(where, {"offset": 0, "bytes_per_row": 4 * width,
-                                                      "rows_per_image": height}, (width, height, 1))
-    if depth:
-        return np.frombuffer(data, dtype=np.float32).reshape(height, width).copy()
-    return np.frombuffer(data, dtype=np.uint8).reshape(height, width, 4).copy()
