@@ -51,6 +51,28 @@ def parse_or_answer(parser: argparse.ArgumentParser, argv: list[str] | None, run
     return None
 
 
+def backends_parser(doc: str, frames: int, frames_help: str = "measured frames", **options: Any
+                    ) -> argparse.ArgumentParser:
+    """The command line of a benchmark measured once per API: ``--backends``, ``--size WIDTHxHEIGHT`` and
+    ``--frames`` (``options`` go to the parser; add more arguments before parsing)."""
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0], **options)
+    parser.add_argument("--backends", default=",".join(BACKENDS))
+    parser.add_argument("--size", default="1280x720", help="WIDTHxHEIGHT")
+    parser.add_argument("--frames", type=int, default=frames, help=frames_help)
+    return parser
+
+
+def per_backend(args: argparse.Namespace, measure: Any, *extra: Any) -> list[dict[str, Any]]:
+    """``measure(backend, width, height, frames, *extra)`` for each of ``--backends``, each result printed as one
+    JSON line as it comes; the results."""
+    width, height = (int(v) for v in args.size.lower().split("x"))
+    results = []
+    for backend in args.backends.split(","):
+        results.append(measure(backend.strip(), width, height, args.frames, *extra))
+        print(json.dumps(results[-1]), flush=True)
+    return results
+
+
 def rss_mb() -> float:
     """Peak resident set size of this process so far, in MiB (Linux reports KiB, macOS bytes)."""
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss

@@ -22,9 +22,7 @@ Run by hand, never in CI::
 
 from __future__ import annotations
 
-import argparse
 import gc
-import json
 import statistics
 import sys
 import time
@@ -35,6 +33,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent))
 
+from bench_common import backends_parser, per_backend  # noqa: E402
 from bench_scenes import build_scene, renderer_name  # noqa: E402
 
 SHADERS = HERE / "shaders"
@@ -115,15 +114,10 @@ def measure(backend: str, width: int, height: int, frames: int, rounds: int) -> 
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--backends", default="opengl,webgpu")
-    parser.add_argument("--size", default="1280x720", help="WIDTHxHEIGHT")
-    parser.add_argument("--frames", type=int, default=100, help="frames per mode and round")
+    parser = backends_parser(__doc__, 100, "frames per mode and round")
     parser.add_argument("--rounds", type=int, default=21)
     args = parser.parse_args(argv)
-    width, height = (int(v) for v in args.size.lower().split("x"))
-    for backend in args.backends.split(","):
-        print(json.dumps(measure(backend.strip(), width, height, args.frames, args.rounds)), flush=True)
+    per_backend(args, measure, args.rounds)
     return 0
 
 

@@ -30,8 +30,8 @@ system comes in two forms (``--rotate``):
 * ``angle``: each entity's rotation set from an absolute angle (``phase + speed * time``) straight into
   the quaternion column, as ``raw_ceiling.py`` builds its matrices: no quaternion product, so what is
   left is the engine's own per-frame cost;
-* ``gpu``: the engine's ``SpinSystem(path="gpu")``: no per-frame CPU work for the models, the renderer's
-  compute pass turns their instance rows (GPU-driven motion).
+* ``gpu``: step 07's ``GpuSpinSystem`` (``step07_advanced.gpu_motion``): no per-frame CPU work for the models,
+  a compute pass the renderer runs turns their instance rows (GPU-driven motion).
 
 Every measured frame ends with a read-back (``--sync``) so the GPU has finished the frame:
 
@@ -89,7 +89,8 @@ def build_scene(n: int, rotating: bool | str, model: str, rotate_mode: str, spaw
     from gandalf_core.components import CameraComponent, ClearColorComponent, MaterialComponent, MeshComponent
     from gandalf_core.math import quat_from_axis_angle, quat_mul
     from gandalf_core.resources import MaterialData, primitives
-    from gandalf_core.systems.spin import SpinComponent, SpinSystem
+    from gandalf_core.systems.spin import SpinComponent
+    from step07_advanced.gpu_motion.system import GpuSpinSystem
 
     class RotateBatchSystem(System):
         """Fast form: one vectorised quaternion product over the store's quaternion column."""
@@ -181,7 +182,7 @@ def build_scene(n: int, rotating: bool | str, model: str, rotate_mode: str, spaw
         scene.create_entity(*components)
     if rotating:
         systems = {"batch": RotateBatchSystem, "entity": RotateEntitySystem, "angle": RotateAngleSystem,
-                   "gpu": lambda: SpinSystem(path="gpu")}
+                   "gpu": GpuSpinSystem}
         scene.add_system(systems[rotate_mode]())
     return scene, mesh
 

@@ -14,8 +14,6 @@ Run by hand, never in CI::
 
 from __future__ import annotations
 
-import argparse
-import json
 import statistics
 import sys
 import time
@@ -25,6 +23,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent))
 
+from bench_common import backends_parser, per_backend  # noqa: E402
 from bench_editor import make_app  # noqa: E402
 from bench_scenes import renderer_name  # noqa: E402
 
@@ -67,14 +66,7 @@ def measure(backend: str, width: int, height: int, frames: int) -> dict:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--backends", default="opengl,webgpu")
-    parser.add_argument("--size", default="1280x720", help="WIDTHxHEIGHT")
-    parser.add_argument("--frames", type=int, default=200, help="GUI frames per state")
-    args = parser.parse_args(argv)
-    width, height = (int(v) for v in args.size.lower().split("x"))
-    for backend in args.backends.split(","):
-        print(json.dumps(measure(backend.strip(), width, height, args.frames)), flush=True)
+    per_backend(backends_parser(__doc__, 200, "GUI frames per state").parse_args(argv), measure)
     return 0
 
 

@@ -17,7 +17,6 @@ passes lies more than 20 % from the median frame time.
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import statistics
 import sys
@@ -25,12 +24,15 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(ROOT / "benchmarks"))
+
+from bench_common import backends_parser, per_backend  # noqa: E402
 
 
 def check(backend: str, width: int, height: int, frames: int) -> dict:
     import importlib
 
-    from gandalf_core.render.capture import capture_frame
+    from step07_advanced.editor.frame_inspector.capture import capture_frame
 
     module = importlib.import_module(f"step07_advanced.showcase.{backend}")
     app = module.create_app(headless=True, width=width, height=height)
@@ -76,20 +78,10 @@ def check(backend: str, width: int, height: int, frames: int) -> dict:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0],
-                                     formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
-    parser.add_argument("--backends", default="opengl,webgpu")
-    parser.add_argument("--size", default="1280x720")
-    parser.add_argument("--frames", type=int, default=15)
-    args = parser.parse_args(argv)
+    args = backends_parser(__doc__, 15, "timed frames", formatter_class=argparse.RawDescriptionHelpFormatter,
+                           epilog=__doc__).parse_args(argv)
     os.environ["GANDALF_GPU_TIMING"] = "1"  # WebGPU devices get the timestamp features (before any is made)
-    width, height = (int(v) for v in args.size.lower().split("x"))
-    ok = True
-    for backend in args.backends.split(","):
-        result = check(backend.strip(), width, height, args.frames)
-        print(json.dumps(result), flush=True)
-        ok = ok and result["ok"]
-    return 0 if ok else 1
+    return 0 if all(result["ok"] for result in per_backend(args, check)) else 1
 
 
 if __name__ == "__main__":

@@ -9,12 +9,15 @@ of the persistence layer, and a file names classes, never code.
 from __future__ import annotations
 
 from .explode.scene import ExplodeComponent, ExplodeSystem
+from .gpu_motion.system import GpuSpinSystem
 from .pathtracer.scene import PathTraceSystem
 from .showcase.particles import ParticleComponent, ParticleSystem
 from .terrain.scene import TessellationSystem
 
 # The particle markers are saved; their system is refused, saying why.
 COMPONENTS = {ParticleComponent: ("index",), ExplodeComponent: ("time", "speed")}
+# The GPU spin is rebuilt from its components (the join times start again when the scene is loaded).
+SYSTEMS = {GpuSpinSystem: ()}
 UNSAVEABLE = {
     ParticleSystem: "the particles live in a GPU buffer that a compute kernel steps (chosen by the variant file for "
                     "its API); a file cannot hold it",

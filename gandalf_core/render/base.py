@@ -10,6 +10,7 @@ from __future__ import annotations
 from abc import ABC, abstractmethod
 from collections import Counter
 from collections.abc import Callable
+from contextlib import nullcontext
 from pathlib import Path
 from typing import Any
 
@@ -24,6 +25,8 @@ from .shader_files import engine_shader_files
 BACKENDS = ("opengl", "webgpu")
 #: Each backend's shading language.
 SHADING_LANGUAGES = {"opengl": "glsl", "webgpu": "wgsl"}
+#: What the pass and draw loops enter when no :attr:`Renderer.recorder` is set (reusable, costs one attribute test).
+NOT_RECORDING = nullcontext()
 
 
 class UnknownBackendError(ValueError):
@@ -45,8 +48,10 @@ class Renderer(ABC):
     backend: str
     #: The buffer of the frame's instance rows (grown by :meth:`_instance_capacity`).
     _instance_buffer: Any = None
-    #: A :class:`~gandalf_core.render.capture.FrameRecorder` while a frame is captured, else None: the pass and draw
-    #: loops call it, so a frame that is not captured pays one test of a local variable per draw.
+    #: The frame-capture hook: None, or while a frame is captured a recorder (the editor's frame inspector installs
+    #: its ``FrameRecorder``, :mod:`step07_advanced.editor.frame_inspector`). The pass and draw loops call its
+    #: ``begin_frame``/``end_frame``, ``begin_target``/``end_target`` and ``with draw(...)``/``with overlay()``, so a
+    #: frame that is not captured pays one test of a local variable per draw.
     recorder: Any = None
     #: ``instances_version`` of the rows the instance buffer holds (see :meth:`_instance_span`).
     _instances_uploaded: tuple[object, int] | None = None
@@ -64,6 +69,9 @@ class Renderer(ABC):
         #: render_pass)`` at the end of the scene's render pass (colour ``renderer.color_view``, depth
         #: ``renderer.depth_view``), so that an overlay draws into the frame without a pass of its own.
         self.overlays: list[Callable[..., None]] = []
+        #: GPU objects that code outside the engine keeps with this renderer (a frame's ``instance_pass``, step 07's
+        #: GPU-driven motion), by name: each has ``release()``, called when the renderer is released.
+        self.attachments: dict[str, Any] = {}
 
     @property
     def aspect(self) -> float:

@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -46,7 +47,6 @@ from ..resources.blocks import LIGHTS_BYTES as LIGHTS_BYTES
 from ..resources.blocks import MAX_LIGHTS as MAX_LIGHTS
 from ..resources.blocks import SHADOW_BYTES as SHADOW_BYTES
 from ..resources.blocks import SHADOW_MAP_SIZE as SHADOW_MAP_SIZE
-from .gpu_motion import MotionFrame
 
 INSTANCE_FLOATS = 12
 INSTANCE_STRIDE = INSTANCE_FLOATS * 4
@@ -93,8 +93,10 @@ class FrameData:
     #: that uploaded exactly that frame last may upload the span alone; any other renderer uploads every row.
     instances_version: tuple[object, int] | None = None
     instances_since: tuple[object, int] | None = None
-    #: GPU-driven motion: the compute pass that moves instance rows before the draws read them (None: no pass).
-    motion: MotionFrame | None = None
+    #: GPU work over the instance rows before the draws read them (the render system's ``instance_pass`` hook:
+    #: ``run(renderer, instances, count)`` in OpenGL, ``record(renderer, encoder, instances, count)`` in WebGPU,
+    #: each returning the buffer the draws read), or None.
+    instance_pass: Any = None
     skybox: str | None = None  # cube texture name, or None for no sky pass (drawn after the opaque batches)
     reverse_z: bool = False
     shadows: bool = False  # a shadow-casting light is on: draw the shadow map before the main pass

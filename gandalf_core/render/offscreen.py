@@ -36,11 +36,11 @@ def _skip_srgb_decode(glo: int) -> None:
     """Make sampling the sRGB texture ``glo`` return its stored bytes (EXT_texture_sRGB_decode)."""
     import ctypes
 
-    from .opengl.raw_gl import _gl_function
+    from .opengl.raw_gl import gl_function
 
-    get = _gl_function("glGetIntegerv", (ctypes.c_uint, ctypes.POINTER(ctypes.c_int)))
-    bind = _gl_function("glBindTexture", (ctypes.c_uint, ctypes.c_uint))
-    parameter = _gl_function("glTexParameteri", (ctypes.c_uint, ctypes.c_uint, ctypes.c_int))
+    get = gl_function("glGetIntegerv", (ctypes.c_uint, ctypes.POINTER(ctypes.c_int)))
+    bind = gl_function("glBindTexture", (ctypes.c_uint, ctypes.c_uint))
+    parameter = gl_function("glTexParameteri", (ctypes.c_uint, ctypes.c_uint, ctypes.c_int))
     previous = ctypes.c_int()
     get(_GL_TEXTURE_BINDING_2D, ctypes.byref(previous))
     bind(_GL_TEXTURE_2D, glo)

@@ -13,6 +13,7 @@ batch of their own with clockwise front faces, so culling keeps the faces that p
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
@@ -33,7 +34,6 @@ from ..systems.transform_system import TransformSystem
 from .base import Renderer
 from .color import srgb_rgba_to_linear
 from .frame import DrawBatch, FrameData, pack_frame, pack_instance_rows, pack_instances
-from .gpu_motion import MotionFrame, epoch_of, motion_rows
 
 DEFAULT_CLEAR = (0.0, 0.0, 0.0, 1.0)
 _FEW_INSTANCES = 8
@@ -70,9 +70,6 @@ class RenderSystem(System):
         self._camera_key: tuple | None = None  # what the last camera() was computed from, and its result
         self._camera_value: tuple[np.ndarray, np.ndarray, np.ndarray, bool] | None = None
         self._order = 0  # bumped whenever the instance order changes (a new plan, sorting, mirrored splits)
-        self._motion_key: tuple | None = None
-        self._motion_rows: np.ndarray | None = None
-        self._motion_serial = 0
 
     def on_create_system(self) -> None:
         scene = self.scene
@@ -289,22 +286,21 @@ class RenderSystem(System):
         pack_instance_rows(world, rows, self._instances, at, origin)
         return int(at.min()), int(at.max()) + 1
 
-    # --8<-- [start:motion_frame]
-    def _motion_frame(self, time: float) -> MotionFrame | None:
-        """The compute pass's rows for the systems that move their entities on the GPU (None: no such system).
-        Built again only when those systems, the instance order or the motion epoch change."""
-        systems = [s for s in self.scene.systems if getattr(s, "moves_on_gpu", False) and s.enabled]
-        if not systems:
-            return None
-        epoch = epoch_of(time)
-        key = (self._order, epoch, tuple((id(s), s.motion_version) for s in systems))
-        if key != self._motion_key or self._motion_rows is None or len(self._motion_rows) != len(self._instances):
-            motions = [s.gpu_motion() for s in systems]
-            self._motion_rows = motion_rows(len(self._instances), self._instance_of_row, motions, epoch)
-            self._motion_key = (self._order, epoch, tuple((id(s), s.motion_version) for s in systems))
-            self._motion_serial += 1
-        return MotionFrame(self._motion_rows, (self._token, self._motion_serial), time - epoch)
-    # --8<-- [end:motion_frame]
+    # --8<-- [start:instance_pass]
+    def _instance_pass(self, time: float) -> Any:
+        """The hook for GPU work over the frame's instance rows before the draws read them (step 07's GPU-driven
+        motion): the first enabled system with an ``instance_pass(render_system, time)`` gives this frame's pass,
+        which the renderer runs (None: no such system, the draws read the rows as uploaded)."""
+        for system in self.scene.systems:
+            if system.enabled and hasattr(system, "instance_pass"):
+                return system.instance_pass(self, time)
+        return None
+
+    def instance_order(self) -> tuple[np.ndarray, int, tuple[object, int]]:
+        """What a pass over the instance rows needs: transform row -> instance row (-1: not drawn), the number of
+        instance rows, and a key that changes whenever that order does."""
+        return self._instance_of_row, len(self._instances), (self._token, self._order)
+    # --8<-- [end:instance_pass]
 
     def _transforms(self) -> TransformSystem | None:
         """The scene's transform system (it says which world matrices it wrote), or None."""
@@ -352,7 +348,7 @@ class RenderSystem(System):
             span = self._pack(scene.store(TransformComponent).columns["world"], view, origin)
             batches = self._frame_batches
         self._frames += 1
-        motion = self._motion_frame(app.clock.time if app is not None else 0.0) if batches else None
+        instance_pass = self._instance_pass(app.clock.time if app is not None else 0.0) if batches else None
         light_systems = [s for s in scene.systems if isinstance(s, LightSystem)]
         # The light system knows the lights, the renderer the depth range their shadow projection needs.
         lights = (light_systems[0].relative(origin) + light_systems[0].shadow(self.renderer.depth_range, origin)
@@ -368,7 +364,7 @@ class RenderSystem(System):
             instance_span=span,
             instances_version=(self._token, self._frames),
             instances_since=(self._token, self._frames - 1),
-            motion=motion,
+            instance_pass=instance_pass,
             skybox=skyboxes[0][0].texture if skyboxes else None,
             reverse_z=reverse_z,
             shadows=shadows,

@@ -6,28 +6,26 @@ takes (``path``):
 
 * ``"entity"`` (the default, the teaching form): ``on_update_entity`` once per entity;
 * ``"batch"``: one vectorised quaternion product over the rows of all its entities, the rows named to the store
-  (only they are recomputed and uploaded);
-* ``"gpu"``: no work on the CPU per frame. The entities' Transforms keep the pose they joined with (static for the
-  CPU: never recomputed or uploaded again) and the render system's compute pass turns their instance rows by
-  ``speed · (t − joined)`` about the world axis (a local axis is turned into the world's once:
-  ``R0 · R(a, θ) = R(R0 a, θ) · R0``). Only for root entities without children (a child would not follow).
+  (only they are recomputed and uploaded).
+
+A third path, on the GPU (a compute pass turns the instance rows, no work on the CPU per frame), is step 07's
+GPU-driven motion technique: ``step07_advanced.gpu_motion.system.GpuSpinSystem``, through the render system's
+``instance_pass`` hook.
 """
 
 from __future__ import annotations
 
 import math
-import uuid
 from collections.abc import Sequence
 
 import numpy as np
 
 from ..components import TransformComponent
-from ..ecs import Component, LinkComponent, System
-from ..math import quat_from_axis_angle, quat_mul, quat_normalize, quat_rotate
-from .motion import GpuMotion
+from ..ecs import Component, System
+from ..math import quat_from_axis_angle, quat_mul, quat_normalize
 
 #: The paths a SpinSystem can take.
-PATHS = ("entity", "batch", "gpu")
+PATHS = ("entity", "batch")
 
 
 class SpinComponent(Component):
@@ -50,7 +48,7 @@ class SpinComponent(Component):
 
 class SpinSystem(System):
     """Turns each entity by ``speed * ts`` degrees about its spin axis: the world's, or with ``local`` its own.
-    ``path`` says where: ``"entity"`` (per entity), ``"batch"`` (vectorised) or ``"gpu"`` (a compute pass)."""
+    ``path`` says where: ``"entity"`` (per entity) or ``"batch"`` (vectorised)."""
 
     def __init__(self, path: str = "entity") -> None:
         super().__init__([SpinComponent, TransformComponent])
@@ -58,26 +56,13 @@ class SpinSystem(System):
             raise ValueError(f"SpinSystem: path must be one of {', '.join(PATHS)}, got {path!r}")
         self.path = path
         self._plan_key: tuple[int, int] | None = None
-        self._joined: dict[uuid.UUID, float] = {}  # gpu: app seconds when each entity's pose was its own
-        self._motion: GpuMotion | None = None
-
-    @property
-    def moves_on_gpu(self) -> bool:
-        """Whether the render system's compute pass moves this system's entities."""
-        return self.path == "gpu"
 
     # --8<-- [start:paths]
     def on_update_system(self, ts: float) -> None:
         if self.path == "entity":
             super().on_update_system(ts)
-        elif self.path == "batch":
+        else:
             self._update_batch(ts)
-        elif self._plan_key != self._current_key():  # gpu: only new members cost anything, once
-            now = (self.scene.app.clock.time if self.scene.app is not None else ts) - ts  # this frame's start
-            joined = self._joined
-            self._joined = {e: joined.get(e, now) for e in self.entities}
-            self._motion = None
-            self._plan_key = self._current_key()
     # --8<-- [end:paths]
 
     def on_update_entity(self, ts, entity, components) -> None:
@@ -130,37 +115,3 @@ class SpinSystem(System):
 
     def _current_key(self) -> tuple[int, int]:
         return (self.version, self.scene.store(TransformComponent).layout_version)
-
-    # --- gpu ---------------------------------------------------------------------------------------
-    @property
-    def motion_version(self) -> tuple[int, int] | None:
-        """Changes whenever :meth:`gpu_motion` would give something new."""
-        return self._plan_key
-
-    def gpu_motion(self) -> GpuMotion:
-        """The entities the compute pass moves: their rows, world axes, speeds (rad/s) and join times."""
-        if self._motion is None or self._plan_key != self._current_key():
-            if self._plan_key != self._current_key():
-                self.on_update_system(0.0)
-            self._motion = self._build_motion()
-        return self._motion
-
-    # --8<-- [start:gpu_motion]
-    def _build_motion(self) -> GpuMotion:
-        scene = self.scene
-        store = scene.store(TransformComponent)
-        if scene.hierarchy_version:  # children would not follow a turn made on the GPU
-            for entity in self.entities:
-                link = scene.try_component(entity, LinkComponent)
-                if link is not None and (link.parent is not None or link.children):
-                    raise ValueError(f"{scene.describe(entity)}: SpinSystem(path='gpu') turns root entities without "
-                                     "children only (the GPU turns its instance alone); use path='batch'")
-        spins = self.column(SpinComponent)
-        rows = store.rows_of(self.column(TransformComponent))
-        axes = np.array([s.axis for s in spins], dtype=np.float64).reshape(-1, 3)
-        local = np.array([s.local for s in spins], dtype=bool)
-        if local.any():  # R0 R(a, θ) = R(R0 a, θ) R0: a local axis is the world axis R0 a
-            axes[local] = quat_rotate(store.columns["quaternion"][rows[local]], axes[local])
-        return GpuMotion(rows=rows, axes=axes, speeds=np.radians([s.speed for s in spins]),
-                         joined=np.array([self._joined.get(e, 0.0) for e in self.entities], dtype=np.float64))
-    # --8<-- [end:gpu_motion]

@@ -271,9 +271,7 @@ class EditorActions:
     def set_material_texture(self, material: str, texture: str, slot: int = 0) -> None:
         """Put ``texture`` into ``material``'s texture ``slot`` (the renderer rebuilds the material on next use)."""
         assets = self.scene.assets
-        data = assets.materials.get(material)
-        if data is None:
-            raise ValueError(f"editor: no material '{material}' in scene '{self.scene.name}'")
+        data = self._material(material)
         if texture not in assets.textures:
             raise ValueError(f"editor: no texture '{texture}' in scene '{self.scene.name}' "
                              f"(known: {', '.join(sorted(assets.textures)) or 'none'})")
@@ -292,10 +290,7 @@ class EditorActions:
     def set_material_param(self, material: str, field: str, value: Any, merge: bool = False) -> None:
         """Set one of ``material``'s values (a field of its shader's Material block; the renderer rebuilds the
         material on next use); undoable, a drag is one step."""
-        assets = self.scene.assets
-        data = assets.materials.get(material)
-        if data is None:
-            raise ValueError(f"editor: no material '{material}' in scene '{self.scene.name}'")
+        data = self._material(material)
         if field not in data.params:
             raise ValueError(f"editor: material '{material}' has no value '{field}' "
                              f"(it has: {', '.join(sorted(data.params)) or 'none'})")
@@ -308,6 +303,13 @@ class EditorActions:
 
         self.commands.push(Command(f"{field} of {material}", lambda: put(new), lambda: put(data),
                                    merge_key=("param", material, field)), merge=merge)
+
+    def _material(self, material: str) -> Any:
+        """The scene's MaterialData named ``material``; a ValueError naming it and the scene when there is none."""
+        data = self.scene.assets.materials.get(material)
+        if data is None:
+            raise ValueError(f"editor: no material '{material}' in scene '{self.scene.name}'")
+        return data
 
     _material_colors: dict[str, tuple[float, ...]]
 

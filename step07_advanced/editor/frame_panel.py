@@ -1,6 +1,6 @@
 """The frame inspector panel: capture a frame, walk its passes and draws, view any texture, pick a pixel.
 
-* **Capture frame** records the next frame (:func:`gandalf_core.render.capture`): a tree of passes (shadow map,
+* **Capture frame** records the next frame (:mod:`.frame_inspector.capture`): a tree of passes (shadow map,
   opaque, sky, transparent, overlay: the editor's own GUI) with their GPU milliseconds, and under each its draws.
   A selected draw shows its entities, mesh (vertex and index counts, vertex layout), material, shader files,
   pipeline state, the uniform blocks decoded by field name, and the textures and buffers it binds.
@@ -8,7 +8,7 @@
   and the shadow map, as an image; the pointer over it reads out the texel's value. (imgui-bundle's
   ``imgui_tex_inspect`` draws through the C++ OpenGL backend's callbacks, which neither of the editor's GUI
   renderers runs, so the viewer is a plain image with its own read-out, the same in both APIs.)
-* **Pick**: with "pick on click" on, a click on the viewport picks that pixel (:mod:`gandalf_core.render.picking`):
+* **Pick**: with "pick on click" on, a click on the viewport picks that pixel (:mod:`.frame_inspector.picking`):
   the draw, entity, material and shader that wrote it, and its depth; the entity becomes the selection.
 
 Captures, picks and texture reads happen between frames, in this system's update (before the viewport renders),
@@ -99,7 +99,7 @@ class FramePanelSystem(PanelSystem):
 
     # --- between frames -------------------------------------------------------------------------------
     def on_update_system(self, ts: float) -> None:
-        from gandalf_core.render.capture import FrameRecorder, name_entities
+        from .frame_inspector.capture import FrameRecorder, name_entities
 
         renderer = self.editor.app.renderer
         self._viewport_rect = self.editor.item_rects.get("viewport/image")
@@ -127,7 +127,8 @@ class FramePanelSystem(PanelSystem):
 
     def _pick(self, x: int, y: int, ts: float) -> None:
         from gandalf_core.render import RenderSystem
-        from gandalf_core.render.picking import pick_frame
+
+        from .frame_inspector.picking import pick_frame
 
         target = self.editor.viewport.target if self.editor.viewport is not None else None
         systems = [s for s in self.scene.systems if isinstance(s, RenderSystem)]
@@ -140,7 +141,7 @@ class FramePanelSystem(PanelSystem):
 
     def _refresh_texture(self) -> None:
         """Read the viewed texture again when the choice changed or a new frame was captured."""
-        from gandalf_core.render.texture_readback import display_rgba, read_source
+        from .frame_inspector.texture_readback import display_rgba, read_source
 
         key = (self.source, self.face, self.level, id(self.capture))
         if key == self._view_key:
@@ -163,7 +164,7 @@ class FramePanelSystem(PanelSystem):
 
     def _upload(self, rgba: np.ndarray) -> None:
         """The viewer's image as a texture the GUI can show (made again when its size changes)."""
-        from gandalf_core.render.texture_readback import upload_display
+        from .frame_inspector.texture_readback import upload_display
 
         size = rgba.shape[1::-1]
         if self._display is not None and self._display_size != size:
@@ -174,7 +175,7 @@ class FramePanelSystem(PanelSystem):
             self._display_key, self._display_ref = self.editor._gui.texture_ref(shown)
 
     def _forget_display(self) -> None:
-        from gandalf_core.render.texture_readback import release_display
+        from .frame_inspector.texture_readback import release_display
 
         if self._display_key is not None:
             self.editor._gui.forget_texture(self._display_key)
@@ -308,7 +309,7 @@ class FramePanelSystem(PanelSystem):
             imgui.text(f"{name} = {_number(value)}")
 
     def _texture_viewer(self) -> None:
-        from gandalf_core.render.texture_readback import CUBE_FACES, texture_sources
+        from .frame_inspector.texture_readback import CUBE_FACES, texture_sources
 
         sources = {s.name: s for s in texture_sources(self.editor.app.renderer)}
         if imgui.begin_combo("texture", self.source):

@@ -1,6 +1,7 @@
 """The GPU-driven motion scene, the same for OpenGL and WebGPU: ``count`` cubes on a grid, each spinning about
-its own axis at its own speed, lit by one light. ``path`` picks where the spin is evaluated (``SpinSystem``'s
-paths: ``"entity"``, ``"batch"`` or ``"gpu"``); the picture at time t is the same on every path.
+its own axis at its own speed, lit by one light. ``path`` picks where the spin is evaluated: ``"entity"`` or
+``"batch"`` (``SpinSystem``'s paths, on the CPU) or ``"gpu"`` (this technique's :class:`~.system.GpuSpinSystem`);
+the picture at time t is the same on every path.
 """
 
 from __future__ import annotations
@@ -24,6 +25,8 @@ from gandalf_core.math import look_at_rotation
 from gandalf_core.render.capabilities import Needs
 from gandalf_core.resources import MaterialData, primitives
 from gandalf_core.systems.spin import SpinComponent, SpinSystem
+
+from .system import GpuSpinSystem
 
 #: Cubes in the demo.
 COUNT = 1000
@@ -77,7 +80,7 @@ def build_scene(impl: ModuleType | None = None, *, path: str = "gpu", count: int
                                                           scales=0.8),
                           MeshComponent("cube"), MaterialComponent("cube"),
                           [SpinComponent(axis, speed, local=local) for axis, speed in zip(axes, speeds)])
-    scene.add_system(SpinSystem(path=path))
+    scene.add_system(GpuSpinSystem() if path == "gpu" else SpinSystem(path=path))
     return scene
 
 

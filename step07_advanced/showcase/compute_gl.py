@@ -13,8 +13,8 @@ import moderngl
 import numpy as np
 
 from gandalf_core.render.capabilities import require_opengl
-from gandalf_core.render.capture import compute_recorded
 from gandalf_core.render.shader_files import load_shader
+from step07_advanced.editor.frame_inspector.capture import compute_recorded
 
 from .particles import WORKGROUP_SIZE, SimParams
 from .shaders import COMPUTE_GLSL, SIM_BINDING, SIM_INCLUDES, SIM_LAYOUT, impl_shader_dir

@@ -13,8 +13,8 @@ from typing import Any
 import numpy as np
 import wgpu
 
-from gandalf_core.render.capture import compute_recorded
 from gandalf_core.render.shader_files import load_shader
+from step07_advanced.editor.frame_inspector.capture import compute_recorded
 
 from .particles import WORKGROUP_SIZE, SimParams
 from .shaders import COMPUTE_WGSL, SIM_INCLUDES, SIM_LAYOUT, impl_shader_dir

@@ -80,6 +80,15 @@ def build(app: Application, files: dict[str, Path], material=None) -> None:
         shaders.build(SHADER, files["wgsl"], material=material)
 
 
+def tinted_app(backend: str, folder: Path, width: int, height: int) -> tuple[Application, dict[str, Path]]:
+    """A headless app (60 Hz fixed step) showing the tinted scene, its shader built from files written in ``folder``."""
+    app = Application(backend, width, height, headless=True, fixed_dt=1 / 60)
+    files = write_shader(folder, backend)
+    build(app, files)
+    app.add_scene(tinted_scene())
+    return app, files
+
+
 def tinted_scene() -> Scene:
     scene = Scene("tinted")
     scene.assets.mesh("cube", cube())

@@ -13,7 +13,6 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from gandalf_core import Application
 from gandalf_core.components import MaterialComponent
 from step07_advanced.editor import disable_editor, enable_editor
 
@@ -23,12 +22,10 @@ from shader_edit_scene import (  # noqa: E402
     FIXED,
     MATERIAL,
     SHADER,
-    build,
     middle,
     shows,
     tint_text,
-    tinted_scene,
-    write_shader,
+    tinted_app,
 )
 from test_editor import center, click  # noqa: E402
 
@@ -36,10 +33,7 @@ from test_editor import center, click  # noqa: E402
 @pytest.fixture
 def opened(backend: str, tmp_path: Path):
     """An editor over the tinted scene with the cube selected and the shader panel open (panels run every frame)."""
-    app = Application(backend, 800, 600, headless=True, fixed_dt=1 / 60)
-    files = write_shader(tmp_path, backend)
-    build(app, files)
-    app.add_scene(tinted_scene())
+    app, files = tinted_app(backend, tmp_path, 800, 600)
     editor = enable_editor(app)
     editor.gui_interval = 0.0
     editor.selected = next(e for e, _ in app.scene.view(MaterialComponent))

@@ -21,10 +21,10 @@ import numpy as np
 import pytest
 from inspector_scene import COLORS, SHININESS, VISIBLE_POINT, inspector_app, pixel_of
 
-from gandalf_core.render.capture import FrameRecorder, capture_frame
 from gandalf_core.render.color import srgb_rgba_to_linear
 from gandalf_core.render.gpu_timing import TIMING_VARIABLE
-from gandalf_core.render.picking import pick
+from step07_advanced.editor.frame_inspector.capture import FrameRecorder, capture_frame
+from step07_advanced.editor.frame_inspector.picking import pick
 
 
 @pytest.fixture
@@ -167,7 +167,7 @@ def test_unpack_is_the_inverse_of_pack() -> None:
 def test_the_texture_viewer_reads_every_source_face_and_level(backend: str) -> None:
     """Frame colour equals the captured picture; each sky face at level 0 equals its pixels, a level's size halves;
     the frame depth at a picked pixel equals the pick's depth; the shadow map holds nearer depths than its clear."""
-    from gandalf_core.render.texture_readback import display_rgba, read_source, texture_sources
+    from step07_advanced.editor.frame_inspector.texture_readback import display_rgba, read_source, texture_sources
 
     app, _entities, _capture, _ = _captured(backend)
     try:

@@ -96,7 +96,7 @@ def test_the_texture_viewer_shows_a_cube_face_and_reads_out_texels(app) -> None:
 
 
 def test_a_capture_armed_when_the_editor_goes_leaves_nothing_behind(app) -> None:
-    from gandalf_core.render import capture
+    from step07_advanced.editor.frame_inspector import capture
 
     editor = enable_editor(app)
     editor.show_panel("frame")

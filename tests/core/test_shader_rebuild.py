@@ -14,7 +14,6 @@ from pathlib import Path
 
 import pytest
 
-from gandalf_core import Application
 from gandalf_core.render.errors import ShaderCompileError
 from gandalf_core.resources import ResourceError
 
@@ -24,21 +23,16 @@ from shader_edit_scene import (  # noqa: E402
     FIXED,
     MATERIAL,
     SHADER,
-    build,
     middle,
     shows,
     tint_text,
-    tinted_scene,
-    write_shader,
+    tinted_app,
 )
 
 
 @pytest.fixture
 def tinted(backend: str, tmp_path: Path):
-    app = Application(backend, 64, 48, headless=True, fixed_dt=1 / 60)
-    files = write_shader(tmp_path, backend)
-    build(app, files)
-    app.add_scene(tinted_scene())
+    app, files = tinted_app(backend, tmp_path, 64, 48)
     app.run(frames=1)
     yield app, files
     app.close()

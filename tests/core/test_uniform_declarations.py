@@ -14,10 +14,10 @@ from pathlib import Path
 
 import pytest
 
-from gandalf_core.render.gpu_motion import PARAMS_INCLUDES as MOTION_INCLUDES
 from gandalf_core.resources.blocks import ENGINE_SNIPPETS, material_snippets
 from gandalf_core.resources.layout import BlockLayout, LayoutError
 from step07_advanced.filter.shaders import PARAMS_INCLUDES as FILTER_INCLUDES
+from step07_advanced.gpu_motion.motion import PARAMS_INCLUDES as MOTION_INCLUDES
 from step07_advanced.pathtracer.shaders import PARAMS_INCLUDES as PATHTRACER_INCLUDES
 from step07_advanced.showcase.shaders import SIM_INCLUDES
 from step07_advanced.terrain.shaders import TESSELLATE_INCLUDES

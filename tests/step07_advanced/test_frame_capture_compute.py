@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import importlib
 
-from gandalf_core.render.capture import capture_frame
+from step07_advanced.editor.frame_inspector.capture import capture_frame
 
 
 def test_the_showcase_capture_begins_with_its_compute_dispatch(backend: str) -> None:

@@ -1,5 +1,5 @@
 """GPU-driven motion: the same spinning cubes turned per entity on the CPU, batched with numpy, and by the
-engine's compute pass must give the same picture at the same time t, in both APIs.
+technique's compute pass must give the same picture at the same time t, in both APIs.
 
 Tolerance (argued from float32): the CPU packs float64 matrices rounded once to float32; the kernel turns the
 float32 rows of the starting pose by a float32 rotation, a few ulp (≤ 1e-6 relative) away. A vertex then moves
@@ -20,10 +20,10 @@ from gandalf_core.components import MaterialComponent, MeshComponent
 from gandalf_core.ecs import LinkComponent
 from gandalf_core.math import quat_from_axis_angle, quat_mul, trs
 from gandalf_core.render.frame import pack_instances
-from gandalf_core.render.gpu_motion import MOTION_EPOCH, motion_rows, spin_rows_np
-from gandalf_core.systems.motion import GpuMotion
 from gandalf_core.systems.spin import SpinComponent, SpinSystem
+from step07_advanced.gpu_motion.motion import MOTION_EPOCH, GpuMotion, motion_rows, spin_rows_np
 from step07_advanced.gpu_motion.scene import build_scene
+from step07_advanced.gpu_motion.system import GpuSpinSystem
 
 W, H = 160, 120
 FRAMES = 40
@@ -119,13 +119,13 @@ def test_the_gpu_path_refuses_an_entity_in_a_hierarchy() -> None:
     spinning = scene.query(SpinComponent, TransformComponent).entities
     parent = scene.create_entity(TransformComponent())
     scene.add_component(spinning[3], LinkComponent(parent))
-    system = next(s for s in scene.systems if isinstance(s, SpinSystem))
-    with pytest.raises(ValueError, match=r"SpinSystem\(path='gpu'\) turns root entities"):
+    system = next(s for s in scene.systems if isinstance(s, GpuSpinSystem))
+    with pytest.raises(ValueError, match=r"GpuSpinSystem turns root entities"):
         system.gpu_motion()
 
 
 def test_a_spin_system_names_a_path_it_does_not_have() -> None:
-    with pytest.raises(ValueError, match="path must be one of entity, batch, gpu, got 'cuda'"):
+    with pytest.raises(ValueError, match="path must be one of entity, batch, got 'cuda'"):
         SpinSystem(path="cuda")
 
 
@@ -142,7 +142,7 @@ def test_a_saved_scene_keeps_the_path_its_spin_system_takes(tmp_path) -> None:
 def test_more_instances_than_one_dispatch_or_binding_holds_is_an_error_naming_the_limit() -> None:
     from types import SimpleNamespace
 
-    from gandalf_core.render.webgpu.motion import WGPUMotionPass
+    from step07_advanced.gpu_motion.motion_wgpu import WGPUMotionPass
 
     motion = object.__new__(WGPUMotionPass)
     motion.device = SimpleNamespace(limits={"max-compute-workgroups-per-dimension": 65535,

@@ -31,7 +31,8 @@ GL_NEAREST = 0x2600
 
 
 @functools.cache
-def _gl_function(name: str, argtypes: tuple[type, ...]) -> Callable[..., None]:
+def gl_function(name: str, argtypes: tuple[type, ...]) -> Callable[..., None]:
+    """The GL library's function ``name`` with its argument types (one moderngl does not wrap), or RuntimeError."""
     errors = []
     for library in ("libGL.so.1", "libOpenGL.so.0", ctypes.util.find_library("GL")):
         if not library:
@@ -49,7 +50,7 @@ def _gl_function(name: str, argtypes: tuple[type, ...]) -> Callable[..., None]:
 
 
 def _gl_clip_control() -> Callable[[int, int], None]:
-    return _gl_function("glClipControl", (ctypes.c_uint, ctypes.c_uint))
+    return gl_function("glClipControl", (ctypes.c_uint, ctypes.c_uint))
 
 
 def make_float_depth(glo: int, width: int, height: int) -> None:
@@ -57,9 +58,9 @@ def make_float_depth(glo: int, width: int, height: int) -> None:
 
     Reverse-Z keeps its precision only in a float depth buffer: fixed-point depth has the same steps everywhere.
     """
-    get = _gl_function("glGetIntegerv", (ctypes.c_uint, ctypes.POINTER(ctypes.c_int)))
-    bind = _gl_function("glBindTexture", (ctypes.c_uint, ctypes.c_uint))
-    image = _gl_function("glTexImage2D", (ctypes.c_uint, ctypes.c_int, ctypes.c_int, ctypes.c_int, ctypes.c_int,
+    get = gl_function("glGetIntegerv", (ctypes.c_uint, ctypes.POINTER(ctypes.c_int)))
+    bind = gl_function("glBindTexture", (ctypes.c_uint, ctypes.c_uint))
+    image = gl_function("glTexImage2D", (ctypes.c_uint, ctypes.c_int, ctypes.c_int, ctypes.c_int, ctypes.c_int,
                                           ctypes.c_int, ctypes.c_uint, ctypes.c_uint, ctypes.c_void_p))
     previous = ctypes.c_int()
     get(GL_TEXTURE_BINDING_2D, ctypes.byref(previous))
@@ -84,8 +85,8 @@ def blit_color(source_glo: int, target_glo: int, size: tuple[int, int], target_s
     moderngl's ``copy_framebuffer`` copies depth too, which fails (GL_INVALID_OPERATION, nothing copied) when the
     two depth formats differ, as the float depth target and a window's 24-bit depth buffer do.
     """
-    bind = _gl_function("glBindFramebuffer", (ctypes.c_uint, ctypes.c_uint))
-    blit = _gl_function("glBlitFramebuffer", (ctypes.c_int,) * 8 + (ctypes.c_uint, ctypes.c_uint))
+    bind = gl_function("glBindFramebuffer", (ctypes.c_uint, ctypes.c_uint))
+    blit = gl_function("glBlitFramebuffer", (ctypes.c_int,) * 8 + (ctypes.c_uint, ctypes.c_uint))
     bind(GL_READ_FRAMEBUFFER, source_glo)
     bind(GL_DRAW_FRAMEBUFFER, target_glo)
     blit(0, 0, *size, 0, 0, *target_size, GL_COLOR_BUFFER_BIT, GL_NEAREST)
@@ -105,12 +106,12 @@ def block_members(program_glo: int) -> dict[str, dict[str, tuple[int, int]]]:
     :class:`~gandalf_core.resources.layout.BlockLayout`'s.
     """
     i32p = ctypes.POINTER(ctypes.c_int)
-    get_program = _gl_function("glGetProgramiv", (ctypes.c_uint, ctypes.c_uint, i32p))
-    uniform_name = _gl_function("glGetActiveUniformName", (ctypes.c_uint, ctypes.c_uint, ctypes.c_int, i32p,
+    get_program = gl_function("glGetProgramiv", (ctypes.c_uint, ctypes.c_uint, i32p))
+    uniform_name = gl_function("glGetActiveUniformName", (ctypes.c_uint, ctypes.c_uint, ctypes.c_int, i32p,
                                                            ctypes.c_char_p))
-    uniforms_iv = _gl_function("glGetActiveUniformsiv", (ctypes.c_uint, ctypes.c_int, ctypes.POINTER(ctypes.c_uint),
+    uniforms_iv = gl_function("glGetActiveUniformsiv", (ctypes.c_uint, ctypes.c_int, ctypes.POINTER(ctypes.c_uint),
                                                          ctypes.c_uint, i32p))
-    block_name = _gl_function("glGetActiveUniformBlockName", (ctypes.c_uint, ctypes.c_uint, ctypes.c_int, i32p,
+    block_name = gl_function("glGetActiveUniformBlockName", (ctypes.c_uint, ctypes.c_uint, ctypes.c_int, i32p,
                                                               ctypes.c_char_p))
     count = ctypes.c_int()
     get_program(program_glo, GL_ACTIVE_UNIFORMS, ctypes.byref(count))

@@ -16,10 +16,9 @@ import numpy as np
 from ...resources import MaterialData, ResourceError
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
-from ..base import Renderer
+from ..base import NOT_RECORDING, Renderer
 from ..capabilities import FLOOR, GL_FLOOR, CapabilityError, Needs, check, opengl_offer
 from ..frame import FRAME_FLOATS, INSTANCE_STRIDE, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
-from ..frame_records import NOT_RECORDING
 from ..texture_checks import check_target_size
 from . import raw_gl
 from .libs import (
@@ -35,7 +34,6 @@ from .libs import (
     TextureLib,
     make_current,
 )
-from .motion import GLMotionPass
 
 GL_FRAMEBUFFER_SRGB = 0x8DB9
 GL_TEXTURE_CUBE_MAP_SEAMLESS = 0x884F
@@ -90,7 +88,6 @@ class OpenGLRenderer(Renderer):
         self._shadow: tuple[moderngl.Texture, moderngl.Framebuffer] | None = None
         self._instance_buffer: moderngl.Buffer | None = None
         self._drawn_instances: moderngl.Buffer | None = None  # the instance rows the draws read (moved or not)
-        self._motion: GLMotionPass | None = None  # the GPU-driven motion pass, built on first use
         self._vaos: dict[tuple[str, str], moderngl.VertexArray] = {}
         # Released or replaced resources take what refers to them along (rebuilt on their next use).
         self.meshes.on_forget.append(self._forget_vertex_arrays)
@@ -180,15 +177,13 @@ class OpenGLRenderer(Renderer):
         if data.batches:
             self._upload_instances(data)
         self._drawn_instances = self._instance_buffer
-        if data.motion is not None and data.batches:  # GPU-driven motion: the draws read the moved rows
-            if self._motion is None:
-                self._motion = GLMotionPass(self.ctx, self.stats)
-            self._drawn_instances = self._motion.run(self._instance_buffer, len(data.instances), data.motion)
+        if data.instance_pass is not None and data.batches:  # GPU work over the rows: the draws read its output
+            self._drawn_instances = data.instance_pass.run(self, self._instance_buffer, len(data.instances))
         # Resolve (build on first use) everything before any pass: building a texture uses moderngl's
         # scratch texture unit, which on some drivers is the unit the shadow map is bound to.
         draws = self.resolve_draws(data, assets)
         sky = self._prepare_sky(data.skybox, assets) if data.skybox is not None else None
-        recorder = self.recorder  # a frame capture (render/capture.py), or None
+        recorder = self.recorder  # the frame-capture hook (see Renderer.recorder), or None
         if recorder is not None:
             recorder.begin_frame(self._frame_ubo.read(), self._lights_ubo.read())
         if data.shadows:
@@ -437,8 +432,8 @@ class OpenGLRenderer(Renderer):
             lib.release()
         if self._instance_buffer is not None:
             self._instance_buffer.release()
-        if self._motion is not None:
-            self._motion.release()
+        for attached in self.attachments.values():
+            attached.release()
         self._frame_ubo.release()
         self._lights_ubo.release()
         self._release_targets()

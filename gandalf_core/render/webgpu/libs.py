@@ -72,7 +72,7 @@ class TextureLib(ResourceLib[WGPUTexture]):
                            "max-texture-dimension-2d")
         cube = isinstance(data, CubeTextureData)
         fmt = "rgba8unorm-srgb" if data.srgb else "rgba8unorm"
-        # COPY_SRC: a texture viewer (render/texture_readback.py) can read any level back.
+        # COPY_SRC: a texture viewer (the editor's frame inspector) can read any level back.
         usage = wgpu.TextureUsage.TEXTURE_BINDING | wgpu.TextureUsage.COPY_DST | wgpu.TextureUsage.COPY_SRC
         if cube and data.levels is None and data.mipmaps and _is_power_of_two(data.size) and self._cube_mips_on_gpu:
             # A cube map's faces go up one by one from their own arrays (no stacked copy) and its mip levels are

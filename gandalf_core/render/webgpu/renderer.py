@@ -17,16 +17,14 @@ import wgpu
 from ...resources import MaterialData, ResourceError
 from ...resources.assets import Assets
 from ..attributes import INSTANCE_LOCATIONS, mesh_has
-from ..base import Renderer
+from ..base import NOT_RECORDING, Renderer
 from ..capabilities import FLOOR, Needs
 from ..errors import ShaderCompileError
 from ..frame import FRAME_FLOATS, INSTANCE_STRIDE, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
-from ..frame_records import NOT_RECORDING
 from ..shader_files import engine_shader_files, load_shader
 from ..texture_checks import check_target_size
 from .device import request_device
 from .libs import BufferLib, MaterialLib, MeshLib, ShaderLib, TextureLib, WGPUMaterial, WGPUMesh, WGPUShader
-from .motion import WGPUMotionPass
 from .validation import attribute_of, first_cause, missing_input
 
 COLOR_FORMAT = "rgba8unorm-srgb"
@@ -114,7 +112,6 @@ class WebGPURenderer(Renderer):
             lambda name: [self._pipelines.pop(k) for k in list(self._pipelines) if k[0] == name])
         self._instance_buffer: Any = None
         self._drawn_instances: Any = None  # the instance rows the draws read (moved or not)
-        self._motion: WGPUMotionPass | None = None  # the GPU-driven motion pass, built on first use
         #: The colour format the frame being recorded is drawn in (pipelines are built per format).
         self._target_format = COLOR_FORMAT
         #: A surface texture drawn and submitted but not yet presented (see :meth:`_present_pending`).
@@ -163,15 +160,13 @@ class WebGPURenderer(Renderer):
                  for batch, material, mesh in self.resolve_draws(data, assets)]
         sky = self._sky_draw(data.skybox, assets, data.reverse_z) if data.skybox is not None else None
         encoder = self.device.create_command_encoder()
-        recorder = self.recorder  # a frame capture (render/capture.py), or None
+        recorder = self.recorder  # the frame-capture hook (see Renderer.recorder), or None
         if recorder is not None:
             recorder.begin_frame(data.frame, data.lights, encoder)
         self._drawn_instances = self._instance_buffer
-        if data.motion is not None and data.batches:  # GPU-driven motion: the draws read the moved rows
-            if self._motion is None:
-                self._motion = WGPUMotionPass(self.device, self.stats)
-            self._drawn_instances = self._motion.record(encoder, self._instance_buffer, len(data.instances),
-                                                        data.motion)
+        if data.instance_pass is not None and data.batches:  # GPU work over the rows: the draws read its output
+            self._drawn_instances = data.instance_pass.record(self, encoder, self._instance_buffer,
+                                                              len(data.instances))
         frame_group = self._frame_group
         if data.shadows:
             frame_group = self._draw_shadow_map(encoder, draws)
@@ -353,7 +348,7 @@ class WebGPURenderer(Renderer):
         if self._instance_buffer is not None:
             self._instance_buffer.destroy()
         self._instance_buffer = self.device.create_buffer(
-            # STORAGE too: the GPU-driven motion pass reads the rows from it.
+            # STORAGE too: a GPU pass over the instance rows (FrameData.instance_pass) reads them from it.
             size=capacity, usage=wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.COPY_DST | wgpu.BufferUsage.STORAGE
         )
 
@@ -479,8 +474,8 @@ class WebGPURenderer(Renderer):
         self._sky_materials.clear()
         if self._instance_buffer is not None:
             self._instance_buffer.destroy()
-        if self._motion is not None:
-            self._motion.release()
+        for attached in self.attachments.values():
+            attached.release()
         if self._shadow is not None:
             self._shadow[0].destroy()
             self._shadow = None

@@ -14,7 +14,7 @@ application and returns a :class:`FrameCapture`:
   bound uniform blocks **decoded by field name** from their one declaration
   (:meth:`~gandalf_core.resources.layout.BlockLayout.unpack` of the bytes written: read back from the GL buffers,
   the bytes queued to the WebGPU ones), the bound textures and buffers;
-* GPU milliseconds per pass and per draw when the device can time them (:mod:`.gpu_timing`), with
+* GPU milliseconds per pass and per draw when the device can time them (:mod:`.gpu_timer`), with
   :attr:`FrameCapture.timing` saying which timer ran or why none did.
 """
 
@@ -25,20 +25,22 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from typing import Any
 
-from ..resources.blocks import BLOCK_BINDINGS, FRAME_LAYOUT, LIGHTS_LAYOUT, WGSL_BINDINGS
-from .frame_records import NOT_RECORDING, DrawRecord, FrameCapture, PassRecord
-from .gpu_timing import GpuTimer, gpu_timer
+from gandalf_core.render.base import NOT_RECORDING
+from gandalf_core.render.render_system import RenderSystem
+from gandalf_core.resources.blocks import BLOCK_BINDINGS, FRAME_LAYOUT, LIGHTS_LAYOUT, WGSL_BINDINGS
+
+from .frame_records import DrawRecord, FrameCapture, PassRecord
+from .gpu_timer import GpuTimer
 from .inspect_draw import describe_draw
-from .render_system import RenderSystem
 
 __all__ = ["NOT_RECORDING", "DrawRecord", "FrameCapture", "FrameRecorder", "PassRecord", "capture_frame",
-           "compute_recorded", "name_entities"]
+           "compute_recorded", "gpu_timer", "name_entities"]
 
 class FrameRecorder:
     """Receives a renderer's pass and draw hooks while one frame is captured (see :func:`capture_frame`)."""
 
     def __init__(self, renderer: Any, timing: bool = True, describe: bool = True) -> None:
-        """``timing``: GPU times (:mod:`.gpu_timing`); ``describe``: each draw's state, blocks and resources (False:
+        """``timing``: GPU times (:mod:`.gpu_timer`); ``describe``: each draw's state, blocks and resources (False:
         names, counts and times only, what a benchmark reading per-pass GPU times needs, at little cost)."""
         self.renderer = renderer
         self.describe = describe
@@ -219,6 +221,17 @@ class FrameRecorder:
                               bool(batch is not None and batch.mirrored), sky)
         return describe_draw(self.renderer, index, pass_name, shader, batch, material, mesh, reverse_z,
                              self._blocks, sky, pipeline)
+
+
+def gpu_timer(renderer: Any) -> GpuTimer:
+    """A timer for ``renderer``'s context or device (check :attr:`GpuTimer.available`)."""
+    if renderer.backend == "opengl":
+        from .gpu_timer_gl import GLTimer
+
+        return GLTimer(renderer.ctx)
+    from .gpu_timer_wgpu import WGPUTimer
+
+    return WGPUTimer(renderer.device, getattr(renderer, "adapter", None))
 
 
 #: The recorder capturing a frame of each context or device (by id), while it captures.

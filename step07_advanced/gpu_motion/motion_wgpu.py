@@ -8,9 +8,10 @@ from typing import Any
 
 import wgpu
 
-from ..frame import INSTANCE_STRIDE
-from ..gpu_motion import KERNEL, PARAMS_INCLUDES, PARAMS_LAYOUT, WORKGROUP, MotionFrame
-from ..shader_files import SNIPPETS_DIR, load_shader
+from gandalf_core.render.frame import INSTANCE_STRIDE
+from gandalf_core.render.shader_files import load_shader
+
+from .motion import KERNEL, PARAMS_INCLUDES, PARAMS_LAYOUT, SHADER_DIR, WORKGROUP, MotionFrame
 
 
 class WGPUMotionPass:
@@ -19,7 +20,7 @@ class WGPUMotionPass:
     def __init__(self, device: Any, stats: Any) -> None:
         self.device = device
         self.stats = stats
-        source = load_shader(SNIPPETS_DIR / f"{KERNEL}.wgsl", None, "wgsl", generated=PARAMS_INCLUDES)
+        source = load_shader(SHADER_DIR / f"{KERNEL}.wgsl", None, "wgsl", generated=PARAMS_INCLUDES)
         storage = wgpu.ShaderStage.COMPUTE
         self.layout = device.create_bind_group_layout(entries=[
             {"binding": 0, "visibility": storage, "buffer": {"type": "uniform"}},

@@ -1,6 +1,6 @@
 """What a captured draw records, per API: pipeline state, uniform blocks decoded by field name, textures, buffers.
 
-Called by :class:`~gandalf_core.render.capture.FrameRecorder` only while a frame is captured. OpenGL's state is read
+Called by :class:`~.capture.FrameRecorder` only while a frame is captured. OpenGL's state is read
 back from the context (``glGet``) at the moment of the draw, so a state the renderer did not mean to leave shows as
 it was; WebGPU's pipelines cannot be read back, so their state is the one each was created with (the renderer keeps
 the descriptors' primitive, depth-stencil and target parts by pipeline).
@@ -11,8 +11,9 @@ from __future__ import annotations
 import ctypes
 from typing import Any
 
-from ..resources.blocks import BLOCK_BINDINGS, WGSL_BINDINGS
-from .frame import INSTANCE_STRIDE, SHADOW_MAP_SIZE
+from gandalf_core.render.frame import INSTANCE_STRIDE, SHADOW_MAP_SIZE
+from gandalf_core.resources.blocks import BLOCK_BINDINGS, WGSL_BINDINGS
+
 from .frame_records import DrawRecord
 
 _GL_ENUMS = {
@@ -28,9 +29,9 @@ _GL_STATE = {"depth_test": 0x0B71, "depth_write": 0x0B72, "depth_func": 0x0B74, 
 
 def _gl_state() -> dict[str, Any]:
     """The current GL context's depth, cull and blend state, named."""
-    from .opengl.raw_gl import _gl_function
+    from gandalf_core.render.opengl.raw_gl import gl_function
 
-    get = _gl_function("glGetIntegerv", (ctypes.c_uint, ctypes.POINTER(ctypes.c_int)))
+    get = gl_function("glGetIntegerv", (ctypes.c_uint, ctypes.POINTER(ctypes.c_int)))
     raw = {}
     value = ctypes.c_int()
     for key, enum in _GL_STATE.items():
@@ -88,7 +89,7 @@ def _shader_files(renderer: Any, shader: Any) -> list[str]:
 def describe_draw(renderer: Any, index: int, pass_name: str, shader: Any, batch: Any, material: Any, mesh: Any,
                   reverse_z: bool, engine_blocks: dict[str, dict[str, Any]], sky: str | None = None,
                   pipeline: Any = None) -> DrawRecord:
-    """The record of one draw (see :class:`~gandalf_core.render.capture.DrawRecord`)."""
+    """The record of one draw (see :class:`~.capture.DrawRecord`)."""
     gl = renderer.backend == "opengl"
     shadow = pass_name == "shadow"
     data = material.data if material is not None else None

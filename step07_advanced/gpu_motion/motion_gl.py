@@ -8,9 +8,10 @@ from typing import Any
 
 import moderngl
 
-from ..capabilities import require_opengl
-from ..gpu_motion import KERNEL, PARAMS_BINDING, PARAMS_INCLUDES, PARAMS_LAYOUT, WORKGROUP, MotionFrame
-from ..shader_files import SNIPPETS_DIR, load_shader
+from gandalf_core.render.capabilities import require_opengl
+from gandalf_core.render.shader_files import load_shader
+
+from .motion import KERNEL, PARAMS_BINDING, PARAMS_INCLUDES, PARAMS_LAYOUT, SHADER_DIR, WORKGROUP, MotionFrame
 
 
 class GLMotionPass:
@@ -20,7 +21,7 @@ class GLMotionPass:
         require_opengl(ctx, 430, "compute shaders", "GPU-driven motion")
         self.ctx = ctx
         self.stats = stats
-        self.program = ctx.compute_shader(load_shader(SNIPPETS_DIR / f"{KERNEL}.comp", "compute", "glsl",
+        self.program = ctx.compute_shader(load_shader(SHADER_DIR / f"{KERNEL}.comp", "compute", "glsl",
                                                            generated=PARAMS_INCLUDES).text)
         self.params = ctx.buffer(reserve=PARAMS_LAYOUT.size)
         self.motion: moderngl.Buffer | None = None

@@ -1,18 +1,18 @@
 """The records of a captured frame (:mod:`.capture`): passes in order, and per draw what went into it.
 
-Kept apart from the recorder so that the renderers' base (which holds the "not recording" stand-in) needs nothing
-else of the capture.
+Kept apart from the recorder (:mod:`.capture`) so that the per-draw description it calls (:mod:`.inspect_draw`)
+can build records without importing it back.
 """
 
 from __future__ import annotations
 
 import uuid
-from contextlib import nullcontext
 from dataclasses import dataclass, field
 from typing import Any
 
-#: What a renderer's hooks return when nothing is being captured (reusable, costs one attribute test).
-NOT_RECORDING = nullcontext()
+import numpy as np
+
+from gandalf_core.render.frame import DrawBatch
 
 
 @dataclass
@@ -79,3 +79,12 @@ class FrameCapture:
     def draws_of(self, entity: uuid.UUID) -> list[DrawRecord]:
         """The draws that drew ``entity``."""
         return [d for d in self.draws if entity in d.entities]
+
+
+def instance_batches(draw: DrawRecord) -> list[DrawBatch | None]:
+    """One batch per instance of a scene draw (None for the sky's one triangle)."""
+    if draw.mesh is None:
+        return [None]
+    return [DrawBatch(draw.mesh, draw.material, np.array(draw.rows[i:i + 1] or [0], dtype=np.intp),
+                      first_instance=draw.first_instance + i, mirrored=draw.mirrored)
+            for i in range(draw.instances)]

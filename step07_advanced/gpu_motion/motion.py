@@ -1,29 +1,30 @@
-"""GPU-driven motion, the part both backends share: what a system hands the render system for entities whose
-motion the GPU evaluates, and the per-instance rows the compute pass reads.
+"""GPU-driven motion, the part both backends share: what the system hands the renderer for entities whose motion
+the GPU evaluates, and the per-instance rows the compute pass reads.
 
-A system that moves its entities on the GPU (``SpinSystem(path="gpu")``) leaves their Transform at the pose they
-had when they joined (so the CPU neither recomputes nor uploads them: they are static there) and offers
-``gpu_motion()``: their transform rows and, per row, a world axis, a speed (rad/s) and the time they joined. The
-render system turns that into :data:`MOTION_FLOATS` float32 per instance, in instance order; each frame the
-renderer runs one compute pass (``render/shaders/motion_spin.comp`` / ``.wgsl``) that turns every instance's rows
-by ``R(axis, speed · t + phase)`` and draws from the result. An instance with speed 0 and phase 0 is copied.
+The :class:`~.system.GpuSpinSystem` leaves its entities' Transforms at the pose they had when they joined (so the
+CPU neither recomputes nor uploads them: they are static there) and hands the render system, through its
+``instance_pass`` hook, a pass over the instance rows: per entity a world axis, a speed (rad/s) and the time it
+joined (:class:`GpuMotion`), turned into :data:`MOTION_FLOATS` float32 per instance, in instance order. Each frame
+the renderer runs one compute pass (``shaders/motion_spin.comp`` / ``.wgsl``, :mod:`.motion_gl` /
+:mod:`.motion_wgpu`) that turns every instance's rows by ``R(axis, speed · t + phase)``; the draws read the
+result. An instance with speed 0 and phase 0 is copied.
 
 **Time in float32.** The kernel gets ``t`` = seconds since an *epoch* (:data:`MOTION_EPOCH` wide), and every
 instance a phase ``speed · (epoch − joined)`` wrapped to [0, 2π) in float64. So the angle it forms,
 ``speed · t + phase``, has ``t < 1024`` s whatever the run time: its float32 error stays under
 ``|speed| · 1024 · 2⁻²⁴ ≈ 6e-5 · |speed|`` rad plus a few ulp of 2π. When the clock passes the epoch's end the
-render system starts a new epoch and writes the phases again (once every 17 minutes, O(N) then).
+system starts a new epoch and writes the phases again (once every 17 minutes, O(N) then).
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 
-from ..resources.layout import BlockLayout
-from ..systems.motion import GpuMotion
+from gandalf_core.resources.layout import BlockLayout
 
 #: float32 per instance in the motion buffer: (axis x, y, z, speed rad/s), (phase rad, 0, 0, 0).
 MOTION_FLOATS = 8
@@ -31,8 +32,10 @@ MOTION_FLOATS = 8
 MOTION_EPOCH = 1024.0
 #: The kernel's workgroup size (``local_size_x`` / ``@workgroup_size``).
 WORKGROUP = 64
-#: The kernel's file stem in ``render/shaders`` (``.comp`` for GLSL 4.30, ``.wgsl``).
+#: The kernel's file stem in this technique's ``shaders`` (``.comp`` for GLSL 4.30, ``.wgsl``).
 KERNEL = "motion_spin"
+#: Where the kernels lie.
+SHADER_DIR = Path(__file__).resolve().parent / "shaders"
 #: The kernel's uniform block, declared once: the time since the epoch and the number of instances.
 PARAMS_LAYOUT = BlockLayout("MotionParams", [("time", "float"), ("count", "uint")])
 #: Its GL binding point (0 and 1 are the engine's Frame and Lights); WGSL: @group(0) @binding(0).
@@ -45,8 +48,19 @@ PARAMS_INCLUDES = {
 
 
 @dataclass
+class GpuMotion:
+    """Per-entity spins a system asks the GPU to evaluate: transform ``rows`` and, per row, ``axes`` (world,
+    unit), ``speeds`` (rad/s) and ``joined`` (app seconds when the Transform's pose was the entity's)."""
+
+    rows: np.ndarray
+    axes: np.ndarray
+    speeds: np.ndarray
+    joined: np.ndarray
+
+
+@dataclass
 class MotionFrame:
-    """What a frame hands the renderer: the motion rows (instance order), their version (uploaded again only when
+    """What a frame's motion pass reads: the motion rows (instance order), their version (uploaded again only when
     it changes) and the kernel's time since the epoch."""
 
     rows: np.ndarray  # (instances, MOTION_FLOATS) float32
