@@ -6,7 +6,9 @@ imports it.
 * **What it sees.** A private folder (``gandalf-sandbox-*`` in the system's temp folder, mode 0700) holds a copy of
   the student's package as ``<step>/exercises``, the step packages' other modules (links, never ``solutions/``),
   the engine, the server (``sandbox_child.py``) and its own temp folder and bytecode cache. Python runs isolated
-  (``-I``) with that folder first on ``sys.path`` and as its working folder; the checkout is not on ``sys.path``.
+  (``-I``) with that folder first on ``sys.path`` and as its working folder, then the grader's package folders (its
+  site-packages, and a ``pip install --target`` folder on its path, which ``-I`` would drop); the checkout is not
+  on ``sys.path``.
 * **Who it is.** When the grader runs as root (Gradescope does), the process runs as a user of its own (a uid without
   a name, one per sandbox), in its own pid namespace and a mount namespace where every top folder but the system's
   (``/usr``, ``/etc``, ...), so ``/tmp``, ``/home``, ``/root``, ``/opt`` and any other where a copy of the course may
@@ -64,6 +66,7 @@ for limit, value in ((resource.RLIMIT_AS, {memory}), (resource.RLIMIT_FSIZE, {fs
 sys.meta_path[:] = [f for f in sys.meta_path if "editable" not in type(f).__name__.lower()
                     and "editable" not in getattr(f, "__name__", "").lower()]
 sys.path[:] = [pkgs, private] + [p for p in sys.path if p and "site-packages" not in p or p.endswith("site-packages")]
+sys.path += [p for p in {site} if p not in sys.path]  # the grader's packages from its path (pip --target)
 sys.pycache_prefix = os.path.join(private, "pycache")
 sys.argv = sys.argv[2:]
 import gandalf_child
@@ -310,7 +313,8 @@ class Sandbox:
 
     def _command(self, private: Path, fd_in: int, fd_out: int) -> list[str]:
         boot = _BOOT.format(memory=self.memory, fsize=FILE_LIMIT, cpu=CPU_LIMIT,
-                            nproc=PROCESS_LIMIT if self.uid is not None else None)
+                            nproc=PROCESS_LIMIT if self.uid is not None else None,
+                            site=[str(p) for p in site_folders()])
         python = [sys.executable, "-I", "-c", boot, str(private), str(private / "pkgs"), str(fd_in), str(fd_out)]
         if self.mode == "process":
             return python

@@ -46,6 +46,8 @@ ROOT = Path(__file__).resolve().parents[2]
 ATTACKS = Path(__file__).resolve().parent
 #: step package -> the exercise module each attack of its folder replaces.
 TARGETS = {"step01_window": "hue.py"}
+#: step package -> the points its exercises are worth.
+FULL_MARKS = {"step01_window": 2.0}
 REPLAY_ENV = "GANDALF_ATTACK_REPLAY"
 SITE = Path(sysconfig.get_paths()["purelib"])
 #: Seconds a detached process is given to act after a grading run ends, before the files are checked.
@@ -264,22 +266,65 @@ def honest_class(step: str, root: Path = ROOT) -> dict[str, str | None]:
             **{f"z_{kind}": honest_module(step, kind, root) for kind in HONEST}}
 
 
+def contained_here(attack: Path) -> bool:
+    """Whether this machine can keep ``attack`` from the grader's files: one that reads the checkout or writes the
+    instructor's files is not replayed where the grader has no namespaces (its student's process can read and write
+    what the grader's user can; such a grade is flagged, see the instructors page)."""
+    from gandalf_tools.grading import sandbox
+
+    return not (sandbox.isolation() == "process" and ("solution" in attack.stem or "@@" in attack.read_text()))
+
+
+def verdict(step: str, singles: dict[str, Single], alone: Batch | None, both: Batch | None,
+            hostile: dict[str, Path]) -> list[str]:
+    """What is wrong with a replay (empty: nothing): the reference without full marks, an attacker above the
+    stub in any mode, a file outside an attacker's output changed, a classmate whose row differs from the batch of
+    the classmates alone."""
+    wrong = []
+    stub, solution = singles["stub"], singles["solution"]
+    if min(solution.front_end, solution.gradescope) < FULL_MARKS[step] - 1e-9:
+        wrong.append(f"the reference solution got {solution.front_end} / {solution.gradescope}, not full marks")
+    for name, s in singles.items():
+        if name in ("stub", "solution"):
+            continue
+        if s.front_end > stub.front_end + 1e-9 or s.gradescope > stub.gradescope + 1e-9:
+            wrong.append(f"{name}: gained points ({s.front_end} front end, {s.gradescope} Gradescope)")
+        wrong += [f"{name}: {c}" for c in s.changed]
+    if alone is not None and both is not None:
+        wrong += [f"batch: {c}" for c in both.changed]
+        for student, row in alone.rows.items():
+            mine = both.rows.get(student, {})
+            if (mine.get("exercises"), mine.get("error")) != (row["exercises"], ""):
+                wrong.append(f"batch: classmate {student} affected")
+        floor = alone.rows.get("z_stub", {}).get("earned", 0.0)
+        wrong += [f"batch: {s} gained points" for s in hostile if both.rows.get(s, {}).get("earned", 0.0) > floor]
+        wrong += [f"batch: {s} has no row" for s in hostile if s not in both.rows]
+    return wrong
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--root", type=Path, default=ROOT, help="the checkout whose grader is attacked")
     parser.add_argument("--step", default="step01_window")
     parser.add_argument("--batch", action="store_true", help="also grade every attacker in one batch with classmates")
+    parser.add_argument("--check", action="store_true",
+                        help="exit 1 when an attacker gains a point or changes a file, or a classmate is affected "
+                             "(attacks this machine cannot contain are left out and named)")
     args = parser.parse_args(argv)
     step = args.step
+    start = time.perf_counter()
+    chosen = [a for a in attacks(step) if not args.check or contained_here(a)]
+    for attack in sorted(set(attacks(step)) - set(chosen)):
+        print(f"left out (this machine has no namespaces): {attack.stem}")
     singles = {"stub": grade_single(step, None, args.root),
                "solution": grade_single(step, args.root / step / "solutions" / TARGETS[step], args.root)}
-    singles |= {a.stem: grade_single(step, a, args.root) for a in attacks(step)}
+    singles |= {a.stem: grade_single(step, a, args.root) for a in chosen}
     rows: dict[str, dict] = {}
-    affected = ""
+    alone = both = None
+    hostile = {f"m_{a.stem}": a for a in chosen}
     if args.batch:
         alone = grade_batch(step, honest_class(step, args.root), root=args.root)
-        both = grade_batch(step, {**honest_class(step, args.root), **{f"m_{a.stem}": a for a in attacks(step)}},
-                           root=args.root)
+        both = grade_batch(step, {**honest_class(step, args.root), **hostile}, root=args.root)
         rows = both.rows
         hurt = [s for s, r in alone.rows.items() if rows.get(s, {}).get("exercises") != r["exercises"]
                 or rows.get(s, {}).get("error")]
@@ -292,7 +337,15 @@ def main(argv: list[str] | None = None) -> int:
         batch = f"{row['earned']:6.2f}" if row else "     -"
         flags = "; ".join(x for x in (s.flags, row.get("error", ""), *s.changed) if x)
         print(f"{name:<28} {s.front_end:6.2f} {s.gradescope:6.2f} {batch}  {flags}", flush=True)
-    return 0
+    if not args.check:
+        return 0
+    wrong = verdict(step, singles, alone, both, hostile)
+    for line in wrong:
+        print("ATTACK GOT THROUGH:", line)
+    print(f"{len(chosen)} attacks replayed in {time.perf_counter() - start:.0f} s: "
+          f"{'0 points gained, 0 files changed' if not wrong else f'{len(wrong)} problems'}"
+          f"{', 0 classmates affected' if args.batch and not wrong else ''}")
+    return 1 if wrong else 0
 
 
 if __name__ == "__main__":
