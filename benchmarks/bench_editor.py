@@ -3,7 +3,8 @@
 The scene is ``bench_scenes.py``'s scene5 (100 lit rotating cubes) with a cube selected (the inspector shows its
 fields). Modes: ``off`` (no editor); ``five`` (the menu bar and five panels: hierarchy, inspector, systems, stats,
 console; no viewport); ``shader`` (those five and the shader panel, open and idle on the selected cube's shader: it
-looks at the shader's files every time the panels run); ``all`` (every panel that starts open, the viewport
+looks at the shader's files every time the panels run); ``frame`` (those five and the frame inspector, open and idle:
+no frame captured); ``all`` (every panel that starts open, the viewport
 included: it renders the scene into its texture, with a gizmo, and the frame under the panels is only cleared). The
 modes run in the same process in many short rounds, each mode first, second, ... in turn, so that the drift of a
 shared machine and of the GPU's clocks hits all alike; every frame ends with a 1-pixel read-back so the GPU has
@@ -77,7 +78,7 @@ def measure(backend: str, width: int, height: int, frames: int, rounds: int) -> 
     app = make_app(backend, width, height)
     app.run(frames=20)  # build pipelines and resources before timing
     cube = next(e for e, _ in app.scene.view(MeshComponent))
-    modes = ("off", "five", "shader", "all")
+    modes = ("off", "five", "shader", "frame", "all")
     times: dict[str, list[float]] = {mode: [] for mode in modes}
     panel_frames: dict[str, list[float]] = {mode: [] for mode in modes[1:]}  # share of frames that ran the panels
     for round_ in range(rounds):
@@ -90,7 +91,7 @@ def measure(backend: str, width: int, height: int, frames: int, rounds: int) -> 
                 starts_open = {kind: editor.panel_visible(kind) for kind in PANEL_KINDS}
                 for kind in PANEL_KINDS:
                     editor.show_panel(kind, kind in FIVE or kind == "menu" or (mode == "all" and starts_open[kind])
-                                      or (mode == "shader" and kind == "shader"))
+                                      or (mode in ("shader", "frame") and kind == mode))
                 app.run(frames=10)  # the GUI's font atlas, buffers and the viewport's target, before timing
                 ran = editor.gui_frames
             gc.collect()  # what the last mode left behind is not collected inside a timed round
