@@ -228,7 +228,8 @@ def test_every_top_folder_but_the_systems_shows_only_the_way_to_what_it_needs(st
 
 def test_an_installed_course_beside_the_packages_shows_no_solutions(tmp_path, monkeypatch):
     """A wheel of the course installed in a site folder (``pip install --target``) holds ``solutions/`` too: the
-    site folder is put back for the student's process, its solutions stay covered."""
+    site folder is put back for the student's process, and kept on its path (isolated Python, ``-I``, would drop a
+    ``PYTHONPATH`` folder: a grader's packages installed so could not be imported), its solutions stay covered."""
     if sandbox.isolation() == "process":
         pytest.skip("no namespaces here: the student's process sees what its user can (the grade records it)")
     site = tmp_path / "site"
@@ -245,6 +246,7 @@ def test_an_installed_course_beside_the_packages_shows_no_solutions(tmp_path, mo
     try:
         package = remote.install("step01_window", folder, box, budget=5.0)
         assert package.read(str(site / "installed.py")) == "VISIBLE = 1\n"
+        assert package.import_it("installed") == "imported"
         assert package.read(str(site / "step01_window" / "solutions" / "hue.py")).startswith("unreadable")
     finally:
         box.stop()
