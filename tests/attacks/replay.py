@@ -275,6 +275,26 @@ def contained_here(attack: Path) -> bool:
     return not (sandbox.isolation() == "process" and ("solution" in attack.stem or "@@" in attack.read_text()))
 
 
+def classmates_affected(alone: Batch, both: Batch) -> list[str]:
+    """The honest classmates whose row in the batch with attackers differs from their row in the batch of the
+    classmates alone (other points per exercise, or an error)."""
+    def row(batch: Batch, student: str) -> tuple:
+        return batch.rows.get(student, {}).get("exercises"), batch.rows.get(student, {}).get("error")
+
+    return [s for s, r in alone.rows.items() if row(both, s) != (r["exercises"], "")]
+
+
+def batch_verdict(alone: Batch, both: Batch, hostile: dict[str, Path]) -> list[str]:
+    """What is wrong with a batch of attackers among classmates (empty: nothing): a file outside the outputs
+    changed, a classmate affected, an attacker above the stub's row or without a row."""
+    wrong = [f"batch: {c}" for c in both.changed]
+    wrong += [f"batch: classmate {s} affected" for s in classmates_affected(alone, both)]
+    floor = alone.rows.get("z_stub", {}).get("earned", 0.0)
+    wrong += [f"batch: {s} gained points" for s in hostile if both.rows.get(s, {}).get("earned", 0.0) > floor]
+    wrong += [f"batch: {s} has no row" for s in hostile if s not in both.rows]
+    return wrong
+
+
 def verdict(step: str, singles: dict[str, Single], alone: Batch | None, both: Batch | None,
             hostile: dict[str, Path]) -> list[str]:
     """What is wrong with a replay (empty: nothing): the reference without full marks, an attacker above the
@@ -291,14 +311,7 @@ def verdict(step: str, singles: dict[str, Single], alone: Batch | None, both: Ba
             wrong.append(f"{name}: gained points ({s.front_end} front end, {s.gradescope} Gradescope)")
         wrong += [f"{name}: {c}" for c in s.changed]
     if alone is not None and both is not None:
-        wrong += [f"batch: {c}" for c in both.changed]
-        for student, row in alone.rows.items():
-            mine = both.rows.get(student, {})
-            if (mine.get("exercises"), mine.get("error")) != (row["exercises"], ""):
-                wrong.append(f"batch: classmate {student} affected")
-        floor = alone.rows.get("z_stub", {}).get("earned", 0.0)
-        wrong += [f"batch: {s} gained points" for s in hostile if both.rows.get(s, {}).get("earned", 0.0) > floor]
-        wrong += [f"batch: {s} has no row" for s in hostile if s not in both.rows]
+        wrong += batch_verdict(alone, both, hostile)
     return wrong
 
 
@@ -326,8 +339,7 @@ def main(argv: list[str] | None = None) -> int:
         alone = grade_batch(step, honest_class(step, args.root), root=args.root)
         both = grade_batch(step, {**honest_class(step, args.root), **hostile}, root=args.root)
         rows = both.rows
-        hurt = [s for s, r in alone.rows.items() if rows.get(s, {}).get("exercises") != r["exercises"]
-                or rows.get(s, {}).get("error")]
+        hurt = classmates_affected(alone, both)
         affected = "yes: " + ", ".join(hurt) if hurt else "no"
         print(f"batch of {len(both.rows)} in {both.seconds:.0f} s (classmates alone {alone.seconds:.0f} s); "
               f"classmates affected: {affected}; files changed: {both.changed or 'none'}")

@@ -20,7 +20,17 @@ marks. See ``tests/attacks/replay.py``."""
 from __future__ import annotations
 
 import pytest
-from attacks.replay import ATTACKS, ROOT, TARGETS, attacks, contained_here, grade_batch, grade_single, honest_class
+from attacks.replay import (
+    ATTACKS,
+    ROOT,
+    TARGETS,
+    attacks,
+    batch_verdict,
+    contained_here,
+    grade_batch,
+    grade_single,
+    honest_class,
+)
 
 STEP = "step01_window"
 #: One attack of each kind, replayed alone in the suite.
@@ -63,12 +73,8 @@ def test_a_batch_of_attackers_costs_honest_classmates_nothing():
         "a_correct": 2.0, "z_correct": 2.0, "z_partial": 1.0, "z_stub": 0.0}
     hostile = {f"m_{name}": _attack(name) for name in AT_CLASSMATES if contained_here(_attack(name))}
     both = grade_batch(STEP, {**honest, **hostile})
-    assert both.changed == []
     assert set(both.rows) == set(honest) | set(hostile)
-    for student, row in alone.rows.items():
-        assert (both.rows[student]["exercises"], both.rows[student]["error"]) == (row["exercises"], ""), student
-    gained = {s: both.rows[s]["earned"] for s in hostile if both.rows[s]["earned"] > alone.rows["z_stub"]["earned"]}
-    assert gained == {}, [(s, hostile[s].read_text().splitlines()[0]) for s in gained]
+    assert batch_verdict(alone, both, hostile) == [], {s: a.read_text().splitlines()[0] for s, a in hostile.items()}
 
 
 def test_ci_replays_every_attack_in_both_modes():
