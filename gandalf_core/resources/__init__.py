@@ -15,7 +15,7 @@ from ..lazy import lazy_attributes
 _LAZY = {
     "ResourceError": "errors",
     "GLTFModel": "gltf",
-    "GLTFWarning": "gltf",
+    "GLTFWarning": "gltf_file",
     "load_gltf": "gltf",
     "BLEND_MODES": "material_data",
     "CULL_MODES": "material_data",

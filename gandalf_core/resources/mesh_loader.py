@@ -121,6 +121,10 @@ def _trimesh_load(path: Path, allow_outside: bool) -> Any:
 def _read(path: Path, label: str, allow_outside: bool = False) -> dict[str, MeshData]:
     if path.stat().st_size == 0:
         raise ResourceError(label, "contents", "the file is empty")
+    if path.suffix.lower() in (".gltf", ".glb"):  # what trimesh leaves out of a glTF, named
+        from .gltf_file import GLTFFile, warn_left_out
+
+        warn_left_out(GLTFFile(path, allow_outside).doc, label)
     try:
         loaded = _trimesh_load(path, allow_outside)
     except ResourceError:

@@ -1,19 +1,23 @@
 """glTF files the engine cannot map whole: an accessor that does not exist or an index past the vertex count is an
 error naming the file, the mesh, the primitive, the accessor and the index; an optional extension it leaves out
 (``KHR_texture_transform`` on a texture, a material extension) is a :class:`GLTFWarning` naming the material and
-the extension, never dropped silently."""
+the extension, never dropped silently; so is what trimesh would drop without a word: a primitive of lines or points
+(beside triangles), morph targets, animations, skins, cameras, and the extensions of the file or a node (punctual
+lights, GPU instancing), through :func:`load_gltf` and :func:`load_meshes` alike."""
 
 from __future__ import annotations
 
 import base64
+import contextlib
 import json
+import warnings
 from pathlib import Path
 
 import numpy as np
 import pytest
 from PIL import Image
 
-from gandalf_core.resources import GLTFWarning, ResourceError, load_gltf
+from gandalf_core.resources import GLTFWarning, ResourceError, load_gltf, load_meshes
 
 from .catalogue import error, params, result, run, warning
 
@@ -57,6 +61,37 @@ def _clearcoat(doc):
     doc["materials"][0]["extensions"] = {"KHR_materials_clearcoat": {"clearcoatFactor": 1.0}}
 
 
+def _lines(doc):  # a second primitive of the quad drawn as lines
+    doc["meshes"][0]["primitives"].append({"attributes": {"POSITION": 0}, "indices": 2, "mode": 1})
+
+
+def _points(doc):  # a second mesh, a point cloud on a node of its own
+    doc["meshes"].append({"name": "dots", "primitives": [{"attributes": {"POSITION": 0}, "mode": 0}]})
+    doc["nodes"].append({"mesh": 1})
+    doc["scenes"][0]["nodes"].append(1)
+
+
+def _fan(doc):
+    doc["meshes"][0]["primitives"][0]["mode"] = 6
+
+
+def _animated(doc):
+    doc["nodes"][0]["name"] = "body"
+    doc["animations"] = [{"name": "spin", "channels": [], "samplers": []}]
+    doc["skins"] = [{"joints": [0]}]
+    doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": 1.0, "znear": 0.1}}]
+    doc["meshes"][0]["primitives"][0]["targets"] = [{"POSITION": 0}]
+
+
+def _lights(doc):
+    doc["extensionsUsed"] = ["KHR_lights_punctual", "EXT_mesh_gpu_instancing"]
+    doc["extensions"] = {"KHR_lights_punctual": {"lights": [{"type": "point"}]}}
+    doc["nodes"].append({"name": "lamp", "extensions": {"KHR_lights_punctual": {"light": 0}}})
+    doc["nodes"][0]["name"] = "crowd"
+    doc["nodes"][0]["extensions"] = {"EXT_mesh_gpu_instancing": {"attributes": {"TRANSLATION": 0}}}
+    doc["scenes"][0]["nodes"].append(1)
+
+
 def _position_accessor(doc):
     doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 9
 
@@ -70,11 +105,31 @@ def folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
     write(root, "clearcoat.gltf", edit=_clearcoat)
     write(root, "position.gltf", edit=_position_accessor)
     write(root, "index.gltf", indices=(0, 1, 2, 2, 1, 7))
+    for name, edit in (("lines", _lines), ("points", _points), ("fan", _fan), ("animated", _animated),
+                       ("lights", _lights)):
+        write(root, f"{name}.gltf", edit=edit)
     return root
 
 
 def loads(name: str):
     return lambda folder: load_gltf(folder / name)
+
+
+def quietly(action):
+    """``action`` with its GLTFWarnings silenced: a case about what still loads, or the error it ends in."""
+    def quiet(folder):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", GLTFWarning)
+            return action(folder)
+    return quiet
+
+
+def erring(action):
+    """``action`` with its ResourceError swallowed: a warning case about a file that then ends in an error."""
+    def swallowed(folder):
+        with contextlib.suppress(ResourceError):
+            return action(folder)
+    return swallowed
 
 
 CASES = [
@@ -87,6 +142,25 @@ CASES = [
           "mesh 'quad' primitive 0 attribute POSITION", "accessor 9 does not exist", "3 accessors"),
     error("index-out-of-range", loads("index.gltf"), ResourceError, "index.gltf", "mesh 'quad' primitive 0",
           "accessor 2", "index 5 is 7", "4 vertices"),
+    warning("lines-primitive-warned", loads("lines.gltf"), GLTFWarning, "lines.gltf", "mesh 'quad' primitive 1",
+            "mode LINES (1) is not drawn"),
+    result("lines-beside-triangles-still-draw-the-triangles", quietly(loads("lines.gltf")),
+           lambda m: len(m.parts) == 1),
+    warning("points-mesh-warned", loads("points.gltf"), GLTFWarning, "mesh 'dots' primitive 0", "mode POINTS (0)"),
+    warning("points-warned-by-load-meshes-too", lambda folder: load_meshes(folder / "points.gltf"), GLTFWarning,
+            "points.gltf", "mesh 'dots' primitive 0", "POINTS"),
+    warning("triangle-fan-warned", erring(loads("fan.gltf")), GLTFWarning, "mesh 'quad' primitive 0",
+            "mode TRIANGLE_FAN (6) is not drawn"),
+    error("triangle-fan-alone-is-no-triangles", quietly(loads("fan.gltf")), ResourceError, "fan.gltf",
+          "holds no triangles"),
+    warning("animations-warned", loads("animated.gltf"), GLTFWarning, "animated.gltf", "1 animation(s)",
+            "drawn at rest"),
+    warning("skins-warned", loads("animated.gltf"), GLTFWarning, "1 skin(s)", "drawn unskinned"),
+    warning("cameras-warned", loads("animated.gltf"), GLTFWarning, "1 camera(s)", "ignored"),
+    warning("morph-targets-warned", loads("animated.gltf"), GLTFWarning, "mesh 'quad' primitive 0",
+            "1 morph target(s)", "the base shape is drawn"),
+    warning("punctual-lights-warned", loads("lights.gltf"), GLTFWarning, "node 'lamp'", "KHR_lights_punctual"),
+    warning("gpu-instancing-warned", loads("lights.gltf"), GLTFWarning, "node 'crowd'", "EXT_mesh_gpu_instancing"),
 ]
 
 
