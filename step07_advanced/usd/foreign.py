@@ -83,12 +83,19 @@ def local_matrix(xformable: UsdGeom.Xformable, notes: Notes) -> tuple[Gf.Matrix4
     path = str(xformable.GetPath())
     time = Usd.TimeCode.Default()
     ops = xformable.GetOrderedXformOps()
-    samples = sorted({t for op in ops for t in op.GetAttr().GetTimeSamples()})
-    if samples:
-        time = Usd.TimeCode(samples[0])
-        notes.append((path, f"animated xform ops: the transform at time {samples[0]:g} is used (no animation)"))
+    time = _first_sample(path, [op.GetAttr() for op in ops], "animated xform ops", "the transform", notes)
     matrix = xformable.GetLocalTransformation(time)
     return matrix, xformable.GetResetXformStack()
+
+
+def _first_sample(path: str, attributes: list[Usd.Attribute], what: str, value: str, notes: Notes) -> Usd.TimeCode:
+    """The time to read ``attributes`` at: their first time sample when any of them is animated (noted: the engine
+    draws no animation), else the default time."""
+    samples = sorted({t for attribute in attributes if attribute for t in attribute.GetTimeSamples()})
+    if not samples:
+        return Usd.TimeCode.Default()
+    notes.append((path, f"{what}: {value} at time {samples[0]:g} is used (no animation)"))
+    return Usd.TimeCode(samples[0])
 
 
 # --- primvars -----------------------------------------------------------------------------------------
@@ -108,8 +115,8 @@ def _primvar(api: UsdGeom.PrimvarsAPI, name: str) -> UsdGeom.Primvar | None:
     return primvar if primvar and primvar.HasAuthoredValue() else None
 
 
-def _flattened(primvar: UsdGeom.Primvar, width: int) -> _Value | None:
-    values = primvar.ComputeFlattened()
+def _flattened(primvar: UsdGeom.Primvar, width: int, time: Usd.TimeCode) -> _Value | None:
+    values = primvar.ComputeFlattened(time)
     if values is None:
         return None
     return _Value(np.array(values, dtype=np.float64).reshape(-1, width), str(primvar.GetInterpolation()))
@@ -127,8 +134,11 @@ def mesh_from_usd(mesh: UsdGeom.Mesh, st_name: str, notes: Notes) -> tuple[MeshD
     Returns ``(None, None)`` (with a note) for a mesh that cannot be drawn: no points, an invalid topology.
     """
     path = str(mesh.GetPath())
-    points_value = mesh.GetPointsAttr().Get()
-    counts_value, indices_value = mesh.GetFaceVertexCountsAttr().Get(), mesh.GetFaceVertexIndicesAttr().Get()
+    time = _first_sample(path, [mesh.GetPointsAttr(), mesh.GetFaceVertexCountsAttr(), mesh.GetFaceVertexIndicesAttr(),
+                                mesh.GetNormalsAttr()], "animated mesh", "its shape", notes)
+    points_value = mesh.GetPointsAttr().Get(time)
+    counts_value = mesh.GetFaceVertexCountsAttr().Get(time)
+    indices_value = mesh.GetFaceVertexIndicesAttr().Get(time)
     if not points_value or not counts_value or indices_value is None:
         notes.append((path, "a mesh without points or faces: not drawn"))
         return None, None
@@ -167,19 +177,19 @@ def mesh_from_usd(mesh: UsdGeom.Mesh, st_name: str, notes: Notes) -> tuple[MeshD
     values: dict[str, _Value] = {}
     st = _primvar(api, st_name)
     if st is not None:
-        values["uv"] = _flattened(st, 2)
+        values["uv"] = _flattened(st, 2, time)
     normals_primvar = _primvar(api, "normals")
     if normals_primvar is not None:
-        values["normal"] = _flattened(normals_primvar, 3)
+        values["normal"] = _flattened(normals_primvar, 3, time)
     elif mesh.GetNormalsAttr().HasAuthoredValue():
-        values["normal"] = _Value(np.array(mesh.GetNormalsAttr().Get(), dtype=np.float64).reshape(-1, 3),
+        values["normal"] = _Value(np.array(mesh.GetNormalsAttr().Get(time), dtype=np.float64).reshape(-1, 3),
                                   str(mesh.GetNormalsInterpolation()))
     color_primvar = _primvar(api, "displayColor")
     constant_color = None
     if color_primvar is not None:
-        color = _flattened(color_primvar, 3)
+        color = _flattened(color_primvar, 3, time)
         opacity_primvar = _primvar(api, "displayOpacity")
-        opacity = _flattened(opacity_primvar, 1) if opacity_primvar is not None else None
+        opacity = _flattened(opacity_primvar, 1, time) if opacity_primvar is not None else None
         if color is not None and color.interpolation == UsdGeom.Tokens.constant and len(color.data) >= 1:
             alpha = float(opacity.data[0, 0]) if opacity is not None and len(opacity.data) else 1.0
             constant_color = np.array([*color.data[0], alpha])

@@ -1,8 +1,9 @@
-"""USD scenes: missing, malformed and wrongly named files; prims the engine cannot map (warned, listed by path and
-why); references, payloads and sublayers outside the scene's folder (refused unless ``allow_outside``) or missing
-(an error naming the layer); attributes of the wrong type or with bad values (named by prim and attribute, and the
-component field); missing texture files; duplicate asset names; saving through a symbolic link. Loading failures
-leave the open scene as it was; saving failures leave the old file as it was."""
+"""USD scenes: missing, malformed and wrongly named files; prims the engine cannot map (warned, listed by path and why);
+other tools' meshes that are double-sided (drawn with a copy of their material that culls nothing) or given only as
+time samples (drawn at the first, listed); references, payloads and sublayers outside the scene's folder (refused
+unless ``allow_outside``) or missing (an error naming the layer); attributes of the wrong type or with bad values
+(named by prim and attribute, and the component field); missing texture files; duplicate asset names; saving through
+a symbolic link. Loading failures leave the open scene as it was; saving failures leave the old file as it was."""
 
 from __future__ import annotations
 
@@ -65,6 +66,8 @@ def folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
         "unmapped": _unmapped,
         "clip_reversed": lambda st: UsdGeom.Camera.Define(st, "/World/cam").CreateClippingRangeAttr((10.0, 1.0)),
         "nan_points": _nan_points,
+        "double_sided": _double_sided,
+        "animated_mesh": _animated_mesh,
     }.items():
         stage = Usd.Stage.CreateNew(str(inside / f"{name}.usda"))
         UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.y)
@@ -87,6 +90,43 @@ def _nan_points(stage: Usd.Stage) -> None:
     mesh.CreatePointsAttr([(0, 0, 0), (1, float("nan"), 0), (0, 1, 0)])
     mesh.CreateFaceVertexCountsAttr([3])
     mesh.CreateFaceVertexIndicesAttr([0, 1, 2])
+
+
+def _triangle(stage: Usd.Stage, path: str) -> UsdGeom.Mesh:
+    mesh = UsdGeom.Mesh.Define(stage, path)
+    mesh.CreatePointsAttr([(0, 0, 0), (1, 0, 0), (0, 1, 0)])
+    mesh.CreateFaceVertexCountsAttr([3])
+    mesh.CreateFaceVertexIndicesAttr([0, 1, 2])
+    mesh.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
+    return mesh
+
+
+def _double_sided(stage: Usd.Stage) -> None:
+    """Two grey triangles, one drawn from both sides (a leaf, a sheet of paper): they share the grey."""
+    _triangle(stage, "/World/leaf").CreateDoubleSidedAttr(True)
+    _triangle(stage, "/World/wall")
+
+
+def _animated_mesh(stage: Usd.Stage) -> None:
+    """A triangle whose points are time samples only (a mesh baked from a simulation): no default value."""
+    mesh = _triangle(stage, "/World/flag")
+    points = mesh.GetPointsAttr()
+    points.Clear()
+    points.Set([(0, 0, 0), (2, 0, 0), (0, 2, 0)], 1.0)
+    points.Set([(0, 0, 0), (4, 0, 0), (0, 4, 0)], 10.0)
+
+
+def culls(name: str):
+    """The cull mode of the material the loaded entity ``name`` draws with."""
+    def check(loaded):
+        entity = next(e for e in loaded.entities if loaded.get_component(e, InfoComponent).name == name)
+        return loaded.assets.materials[loaded.get_component(entity, MaterialComponent).material].cull
+    return check
+
+
+def flag_extent(loaded) -> float:
+    entity = next(e for e in loaded.entities if loaded.get_component(e, InfoComponent).name == "flag")
+    return float(loaded.assets.meshes[loaded.get_component(entity, MeshComponent).mesh].positions.max())
 
 
 def float_ops(folder: Path) -> Path:
@@ -219,6 +259,14 @@ CASES = [
           "checker.png"),
     error("duplicate-asset-names", loads(edited('gandalf:name = "blue"', 'gandalf:name = "red"', "dup.usda")),
           USDSceneError, "dup.usda", "'red'", "two material prims"),
+    result("double-sided-mesh-culls-nothing", quietly(loads("scene/double_sided.usda")),
+           lambda s: culls("leaf")(s) == "none"),
+    result("one-sided-mesh-still-culls-back", quietly(loads("scene/double_sided.usda")),
+           lambda s: culls("wall")(s) == "back"),
+    result("mesh-with-time-samples-only-drawn-at-its-first", quietly(loads("scene/animated_mesh.usda")),
+           lambda s: flag_extent(s) == 2.0),
+    warning("mesh-with-time-samples-only-warned", loads("scene/animated_mesh.usda"), USDSceneWarning,
+            "</World/flag>", "animated mesh: its shape at time 1 is used (no animation)"),
     result("save-through-a-symlink-writes-its-target", through_a_link,
            lambda value: value == (True, True)),
 ]
