@@ -32,7 +32,7 @@ import numpy as np
 from gandalf_core.resources.errors import ResourceError
 from gandalf_core.resources.gltf_file import GLTFFile as _File
 from gandalf_core.resources.gltf_file import GLTFWarning as GLTFWarning
-from gandalf_core.resources.gltf_file import warn_left_out
+from gandalf_core.resources.gltf_file import refuse_misread, warn_left_out
 from gandalf_core.resources.material_data import MaterialData
 from gandalf_core.resources.mesh_data import MeshData
 from gandalf_core.resources.texture_data import TextureData
@@ -182,6 +182,7 @@ def load_gltf(path: str | Path, shader: str = "pbr_model", extra_textures: Seque
     if required:
         raise ResourceError(file.label, "extensionsRequired", f"{', '.join(map(str, required))} not supported")
     warn_left_out(file.doc, file.label)
+    refuse_misread(file.doc, file.label)
     textures: dict[str, TextureData] = {}
     materials: dict[str, MaterialData] = {}
     by_index: dict[int, str] = {}

@@ -122,3 +122,35 @@ def warn_left_out(doc: Mapping[str, Any], label: str) -> None:
                                               "ignored (the base shape is drawn)")
             for extension in primitive.get("extensions", {}) or {}:
                 warn(f"{name} primitive {k}", f"extension {extension} is not supported: it is ignored")
+            if "COLOR_0" in primitive.get("attributes", {}) and "material" in primitive:
+                warn(f"{name} primitive {k}", "vertex colours (COLOR_0) beside a material are not read: ignored")
+
+
+_COMPONENT_TYPES = {5120: "BYTE", 5121: "UNSIGNED_BYTE", 5122: "SHORT", 5123: "UNSIGNED_SHORT", 5125: "UNSIGNED_INT",
+                    5126: "FLOAT"}
+
+
+def refuse_misread(doc: Mapping[str, Any], label: str) -> None:
+    """A :class:`ResourceError` naming the mesh, primitive, attribute and accessor for what trimesh would read into
+    wrong numbers without a word: a sparse accessor (its substitutions are not applied) and texture coordinates
+    stored as (normalized) integers (read as whole numbers, not 0..1)."""
+    accessors = doc.get("accessors", []) or []
+    for m, mesh in enumerate(doc.get("meshes", []) or []):
+        for k, primitive in enumerate(mesh.get("primitives", []) or []):
+            used = dict(primitive.get("attributes", {}))
+            if "indices" in primitive:
+                used["indices"] = primitive["indices"]
+            for attribute, index in used.items():
+                if not isinstance(index, int) or not 0 <= index < len(accessors):
+                    continue  # the model loader names a missing accessor; trimesh fails on it
+                accessor = accessors[index]
+                where = f"mesh '{mesh.get('name', m)}' primitive {k} {attribute} (accessor {index})"
+                if "sparse" in accessor:
+                    raise ResourceError(label, where, "is a sparse accessor, which is not supported (its substituted "
+                                                      "values would be left out): store the values whole")
+                kind = accessor.get("componentType")
+                if attribute.startswith("TEXCOORD_") and kind != 5126:
+                    normalized = "normalized " if accessor.get("normalized") else ""
+                    raise ResourceError(label, where, f"{normalized}{_COMPONENT_TYPES.get(kind, kind)} texture "
+                                                      "coordinates are not supported (they would be read as whole "
+                                                      "numbers, not 0..1): store them as FLOAT")

@@ -122,9 +122,11 @@ def _read(path: Path, label: str, allow_outside: bool = False) -> dict[str, Mesh
     if path.stat().st_size == 0:
         raise ResourceError(label, "contents", "the file is empty")
     if path.suffix.lower() in (".gltf", ".glb"):  # what trimesh leaves out of a glTF, named
-        from .gltf_file import GLTFFile, warn_left_out
+        from .gltf_file import GLTFFile, refuse_misread, warn_left_out
 
-        warn_left_out(GLTFFile(path, allow_outside).doc, label)
+        doc = GLTFFile(path, allow_outside).doc
+        warn_left_out(doc, label)
+        refuse_misread(doc, label)
     try:
         loaded = _trimesh_load(path, allow_outside)
     except ResourceError:

@@ -3,7 +3,9 @@ error naming the file, the mesh, the primitive, the accessor and the index; an o
 (``KHR_texture_transform`` on a texture, a material extension) is a :class:`GLTFWarning` naming the material and
 the extension, never dropped silently; so is what trimesh would drop without a word: a primitive of lines or points
 (beside triangles), morph targets, animations, skins, cameras, and the extensions of the file or a node (punctual
-lights, GPU instancing), through :func:`load_gltf` and :func:`load_meshes` alike."""
+lights, GPU instancing), vertex colours beside a material; what it would read into wrong numbers is an error naming
+the accessor (a sparse accessor, texture coordinates stored as integers); through :func:`load_gltf` and
+:func:`load_meshes` alike."""
 
 from __future__ import annotations
 
@@ -92,6 +94,37 @@ def _lights(doc):
     doc["scenes"][0]["nodes"].append(1)
 
 
+def _accessor(doc, values: np.ndarray, component_type: int, kind: str, normalized: bool = False) -> int:
+    """Append ``values`` to the inline buffer as a new accessor; returns its index."""
+    blob = base64.b64decode(doc["buffers"][0]["uri"].split(",", 1)[1])
+    offset, raw = len(blob), values.tobytes()
+    blob += raw + b"\0" * (-len(raw) % 4)
+    doc["buffers"][0] = {"byteLength": len(blob),
+                         "uri": "data:application/octet-stream;base64," + base64.b64encode(blob).decode()}
+    doc["bufferViews"].append({"buffer": 0, "byteOffset": offset, "byteLength": len(raw)})
+    doc["accessors"].append({"bufferView": len(doc["bufferViews"]) - 1, "componentType": component_type,
+                             "count": len(values), "type": kind, "normalized": normalized})
+    return len(doc["accessors"]) - 1
+
+
+def _short_uvs(doc):  # valid glTF 2.0: UVs as normalized unsigned shorts (trimesh reads 0..65535)
+    doc["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = _accessor(
+        doc, (UVS * 65535).astype(np.uint16), 5123, "VEC2", normalized=True)
+
+
+def _sparse(doc):  # POSITION with one vertex substituted by a sparse block (trimesh leaves it out)
+    moved = _accessor(doc, np.array([[5, 5, 0]], np.float32), 5126, "VEC3")
+    which = _accessor(doc, np.array([3, 0], np.uint16), 5123, "SCALAR")
+    doc["accessors"][0]["sparse"] = {"count": 1, "indices": {"bufferView": doc["accessors"][which]["bufferView"],
+                                                             "componentType": 5123},
+                                     "values": {"bufferView": doc["accessors"][moved]["bufferView"]}}
+
+
+def _coloured(doc):  # vertex colours beside the textured material
+    doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = _accessor(
+        doc, np.array([[255, 0, 0, 255]] * 4, np.uint8), 5121, "VEC4", normalized=True)
+
+
 def _position_accessor(doc):
     doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 9
 
@@ -106,7 +139,7 @@ def folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
     write(root, "position.gltf", edit=_position_accessor)
     write(root, "index.gltf", indices=(0, 1, 2, 2, 1, 7))
     for name, edit in (("lines", _lines), ("points", _points), ("fan", _fan), ("animated", _animated),
-                       ("lights", _lights)):
+                       ("lights", _lights), ("short_uvs", _short_uvs), ("sparse", _sparse), ("coloured", _coloured)):
         write(root, f"{name}.gltf", edit=edit)
     return root
 
@@ -161,6 +194,14 @@ CASES = [
             "1 morph target(s)", "the base shape is drawn"),
     warning("punctual-lights-warned", loads("lights.gltf"), GLTFWarning, "node 'lamp'", "KHR_lights_punctual"),
     warning("gpu-instancing-warned", loads("lights.gltf"), GLTFWarning, "node 'crowd'", "EXT_mesh_gpu_instancing"),
+    error("integer-uvs-refused", loads("short_uvs.gltf"), ResourceError, "short_uvs.gltf",
+          "mesh 'quad' primitive 0 TEXCOORD_0 (accessor 3)", "normalized UNSIGNED_SHORT", "store them as FLOAT"),
+    error("integer-uvs-refused-by-load-meshes-too", lambda folder: load_meshes(folder / "short_uvs.gltf"),
+          ResourceError, "short_uvs.gltf", "TEXCOORD_0"),
+    error("sparse-accessor-refused", loads("sparse.gltf"), ResourceError, "sparse.gltf",
+          "mesh 'quad' primitive 0 POSITION (accessor 0)", "sparse accessor"),
+    warning("vertex-colours-beside-a-material-warned", loads("coloured.gltf"), GLTFWarning, "mesh 'quad' primitive 0",
+            "COLOR_0", "not read"),
 ]
 
 
