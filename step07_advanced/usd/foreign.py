@@ -331,8 +331,12 @@ def _to_axis(mesh: MeshData, axis: str) -> MeshData:
 def gprim_mesh(prim: Usd.Prim, notes: Notes) -> MeshData | None:
     """The tessellated mesh of a Sphere, Cube, Cylinder, Cone, Capsule or Plane prim (None: not a gprim)."""
     kind = str(prim.GetTypeName())
-    get = lambda name, default: (prim.GetAttribute(name).Get()  # noqa: E731
-                                 if prim.GetAttribute(name) and prim.GetAttribute(name).Get() is not None
+    if kind not in ("Sphere", "Cube", "Cylinder", "Cone", "Capsule", "Plane"):
+        return None
+    shape = [prim.GetAttribute(name) for name in ("radius", "size", "height", "width", "length", "axis")]
+    time = _first_sample(str(prim.GetPath()), shape, f"animated {kind}", "its shape", notes)
+    get = lambda name, default: (prim.GetAttribute(name).Get(time)  # noqa: E731
+                                 if prim.GetAttribute(name) and prim.GetAttribute(name).Get(time) is not None
                                  else default)
     axis = str(get("axis", "Z"))
     if kind == "Sphere":

@@ -1,9 +1,10 @@
 """USD scenes: missing, malformed and wrongly named files; prims the engine cannot map (warned, listed by path and why);
 other tools' meshes that are double-sided (drawn with a copy of their material that culls nothing) or given only as
-time samples (drawn at the first, listed); references, payloads and sublayers outside the scene's folder (refused
-unless ``allow_outside``) or missing (an error naming the layer); attributes of the wrong type or with bad values
-(named by prim and attribute, and the component field); missing texture files; duplicate asset names; saving through
-a symbolic link. Loading failures leave the open scene as it was; saving failures leave the old file as it was."""
+time samples, a sphere's radius too (drawn at the first, listed); references, payloads and sublayers outside the
+scene's folder (refused unless ``allow_outside``) or missing (an error naming the layer); attributes of the wrong
+type or with bad values (named by prim and attribute, and the component field); missing texture files; duplicate
+asset names; saving through a symbolic link. Loading failures leave the open scene as it was; saving failures leave
+the old file as it was."""
 
 from __future__ import annotations
 
@@ -68,6 +69,7 @@ def folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
         "nan_points": _nan_points,
         "double_sided": _double_sided,
         "animated_mesh": _animated_mesh,
+        "animated_ball": _animated_ball,
     }.items():
         stage = Usd.Stage.CreateNew(str(inside / f"{name}.usda"))
         UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.y)
@@ -116,6 +118,13 @@ def _animated_mesh(stage: Usd.Stage) -> None:
     points.Set([(0, 0, 0), (4, 0, 0), (0, 4, 0)], 10.0)
 
 
+def _animated_ball(stage: Usd.Stage) -> None:
+    """A sphere whose radius is time samples only: USD's fallback radius (1) is not its size."""
+    radius = UsdGeom.Sphere.Define(stage, "/World/ball").GetRadiusAttr()
+    radius.Set(3.0, 2.0)
+    radius.Set(6.0, 8.0)
+
+
 def culls(name: str):
     """The cull mode of the material the loaded entity ``name`` draws with."""
     def check(loaded):
@@ -124,9 +133,12 @@ def culls(name: str):
     return check
 
 
-def flag_extent(loaded) -> float:
-    entity = next(e for e in loaded.entities if loaded.get_component(e, InfoComponent).name == "flag")
-    return float(loaded.assets.meshes[loaded.get_component(entity, MeshComponent).mesh].positions.max())
+def extent(name: str):
+    """The largest coordinate of the mesh the loaded entity ``name`` draws."""
+    def check(loaded) -> float:
+        entity = next(e for e in loaded.entities if loaded.get_component(e, InfoComponent).name == name)
+        return float(loaded.assets.meshes[loaded.get_component(entity, MeshComponent).mesh].positions.max())
+    return check
 
 
 def float_ops(folder: Path) -> Path:
@@ -264,7 +276,11 @@ CASES = [
     result("one-sided-mesh-still-culls-back", quietly(loads("scene/double_sided.usda")),
            lambda s: culls("wall")(s) == "back"),
     result("mesh-with-time-samples-only-drawn-at-its-first", quietly(loads("scene/animated_mesh.usda")),
-           lambda s: flag_extent(s) == 2.0),
+           lambda s: extent("flag")(s) == 2.0),
+    result("sphere-with-an-animated-radius-drawn-at-its-first", quietly(loads("scene/animated_ball.usda")),
+           lambda s: abs(extent("ball")(s) - 3.0) < 1e-6),
+    warning("sphere-with-an-animated-radius-warned", loads("scene/animated_ball.usda"), USDSceneWarning,
+            "</World/ball>", "animated Sphere: its shape at time 2 is used"),
     warning("mesh-with-time-samples-only-warned", loads("scene/animated_mesh.usda"), USDSceneWarning,
             "</World/flag>", "animated mesh: its shape at time 1 is used (no animation)"),
     result("save-through-a-symlink-writes-its-target", through_a_link,
