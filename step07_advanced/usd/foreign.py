@@ -5,6 +5,7 @@ Everything here turns standard USD data (no ``gandalf:`` attributes) into engine
 * :func:`decompose` — any local transform (``UsdGeom.Xformable.GetLocalTransformation``: rotateXYZ, rotateY,
   rotateZYX, scale, translate, transform (matrix) ops, pivots with their inverse ops) into translation,
   quaternion and scale; a shear TRS cannot hold is reported (its size), the nearest rotation kept.
+* :func:`pin_first_samples` — attributes given only as time samples read as their first sample (listed).
 * :func:`mesh_from_usd` — a ``UsdGeom.Mesh``: n-gons triangulated as fans, ``leftHanded`` winding flipped,
   holes left out, normals computed (area-weighted, shared by faces meeting at a point) when absent,
   ``st`` / normals / ``displayColor`` in any interpolation (constant, uniform, vertex, varying, faceVarying,
@@ -83,19 +84,36 @@ def local_matrix(xformable: UsdGeom.Xformable, notes: Notes) -> tuple[Gf.Matrix4
     path = str(xformable.GetPath())
     time = Usd.TimeCode.Default()
     ops = xformable.GetOrderedXformOps()
-    time = _first_sample(path, [op.GetAttr() for op in ops], "animated xform ops", "the transform", notes)
+    samples = sorted({t for op in ops for t in op.GetAttr().GetTimeSamples()})
+    if samples:
+        time = Usd.TimeCode(samples[0])
+        notes.append((path, f"animated xform ops: the transform at time {samples[0]:g} is used (no animation)"))
     matrix = xformable.GetLocalTransformation(time)
     return matrix, xformable.GetResetXformStack()
 
 
-def _first_sample(path: str, attributes: list[Usd.Attribute], what: str, value: str, notes: Notes) -> Usd.TimeCode:
-    """The time to read ``attributes`` at: their first time sample when any of them is animated (noted: the engine
-    draws no animation), else the default time."""
-    samples = sorted({t for attribute in attributes if attribute for t in attribute.GetTimeSamples()})
-    if not samples:
-        return Usd.TimeCode.Default()
-    notes.append((path, f"{what}: {value} at time {samples[0]:g} is used (no animation)"))
-    return Usd.TimeCode(samples[0])
+def pin_first_samples(stage: Usd.Stage, notes: Notes) -> None:
+    """Read every attribute given only as time samples (an animation the engine does not play: a mesh baked from a
+    simulation, an animated radius or intensity) as its first sample, and list them prim by prim: the sample is
+    written as the attribute's default in the stage's session layer (the file is untouched), so every read at the
+    default time sees it instead of the schema's fallback or nothing. Xform ops are read by :func:`local_matrix`,
+    which lists them itself."""
+    with Usd.EditContext(stage, stage.GetSessionLayer()):
+        for prim in stage.Traverse():
+            pinned = []
+            for attribute in prim.GetAttributes():
+                if attribute.GetName().startswith("xformOp:") or not attribute.GetNumTimeSamples():
+                    continue
+                if any(spec.HasDefaultValue() for spec in attribute.GetPropertyStack()):
+                    continue  # the file's own default is what a still picture shows
+                first = attribute.GetTimeSamples()[0]
+                attribute.Set(attribute.Get(first))
+                pinned.append((attribute.GetName(), first))
+            if pinned:
+                names = ", ".join(name for name, _ in pinned)
+                times = sorted({t for _, t in pinned})
+                notes.append((str(prim.GetPath()), f"animated {names}: the first time sample (time "
+                                                   f"{', '.join(f'{t:g}' for t in times)}) is used (no animation)"))
 
 
 # --- primvars -----------------------------------------------------------------------------------------
@@ -115,8 +133,8 @@ def _primvar(api: UsdGeom.PrimvarsAPI, name: str) -> UsdGeom.Primvar | None:
     return primvar if primvar and primvar.HasAuthoredValue() else None
 
 
-def _flattened(primvar: UsdGeom.Primvar, width: int, time: Usd.TimeCode) -> _Value | None:
-    values = primvar.ComputeFlattened(time)
+def _flattened(primvar: UsdGeom.Primvar, width: int) -> _Value | None:
+    values = primvar.ComputeFlattened()
     if values is None:
         return None
     return _Value(np.array(values, dtype=np.float64).reshape(-1, width), str(primvar.GetInterpolation()))
@@ -134,11 +152,8 @@ def mesh_from_usd(mesh: UsdGeom.Mesh, st_name: str, notes: Notes) -> tuple[MeshD
     Returns ``(None, None)`` (with a note) for a mesh that cannot be drawn: no points, an invalid topology.
     """
     path = str(mesh.GetPath())
-    time = _first_sample(path, [mesh.GetPointsAttr(), mesh.GetFaceVertexCountsAttr(), mesh.GetFaceVertexIndicesAttr(),
-                                mesh.GetNormalsAttr()], "animated mesh", "its shape", notes)
-    points_value = mesh.GetPointsAttr().Get(time)
-    counts_value = mesh.GetFaceVertexCountsAttr().Get(time)
-    indices_value = mesh.GetFaceVertexIndicesAttr().Get(time)
+    points_value = mesh.GetPointsAttr().Get()
+    counts_value, indices_value = mesh.GetFaceVertexCountsAttr().Get(), mesh.GetFaceVertexIndicesAttr().Get()
     if not points_value or not counts_value or indices_value is None:
         notes.append((path, "a mesh without points or faces: not drawn"))
         return None, None
@@ -177,19 +192,19 @@ def mesh_from_usd(mesh: UsdGeom.Mesh, st_name: str, notes: Notes) -> tuple[MeshD
     values: dict[str, _Value] = {}
     st = _primvar(api, st_name)
     if st is not None:
-        values["uv"] = _flattened(st, 2, time)
+        values["uv"] = _flattened(st, 2)
     normals_primvar = _primvar(api, "normals")
     if normals_primvar is not None:
-        values["normal"] = _flattened(normals_primvar, 3, time)
+        values["normal"] = _flattened(normals_primvar, 3)
     elif mesh.GetNormalsAttr().HasAuthoredValue():
-        values["normal"] = _Value(np.array(mesh.GetNormalsAttr().Get(time), dtype=np.float64).reshape(-1, 3),
+        values["normal"] = _Value(np.array(mesh.GetNormalsAttr().Get(), dtype=np.float64).reshape(-1, 3),
                                   str(mesh.GetNormalsInterpolation()))
     color_primvar = _primvar(api, "displayColor")
     constant_color = None
     if color_primvar is not None:
-        color = _flattened(color_primvar, 3, time)
+        color = _flattened(color_primvar, 3)
         opacity_primvar = _primvar(api, "displayOpacity")
-        opacity = _flattened(opacity_primvar, 1, time) if opacity_primvar is not None else None
+        opacity = _flattened(opacity_primvar, 1) if opacity_primvar is not None else None
         if color is not None and color.interpolation == UsdGeom.Tokens.constant and len(color.data) >= 1:
             alpha = float(opacity.data[0, 0]) if opacity is not None and len(opacity.data) else 1.0
             constant_color = np.array([*color.data[0], alpha])
@@ -331,12 +346,8 @@ def _to_axis(mesh: MeshData, axis: str) -> MeshData:
 def gprim_mesh(prim: Usd.Prim, notes: Notes) -> MeshData | None:
     """The tessellated mesh of a Sphere, Cube, Cylinder, Cone, Capsule or Plane prim (None: not a gprim)."""
     kind = str(prim.GetTypeName())
-    if kind not in ("Sphere", "Cube", "Cylinder", "Cone", "Capsule", "Plane"):
-        return None
-    shape = [prim.GetAttribute(name) for name in ("radius", "size", "height", "width", "length", "axis")]
-    time = _first_sample(str(prim.GetPath()), shape, f"animated {kind}", "its shape", notes)
-    get = lambda name, default: (prim.GetAttribute(name).Get(time)  # noqa: E731
-                                 if prim.GetAttribute(name) and prim.GetAttribute(name).Get(time) is not None
+    get = lambda name, default: (prim.GetAttribute(name).Get()  # noqa: E731
+                                 if prim.GetAttribute(name) and prim.GetAttribute(name).Get() is not None
                                  else default)
     axis = str(get("axis", "Z"))
     if kind == "Sphere":

@@ -171,6 +171,7 @@ class _Reader:
             tops = list(root.GetChildren())
         else:  # another tool's file: every prim on the stage (outside gandalf's asset scope) is an entity
             scene = Scene(name or self.path.stem)
+            foreign.pin_first_samples(stage, self.notes)
             tops = [p for p in stage.GetPseudoRoot().GetChildren() if str(p.GetPath()) not in (ASSETS, SYSTEMS)]
         self.scene = scene
         self.read_assets(scene)

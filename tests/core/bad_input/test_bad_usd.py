@@ -1,10 +1,10 @@
 """USD scenes: missing, malformed and wrongly named files; prims the engine cannot map (warned, listed by path and why);
 other tools' meshes that are double-sided (drawn with a copy of their material that culls nothing) or given only as
-time samples, a sphere's radius too (drawn at the first, listed); references, payloads and sublayers outside the
-scene's folder (refused unless ``allow_outside``) or missing (an error naming the layer); attributes of the wrong
-type or with bad values (named by prim and attribute, and the component field); missing texture files; duplicate
-asset names; saving through a symbolic link. Loading failures leave the open scene as it was; saving failures leave
-the old file as it was."""
+time samples, a sphere's radius or a light's intensity too (read at the first sample, listed); references, payloads
+and sublayers outside the scene's folder (refused unless ``allow_outside``) or missing (an error naming the layer);
+attributes of the wrong type or with bad values (named by prim and attribute, and the component field); missing
+texture files; duplicate asset names; saving through a symbolic link. Loading failures leave the open scene as it
+was; saving failures leave the old file as it was."""
 
 from __future__ import annotations
 
@@ -70,6 +70,7 @@ def folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
         "double_sided": _double_sided,
         "animated_mesh": _animated_mesh,
         "animated_ball": _animated_ball,
+        "animated_sun": _animated_sun,
     }.items():
         stage = Usd.Stage.CreateNew(str(inside / f"{name}.usda"))
         UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.y)
@@ -123,6 +124,19 @@ def _animated_ball(stage: Usd.Stage) -> None:
     radius = UsdGeom.Sphere.Define(stage, "/World/ball").GetRadiusAttr()
     radius.Set(3.0, 2.0)
     radius.Set(6.0, 8.0)
+
+
+def _animated_sun(stage: Usd.Stage) -> None:
+    """A normalised DistantLight whose intensity is time samples only: UsdLux's fallback (50000 lux) is not it."""
+    sun = UsdLux.DistantLight.Define(stage, "/World/sun")
+    sun.CreateNormalizeAttr(True)
+    sun.CreateIntensityAttr().Set(3.0, 0.0)
+    sun.GetIntensityAttr().Set(9.0, 5.0)
+
+
+def light_intensity(loaded) -> float:
+    return next(loaded.get_component(e, LightComponent).intensity for e in loaded.entities
+                if loaded.has_component(e, LightComponent))
 
 
 def culls(name: str):
@@ -280,9 +294,13 @@ CASES = [
     result("sphere-with-an-animated-radius-drawn-at-its-first", quietly(loads("scene/animated_ball.usda")),
            lambda s: abs(extent("ball")(s) - 3.0) < 1e-6),
     warning("sphere-with-an-animated-radius-warned", loads("scene/animated_ball.usda"), USDSceneWarning,
-            "</World/ball>", "animated Sphere: its shape at time 2 is used"),
+            "</World/ball>", "animated radius: the first time sample (time 2) is used"),
+    result("light-with-an-animated-intensity-drawn-at-its-first", quietly(loads("scene/animated_sun.usda")),
+           lambda s: abs(light_intensity(s) - 3.0) < 1e-9),
+    warning("light-with-an-animated-intensity-warned", loads("scene/animated_sun.usda"), USDSceneWarning,
+            "</World/sun>", "animated inputs:intensity: the first time sample (time 0)"),
     warning("mesh-with-time-samples-only-warned", loads("scene/animated_mesh.usda"), USDSceneWarning,
-            "</World/flag>", "animated mesh: its shape at time 1 is used (no animation)"),
+            "</World/flag>", "animated points: the first time sample (time 1) is used (no animation)"),
     result("save-through-a-symlink-writes-its-target", through_a_link,
            lambda value: value == (True, True)),
 ]
