@@ -14,6 +14,7 @@ from ..lazy import lazy_attributes
 # name -> submodule that defines it
 _LAZY = {
     "ResourceError": "errors",
+    "MeshFileWarning": "errors",
     "GLTFModel": "gltf",
     "GLTFWarning": "gltf_file",
     "load_gltf": "gltf",
@@ -94,6 +95,7 @@ __all__ = [
     "CubeTextureData",
     "MaterialData",
     "MeshData",
+    "MeshFileWarning",
     "ResourceError",
     "ShaderSource",
     "TextureData",

@@ -13,10 +13,10 @@ from pathlib import Path
 from typing import Any
 
 from gandalf_core.resources.confine import inside_folder
-from gandalf_core.resources.errors import ResourceError
+from gandalf_core.resources.errors import MeshFileWarning, ResourceError
 
 
-class GLTFWarning(UserWarning):
+class GLTFWarning(MeshFileWarning):
     """Something in a glTF file that the engine leaves out (an optional extension, a primitive that is not made of
     triangles, an animation): named, never dropped silently."""
 
