@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import math
 import os
-import warnings
 from pathlib import Path
 
 import numpy as np
@@ -31,7 +30,7 @@ from gandalf_core.resources import (
 )
 from gandalf_core.resources.assets import Assets
 
-from .catalogue import error, params, result, run, warning, write_files
+from .catalogue import error, params, quietly, result, run, warning, write_files
 
 TRIANGLE = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
 FILES = {
@@ -85,15 +84,6 @@ def mesh(name: str):
     return lambda folder: load_mesh(folder / name)
 
 
-def quietly(action):
-    """``action`` with its MeshFileWarnings silenced (the warnings have their own cases)."""
-    def quiet(folder):
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", MeshFileWarning)
-            return action(folder)
-    return quiet
-
-
 def image(name: str):
     return lambda folder: TextureData.from_file(folder / name)
 
@@ -112,7 +102,8 @@ FILE_CASES = [
     warning("mesh-obj-lines-warned", mesh("wired.obj"), MeshFileWarning, "wired.obj", "2 line element(s)",
             "not drawn"),
     warning("mesh-obj-points-warned", mesh("wired.obj"), MeshFileWarning, "1 point element(s) ('p' lines)"),
-    result("mesh-obj-faces-beside-lines-still-load", quietly(mesh("wired.obj")), lambda m: m.vertex_count == 3),
+    result("mesh-obj-faces-beside-lines-still-load", quietly(mesh("wired.obj"), MeshFileWarning),
+           lambda m: m.vertex_count == 3),
     error("mesh-unknown-extension", mesh("mesh.xyz"), ResourceError, "mesh.xyz", "unsupported extension '.xyz'",
           ".obj"),
     error("mesh-a-folder", mesh("folder.obj"), ResourceError, "folder.obj", "is not a file"),

@@ -12,7 +12,6 @@ from __future__ import annotations
 import base64
 import contextlib
 import json
-import warnings
 from pathlib import Path
 
 import numpy as np
@@ -21,7 +20,7 @@ from PIL import Image
 
 from gandalf_core.resources import GLTFWarning, ResourceError, load_gltf, load_meshes
 
-from .catalogue import error, params, result, run, warning
+from .catalogue import error, params, quietly, result, run, warning
 
 POSITIONS = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]], np.float32)
 UVS = np.array([[0, 0], [1, 0], [0, 1], [1, 1]], np.float32)
@@ -148,15 +147,6 @@ def loads(name: str):
     return lambda folder: load_gltf(folder / name)
 
 
-def quietly(action):
-    """``action`` with its GLTFWarnings silenced: a case about what still loads, or the error it ends in."""
-    def quiet(folder):
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", GLTFWarning)
-            return action(folder)
-    return quiet
-
-
 def erring(action):
     """``action`` with its ResourceError swallowed: a warning case about a file that then ends in an error."""
     def swallowed(folder):
@@ -177,14 +167,14 @@ CASES = [
           "accessor 2", "index 5 is 7", "4 vertices"),
     warning("lines-primitive-warned", loads("lines.gltf"), GLTFWarning, "lines.gltf", "mesh 'quad' primitive 1",
             "mode LINES (1) is not drawn"),
-    result("lines-beside-triangles-still-draw-the-triangles", quietly(loads("lines.gltf")),
+    result("lines-beside-triangles-still-draw-the-triangles", quietly(loads("lines.gltf"), GLTFWarning),
            lambda m: len(m.parts) == 1),
     warning("points-mesh-warned", loads("points.gltf"), GLTFWarning, "mesh 'dots' primitive 0", "mode POINTS (0)"),
     warning("points-warned-by-load-meshes-too", lambda folder: load_meshes(folder / "points.gltf"), GLTFWarning,
             "points.gltf", "mesh 'dots' primitive 0", "POINTS"),
     warning("triangle-fan-warned", erring(loads("fan.gltf")), GLTFWarning, "mesh 'quad' primitive 0",
             "mode TRIANGLE_FAN (6) is not drawn"),
-    error("triangle-fan-alone-is-no-triangles", quietly(loads("fan.gltf")), ResourceError, "fan.gltf",
+    error("triangle-fan-alone-is-no-triangles", quietly(loads("fan.gltf"), GLTFWarning), ResourceError, "fan.gltf",
           "holds no triangles"),
     warning("animations-warned", loads("animated.gltf"), GLTFWarning, "animated.gltf", "1 animation(s)",
             "drawn at rest"),
