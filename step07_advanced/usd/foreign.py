@@ -107,7 +107,10 @@ def pin_first_samples(stage: Usd.Stage, notes: Notes) -> None:
                 if any(spec.HasDefaultValue() for spec in attribute.GetPropertyStack()):
                     continue  # the file's own default is what a still picture shows
                 first = attribute.GetTimeSamples()[0]
-                attribute.Set(attribute.Get(first))
+                value = attribute.Get(first)
+                if value is None:  # a blocked first sample: nothing to pin
+                    continue
+                attribute.Set(value)
                 pinned.append((attribute.GetName(), first))
             if pinned:
                 names = ", ".join(name for name, _ in pinned)
