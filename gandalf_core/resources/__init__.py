@@ -14,8 +14,9 @@ from ..lazy import lazy_attributes
 # name -> submodule that defines it
 _LAZY = {
     "ResourceError": "errors",
+    "MeshFileWarning": "errors",
     "GLTFModel": "gltf",
-    "GLTFWarning": "gltf",
+    "GLTFWarning": "gltf_file",
     "load_gltf": "gltf",
     "BLEND_MODES": "material_data",
     "CULL_MODES": "material_data",
@@ -94,6 +95,7 @@ __all__ = [
     "CubeTextureData",
     "MaterialData",
     "MeshData",
+    "MeshFileWarning",
     "ResourceError",
     "ShaderSource",
     "TextureData",

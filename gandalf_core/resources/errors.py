@@ -1,4 +1,4 @@
-"""The one error type of the resource layer.
+"""The one error type of the resource layer, and the warning of a mesh file the engine reads only in part.
 
 Every resource problem (a bad file, a wrong array shape, an unknown setting) raises :class:`ResourceError`.
 Its constructor takes the resource and the field separately, so a message always says *which* texture, mesh,
@@ -21,3 +21,8 @@ class ResourceError(ValueError):
         self.field = field
         self.detail = detail
         super().__init__(f"{resource}: {field}: {detail}")
+
+
+class MeshFileWarning(UserWarning):
+    """Something in a mesh file that the engine leaves out but can draw without (an OBJ's lines, a part that is a
+    point cloud): named, never dropped silently."""

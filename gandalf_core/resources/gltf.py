@@ -20,10 +20,7 @@ UV set, a textured material on a mesh without UVs, factors out of range, a requi
 
 from __future__ import annotations
 
-import base64
 import io
-import json
-import struct
 import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -32,8 +29,10 @@ from typing import Any
 
 import numpy as np
 
-from gandalf_core.resources.confine import inside_folder
 from gandalf_core.resources.errors import ResourceError
+from gandalf_core.resources.gltf_file import GLTFFile as _File
+from gandalf_core.resources.gltf_file import GLTFWarning as GLTFWarning
+from gandalf_core.resources.gltf_file import refuse_misread, warn_left_out
 from gandalf_core.resources.material_data import MaterialData
 from gandalf_core.resources.mesh_data import MeshData
 from gandalf_core.resources.texture_data import TextureData
@@ -62,10 +61,6 @@ _DEFAULT_FOR = {"baseColorTexture": "gltf_white_srgb", "emissiveTexture": "gltf_
                 "normalTexture": "gltf_flat_normal"}
 
 
-class GLTFWarning(UserWarning):
-    """Something in a glTF file that the engine leaves out (an optional extension): named, never dropped silently."""
-
-
 @dataclass(frozen=True)
 class GLTFModel:
     """What :func:`load_gltf` found: meshes, materials and textures by name (ready for a scene's assets), and
@@ -75,68 +70,6 @@ class GLTFModel:
     materials: dict[str, MaterialData]
     textures: dict[str, TextureData]
     parts: tuple[tuple[str, str], ...]
-
-
-class _File:
-    """The JSON document and binary buffers of one .gltf or .glb file, with error labels naming it."""
-
-    def __init__(self, path: Path, allow_outside: bool = False) -> None:
-        self.path = path
-        self.allow_outside = allow_outside
-        self.label = f"glTF file '{path}'"
-        if path.suffix.lower() not in (".gltf", ".glb"):
-            raise ResourceError(self.label, "path", f"expected a .gltf or .glb file, got {path.suffix or '(none)'!r}")
-        if not path.is_file():
-            raise ResourceError(self.label, "path", "file not found")
-        raw = path.read_bytes()
-        self.bin: bytes | None = None
-        try:
-            if path.suffix.lower() == ".glb":
-                magic, _version, _length = struct.unpack_from("<4sII", raw, 0)
-                if magic != b"glTF":
-                    raise ValueError("not a GLB file (no 'glTF' magic)")
-                offset, chunks = 12, []
-                while offset + 8 <= len(raw):
-                    size, kind = struct.unpack_from("<II", raw, offset)
-                    chunks.append((kind, raw[offset + 8 : offset + 8 + size]))
-                    offset += 8 + size
-                self.doc = json.loads(chunks[0][1].decode("utf-8"))
-                self.bin = next((data for kind, data in chunks[1:] if kind == 0x004E4942), None)
-            else:
-                self.doc = json.loads(raw.decode("utf-8"))
-        except (ValueError, struct.error, IndexError, UnicodeDecodeError) as exc:
-            raise ResourceError(self.label, "contents", f"cannot be read as glTF: {exc}") from None
-
-    def items(self, key: str) -> list[dict[str, Any]]:
-        return list(self.doc.get(key, []))
-
-    def _uri_bytes(self, uri: str, where: str) -> bytes:
-        if uri.startswith("data:"):
-            try:
-                return base64.b64decode(uri.split(",", 1)[1])
-            except (IndexError, ValueError) as exc:
-                raise ResourceError(self.label, where, f"bad data URI: {exc}") from None
-        file = inside_folder(self.path, uri, self.label, where, "the URI", self.allow_outside)
-        if not file.is_file():
-            raise ResourceError(self.label, where, f"file not found: '{uri}' (looked for {file})")
-        return file.read_bytes()
-
-    def buffer(self, index: int, where: str) -> bytes:
-        buffer = self.items("buffers")[index]
-        if "uri" not in buffer:
-            if self.bin is None:
-                raise ResourceError(self.label, where, f"buffer {index} has no uri and the file no binary chunk")
-            return self.bin
-        return self._uri_bytes(buffer["uri"], where)
-
-    def image_bytes(self, index: int, where: str) -> bytes:
-        image = self.items("images")[index]
-        if "uri" in image:
-            return self._uri_bytes(image["uri"], where)
-        view = self.items("bufferViews")[image["bufferView"]]
-        data = self.buffer(view["buffer"], where)
-        start = view.get("byteOffset", 0)
-        return data[start : start + view["byteLength"]]
 
 
 def _texture(file: _File, material: str, field: str, info: Mapping[str, Any], srgb: bool,
@@ -248,6 +181,8 @@ def load_gltf(path: str | Path, shader: str = "pbr_model", extra_textures: Seque
     required = file.doc.get("extensionsRequired", [])
     if required:
         raise ResourceError(file.label, "extensionsRequired", f"{', '.join(map(str, required))} not supported")
+    warn_left_out(file.doc, file.label)
+    refuse_misread(file.doc, file.label)
     textures: dict[str, TextureData] = {}
     materials: dict[str, MaterialData] = {}
     by_index: dict[int, str] = {}

@@ -15,13 +15,14 @@ files only the ``.gltf`` itself is hashed. trimesh is imported only when a file 
 from __future__ import annotations
 
 import hashlib
+import warnings
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from gandalf_core.resources.confine import inside_folder
-from gandalf_core.resources.errors import ResourceError
+from gandalf_core.resources.errors import MeshFileWarning, ResourceError
 from gandalf_core.resources.mesh_data import MeshData
 
 #: File extensions the loader reads (lower case, with the dot).
@@ -29,12 +30,30 @@ MESH_EXTENSIONS = (".obj", ".gltf", ".glb", ".ply", ".stl")
 
 _cache: dict[tuple[str, str, bool], dict[str, MeshData]] = {}
 _merged_cache: dict[tuple[str, str, bool], MeshData] = {}
+#: The MeshFileWarnings each cached file gave when it was read: every load of it gives them again.
+_warnings: dict[tuple[str, str, bool], list[str]] = {}
 
 
 def clear_cache() -> None:
     """Forget every loaded file (the next load reads from disk again)."""
     _cache.clear()
     _merged_cache.clear()
+    _warnings.clear()
+
+
+def _read_once(key: tuple[str, str, bool], label: str, allow_outside: bool) -> None:
+    """Read the file of ``key`` into the cache unless it is there; its MeshFileWarnings (given now) are kept to
+    be given again by every later load, which the cache would otherwise keep quiet."""
+    if key in _cache:
+        for message in _warnings.get(key, ()):
+            warnings.warn(message, MeshFileWarning, stacklevel=3)
+        return
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", MeshFileWarning)
+        _cache[key] = _read(Path(key[0]), label, allow_outside)
+    _warnings[key] = [str(w.message) for w in caught if issubclass(w.category, MeshFileWarning)]
+    for w in caught:
+        warnings.warn_explicit(w.message, w.category, w.filename, w.lineno, source=w.source)
 
 
 def load_meshes(path: str | Path, *, allow_outside: bool = False) -> dict[str, MeshData]:
@@ -46,8 +65,7 @@ def load_meshes(path: str | Path, *, allow_outside: bool = False) -> dict[str, M
     file's folder (after following symlinks) unless ``allow_outside``.
     """
     key, label = _key(path, allow_outside)
-    if key not in _cache:
-        _cache[key] = _read(Path(key[0]), label, allow_outside)
+    _read_once(key, label, allow_outside)
     return dict(_cache[key])
 
 
@@ -57,9 +75,9 @@ def load_mesh(path: str | Path, *, allow_outside: bool = False) -> MeshData:
     An attribute (UVs, colours) survives the merge only when every part has it; normals are always present.
     """
     key, label = _key(path, allow_outside)
+    _read_once(key, label, allow_outside)
     if key not in _merged_cache:
-        parts = load_meshes(path, allow_outside=allow_outside)
-        _merged_cache[key] = _merge(list(parts.values()), Path(key[0]).stem, label)
+        _merged_cache[key] = _merge(list(_cache[key].values()), Path(key[0]).stem, label)
     return _merged_cache[key]
 
 
@@ -121,12 +139,23 @@ def _trimesh_load(path: Path, allow_outside: bool) -> Any:
 def _read(path: Path, label: str, allow_outside: bool = False) -> dict[str, MeshData]:
     if path.stat().st_size == 0:
         raise ResourceError(label, "contents", "the file is empty")
+    if path.suffix.lower() in (".gltf", ".glb"):  # what trimesh leaves out of a glTF, named
+        from .gltf_file import GLTFFile, refuse_misread, warn_left_out
+
+        try:
+            doc = GLTFFile(path, allow_outside).doc
+        except ResourceError:
+            doc = None  # not glTF: trimesh's own error below says so, as for every format
+        if doc is not None:
+            warn_left_out(doc, label)
+            refuse_misread(doc, label)
     try:
         loaded = _trimesh_load(path, allow_outside)
     except ResourceError:
         raise
     except Exception as exc:  # trimesh raises many types (ValueError, KeyError, struct.error, ...) for bad files
         raise ResourceError(label, "contents", f"cannot be read as {path.suffix[1:].upper()}: {exc}") from None
+    _warn_undrawn(path, loaded, label)
     parts: dict[str, MeshData] = {}
     for name, mesh, transform in _parts(loaded, path.stem):
         data = _to_mesh_data(mesh, transform, name, label)
@@ -135,6 +164,34 @@ def _read(path: Path, label: str, allow_outside: bool = False) -> dict[str, Mesh
     if not parts:
         raise ResourceError(label, "contents", "the file holds no triangles")
     return parts
+
+
+#: OBJ elements trimesh reads nothing of, by their keyword.
+_OBJ_UNDRAWN = {"l": "line", "p": "point"}
+
+
+def _warn_undrawn(path: Path, loaded: Any, label: str) -> None:
+    """A :class:`MeshFileWarning` for what the engine leaves out of a mesh file beside its triangles: an OBJ's line
+    and point elements (trimesh reads nothing of them) and parts that are lines or point clouds (a PLY's; a glTF's
+    primitives are named by :func:`.gltf_file.warn_left_out`)."""
+    import trimesh
+
+    if path.suffix.lower() == ".obj":
+        counts: dict[str, int] = {}
+        for line in path.read_text(errors="replace").splitlines():
+            keyword = line.split(maxsplit=1)[0] if line.strip() else ""
+            if keyword in _OBJ_UNDRAWN:
+                counts[keyword] = counts.get(keyword, 0) + 1
+        for keyword, count in counts.items():
+            warnings.warn(f"{label}: {count} {_OBJ_UNDRAWN[keyword]} element(s) ('{keyword}' lines) are not drawn: "
+                          "only faces ('f') are", MeshFileWarning, stacklevel=5)
+    if path.suffix.lower() in (".gltf", ".glb"):
+        return
+    geometry = loaded.geometry if isinstance(loaded, trimesh.Scene) else {path.stem: loaded}
+    for name, part in geometry.items():
+        if not isinstance(part, trimesh.Trimesh):
+            warnings.warn(f"{label}: part '{name}' is a {type(part).__name__} (no triangles): it is not drawn",
+                          MeshFileWarning, stacklevel=5)
 
 
 def _parts(loaded: Any, stem: str) -> list[tuple[str, Any, np.ndarray]]:

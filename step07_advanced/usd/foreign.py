@@ -5,6 +5,7 @@ Everything here turns standard USD data (no ``gandalf:`` attributes) into engine
 * :func:`decompose` — any local transform (``UsdGeom.Xformable.GetLocalTransformation``: rotateXYZ, rotateY,
   rotateZYX, scale, translate, transform (matrix) ops, pivots with their inverse ops) into translation,
   quaternion and scale; a shear TRS cannot hold is reported (its size), the nearest rotation kept.
+* :func:`pin_first_samples` — attributes given only as time samples read as their first sample (listed).
 * :func:`mesh_from_usd` — a ``UsdGeom.Mesh``: n-gons triangulated as fans, ``leftHanded`` winding flipped,
   holes left out, normals computed (area-weighted, shared by faces meeting at a point) when absent,
   ``st`` / normals / ``displayColor`` in any interpolation (constant, uniform, vertex, varying, faceVarying,
@@ -89,6 +90,33 @@ def local_matrix(xformable: UsdGeom.Xformable, notes: Notes) -> tuple[Gf.Matrix4
         notes.append((path, f"animated xform ops: the transform at time {samples[0]:g} is used (no animation)"))
     matrix = xformable.GetLocalTransformation(time)
     return matrix, xformable.GetResetXformStack()
+
+
+def pin_first_samples(stage: Usd.Stage, notes: Notes) -> None:
+    """Read every attribute given only as time samples (an animation the engine does not play: a mesh baked from a
+    simulation, an animated radius or intensity) as its first sample, and list them prim by prim: the sample is
+    written as the attribute's default in the stage's session layer (the file is untouched), so every read at the
+    default time sees it instead of the schema's fallback or nothing. Xform ops are read by :func:`local_matrix`,
+    which lists them itself."""
+    with Usd.EditContext(stage, stage.GetSessionLayer()):
+        for prim in stage.Traverse():
+            pinned = []
+            for attribute in prim.GetAttributes():
+                if attribute.GetName().startswith("xformOp:") or not attribute.GetNumTimeSamples():
+                    continue
+                if any(spec.HasDefaultValue() for spec in attribute.GetPropertyStack()):
+                    continue  # the file's own default is what a still picture shows
+                first = attribute.GetTimeSamples()[0]
+                value = attribute.Get(first)
+                if value is None:  # a blocked first sample: nothing to pin
+                    continue
+                attribute.Set(value)
+                pinned.append((attribute.GetName(), first))
+            if pinned:
+                names = ", ".join(name for name, _ in pinned)
+                times = sorted({t for _, t in pinned})
+                notes.append((str(prim.GetPath()), f"animated {names}: the first time sample (time "
+                                                   f"{', '.join(f'{t:g}' for t in times)}) is used (no animation)"))
 
 
 # --- primvars -----------------------------------------------------------------------------------------

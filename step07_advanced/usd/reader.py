@@ -171,6 +171,7 @@ class _Reader:
             tops = list(root.GetChildren())
         else:  # another tool's file: every prim on the stage (outside gandalf's asset scope) is an entity
             scene = Scene(name or self.path.stem)
+            foreign.pin_first_samples(stage, self.notes)
             tops = [p for p in stage.GetPseudoRoot().GetChildren() if str(p.GetPath()) not in (ASSETS, SYSTEMS)]
         self.scene = scene
         self.read_assets(scene)
@@ -319,7 +320,20 @@ class _Reader:
         scene.assets.mesh(path, data)
         if material_name is None:
             material_name = self.display_color_material(constant)
+        if UsdGeom.Gprim(prim).GetDoubleSidedAttr().Get():
+            material_name = self.double_sided(material_name)
         return [MeshComponent(path), MaterialComponent(material_name)]
+
+    def double_sided(self, name: str) -> str:
+        """The material ``name`` for a gprim drawn from both sides (``doubleSided``): itself when it culls nothing,
+        else its copy that does not cull (``<name> (double-sided)``), registered once beside it."""
+        data = self.scene.assets.materials[name]
+        if data.cull == "none":
+            return name
+        twin = f"{name} (double-sided)"
+        if twin not in self.scene.assets.materials:
+            self.scene.assets.material(twin, dataclasses.replace(data, cull="none"))
+        return twin
 
     def referenced_assets(self, prim: Usd.Prim, mesh: str | None, material: str | None) -> tuple[str | None,
                                                                                                    str | None]:

@@ -131,6 +131,16 @@ def run(case: Case, *args: Any) -> Any:
     return value
 
 
+def quietly(action: Callable[..., Any], category: type[Warning]) -> Callable[..., Any]:
+    """``action`` with its warnings of ``category`` silenced: a case about what still loads (or the error it ends
+    in), whose warning has a case of its own."""
+    def quiet(*args: Any) -> Any:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", category)
+            return action(*args)
+    return quiet
+
+
 def write_files(root: Path, files: Mapping[str, str]) -> Path:
     """Write the catalogue's input files (name -> text) into the folder ``root``; returns ``root``."""
     for name, text in files.items():

@@ -1,8 +1,9 @@
-"""Files and the data made from them: mesh files (OBJ, PLY, STL, glTF/GLB) that are missing, empty, garbage, out
-of range or non-finite; image files that are missing, not images or truncated; pixel arrays, cube faces, mesh
-arrays, procedural generators and asset tables given the wrong shapes, types or values. Every error is a
-ResourceError naming the file (or texture, mesh, material) and the part at fault; a mesh file rewritten with the
-same size and modification time loads anew (the cache is keyed by content)."""
+"""Files and the data made from them: mesh files (OBJ, PLY, STL, glTF/GLB) that are missing, empty, garbage, out of
+range or non-finite, or holding lines and points beside their faces (a MeshFileWarning, on every load: they are not
+drawn); image files that are missing, not images or truncated; pixel arrays, cube faces, mesh arrays, procedural
+generators and asset tables given the wrong shapes, types or values. Every error is a ResourceError naming the file
+(or texture, mesh, material) and the part at fault; a mesh file rewritten with the same size and modification time
+loads anew (the cache is keyed by content)."""
 
 from __future__ import annotations
 
@@ -17,6 +18,7 @@ from gandalf_core.resources import (
     CubeTextureData,
     MaterialData,
     MeshData,
+    MeshFileWarning,
     ResourceError,
     TextureData,
     checkerboard,
@@ -28,7 +30,7 @@ from gandalf_core.resources import (
 )
 from gandalf_core.resources.assets import Assets
 
-from .catalogue import error, params, result, run, write_files
+from .catalogue import error, params, quietly, result, run, warning, write_files
 
 TRIANGLE = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
 FILES = {
@@ -37,6 +39,7 @@ FILES = {
     "bad_index.obj": "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n",
     "nan.obj": "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n",
     "points.obj": "v 0 0 0\nv 1 0 0\nv 0 1 0\n",
+    "wired.obj": TRIANGLE + "v 2 2 2\nl 1 4\nl 2 4\np 4\n",
     "mesh.xyz": "hello",
     "bad.ply": "ply\ngarbage\n",
     "bad.stl": "solid x\nnonsense\n",
@@ -96,6 +99,11 @@ FILE_CASES = [
     error("mesh-index-out-of-range", mesh("bad_index.obj"), ResourceError, "bad_index.obj", "out of bounds"),
     error("mesh-nan-vertex", mesh("nan.obj"), ResourceError, "nan.obj", "NaN or infinity"),
     error("mesh-points-only", mesh("points.obj"), ResourceError, "points.obj", "no triangles"),
+    warning("mesh-obj-lines-warned", mesh("wired.obj"), MeshFileWarning, "wired.obj", "2 line element(s)",
+            "not drawn"),
+    warning("mesh-obj-points-warned", mesh("wired.obj"), MeshFileWarning, "1 point element(s) ('p' lines)"),
+    result("mesh-obj-faces-beside-lines-still-load", quietly(mesh("wired.obj"), MeshFileWarning),
+           lambda m: m.vertex_count == 3),
     error("mesh-unknown-extension", mesh("mesh.xyz"), ResourceError, "mesh.xyz", "unsupported extension '.xyz'",
           ".obj"),
     error("mesh-a-folder", mesh("folder.obj"), ResourceError, "folder.obj", "is not a file"),

@@ -1,13 +1,14 @@
-"""USD scenes: missing, malformed and wrongly named files; prims the engine cannot map (warned, listed by path and
-why); references, payloads and sublayers outside the scene's folder (refused unless ``allow_outside``) or missing
-(an error naming the layer); attributes of the wrong type or with bad values (named by prim and attribute, and the
-component field); missing texture files; duplicate asset names; saving through a symbolic link. Loading failures
-leave the open scene as it was; saving failures leave the old file as it was."""
+"""USD scenes: missing, malformed and wrongly named files; prims the engine cannot map (warned, listed by path and why);
+other tools' meshes that are double-sided (drawn with a copy of their material that culls nothing) or given only as
+time samples, a sphere's radius or a light's intensity too (read at the first sample, listed); references, payloads
+and sublayers outside the scene's folder (refused unless ``allow_outside``) or missing (an error naming the layer);
+attributes of the wrong type or with bad values (named by prim and attribute, and the component field); missing
+texture files; duplicate asset names; saving through a symbolic link. Loading failures leave the open scene as it
+was; saving failures leave the old file as it was."""
 
 from __future__ import annotations
 
 import shutil
-import warnings
 from pathlib import Path
 
 import pytest
@@ -27,7 +28,7 @@ from gandalf_core.components import (  # noqa: E402
 from gandalf_core.resources import MaterialData, checkerboard, cube  # noqa: E402
 from step07_advanced.usd import USDSceneError, USDSceneWarning, load_scene, save_scene  # noqa: E402
 
-from .catalogue import error, params, result, run, warning  # noqa: E402
+from .catalogue import error, params, quietly, result, run, warning  # noqa: E402
 
 
 def scene() -> Scene:
@@ -65,6 +66,10 @@ def folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
         "unmapped": _unmapped,
         "clip_reversed": lambda st: UsdGeom.Camera.Define(st, "/World/cam").CreateClippingRangeAttr((10.0, 1.0)),
         "nan_points": _nan_points,
+        "double_sided": _double_sided,
+        "animated_mesh": _animated_mesh,
+        "animated_ball": _animated_ball,
+        "animated_sun": _animated_sun,
     }.items():
         stage = Usd.Stage.CreateNew(str(inside / f"{name}.usda"))
         UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.y)
@@ -87,6 +92,66 @@ def _nan_points(stage: Usd.Stage) -> None:
     mesh.CreatePointsAttr([(0, 0, 0), (1, float("nan"), 0), (0, 1, 0)])
     mesh.CreateFaceVertexCountsAttr([3])
     mesh.CreateFaceVertexIndicesAttr([0, 1, 2])
+
+
+def _triangle(stage: Usd.Stage, path: str) -> UsdGeom.Mesh:
+    mesh = UsdGeom.Mesh.Define(stage, path)
+    mesh.CreatePointsAttr([(0, 0, 0), (1, 0, 0), (0, 1, 0)])
+    mesh.CreateFaceVertexCountsAttr([3])
+    mesh.CreateFaceVertexIndicesAttr([0, 1, 2])
+    mesh.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
+    return mesh
+
+
+def _double_sided(stage: Usd.Stage) -> None:
+    """Two grey triangles, one drawn from both sides (a leaf, a sheet of paper): they share the grey."""
+    _triangle(stage, "/World/leaf").CreateDoubleSidedAttr(True)
+    _triangle(stage, "/World/wall")
+
+
+def _animated_mesh(stage: Usd.Stage) -> None:
+    """A triangle whose points are time samples only (a mesh baked from a simulation): no default value."""
+    mesh = _triangle(stage, "/World/flag")
+    points = mesh.GetPointsAttr()
+    points.Clear()
+    points.Set([(0, 0, 0), (2, 0, 0), (0, 2, 0)], 1.0)
+    points.Set([(0, 0, 0), (4, 0, 0), (0, 4, 0)], 10.0)
+
+
+def _animated_ball(stage: Usd.Stage) -> None:
+    """A sphere whose radius is time samples only: USD's fallback radius (1) is not its size."""
+    radius = UsdGeom.Sphere.Define(stage, "/World/ball").GetRadiusAttr()
+    radius.Set(3.0, 2.0)
+    radius.Set(6.0, 8.0)
+
+
+def _animated_sun(stage: Usd.Stage) -> None:
+    """A normalised DistantLight whose intensity is time samples only: UsdLux's fallback (50000 lux) is not it."""
+    sun = UsdLux.DistantLight.Define(stage, "/World/sun")
+    sun.CreateNormalizeAttr(True)
+    sun.CreateIntensityAttr().Set(3.0, 0.0)
+    sun.GetIntensityAttr().Set(9.0, 5.0)
+
+
+def light_intensity(loaded) -> float:
+    return next(loaded.get_component(e, LightComponent).intensity for e in loaded.entities
+                if loaded.has_component(e, LightComponent))
+
+
+def culls(name: str):
+    """The cull mode of the material the loaded entity ``name`` draws with."""
+    def check(loaded):
+        entity = next(e for e in loaded.entities if loaded.get_component(e, InfoComponent).name == name)
+        return loaded.assets.materials[loaded.get_component(entity, MaterialComponent).material].cull
+    return check
+
+
+def extent(name: str):
+    """The largest coordinate of the mesh the loaded entity ``name`` draws."""
+    def check(loaded) -> float:
+        entity = next(e for e in loaded.entities if loaded.get_component(e, InfoComponent).name == name)
+        return float(loaded.assets.meshes[loaded.get_component(entity, MeshComponent).mesh].positions.max())
+    return check
 
 
 def float_ops(folder: Path) -> Path:
@@ -122,6 +187,11 @@ def edited(old: str, new: str, name: str):
     return make
 
 
+def calm(name: str):
+    """Load ``scene/<name>.usda`` with its USDSceneWarning silenced (the warning has its own case)."""
+    return quietly(loads(f"scene/{name}.usda"), USDSceneWarning)
+
+
 def loads(make, **kwargs):
     """Load what ``make(folder)`` gives; an open scene must stay as it was when the load fails."""
     def action(folder: Path):
@@ -134,15 +204,6 @@ def loads(make, **kwargs):
             after = [(e, [repr(c) for c in open_scene.components_of(e)]) for e in open_scene.entities]
             assert after == before, "a failed load changed the open scene"
     return action
-
-
-def quietly(action):
-    """``action`` with its USDSceneWarning silenced (the warning has its own case)."""
-    def quiet(folder: Path):
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", USDSceneWarning)
-            return action(folder)
-    return quiet
 
 
 def saves(name: str, **kwargs):
@@ -174,7 +235,7 @@ CASES = [
     error("save-into-missing-folder", saves("no/such/folder/s.usda"), USDSceneError, "s.usda", "does not exist"),
     warning("unknown-prim-types-warned", loads("scene/unmapped.usda"), USDSceneWarning, "</World/hair>",
             "prim type 'BasisCurves'", "</World/panel>", "RectLight"),
-    result("unknown-prims-still-entities", quietly(loads("scene/unmapped.usda")),
+    result("unknown-prims-still-entities", calm("unmapped"),
            lambda s: {"hair", "panel", "ball"} <= {s.get_component(e, InfoComponent).name for e in s.entities}),
     error("reference-outside-folder", loads("scene/outside_reference.usda"), USDSceneError, "outside_reference.usda",
           "@../part.usda@", "outside the scene's folder", "allow_outside"),
@@ -205,7 +266,7 @@ CASES = [
           USDSceneError, "nan.usda", "prim </Scene/bulb>", "xformOp:translate"),
     error("camera-clipping-range-reversed", loads("scene/clip_reversed.usda"), USDSceneError, "</World/cam>",
           "attribute 'clippingRange'", "CameraComponent.far"),
-    error("mesh-points-nan", quietly(loads("scene/nan_points.usda")), USDSceneError, "</World/tri>",
+    error("mesh-points-nan", calm("nan_points"), USDSceneError, "</World/tri>",
           "attribute 'points'", "nan"),
     error("mesh-index-out-of-range", loads(edited("int[] faceVertexIndices = [0, 1, 2,",
                                                   "int[] faceVertexIndices = [0, 1, 999,", "index.usda")),
@@ -219,6 +280,22 @@ CASES = [
           "checker.png"),
     error("duplicate-asset-names", loads(edited('gandalf:name = "blue"', 'gandalf:name = "red"', "dup.usda")),
           USDSceneError, "dup.usda", "'red'", "two material prims"),
+    result("double-sided-mesh-culls-nothing", calm("double_sided"),
+           lambda s: culls("leaf")(s) == "none"),
+    result("one-sided-mesh-still-culls-back", calm("double_sided"),
+           lambda s: culls("wall")(s) == "back"),
+    result("mesh-with-time-samples-only-drawn-at-its-first", calm("animated_mesh"),
+           lambda s: extent("flag")(s) == 2.0),
+    result("sphere-with-an-animated-radius-drawn-at-its-first", calm("animated_ball"),
+           lambda s: abs(extent("ball")(s) - 3.0) < 1e-6),
+    warning("sphere-with-an-animated-radius-warned", loads("scene/animated_ball.usda"), USDSceneWarning,
+            "</World/ball>", "animated radius: the first time sample (time 2) is used"),
+    result("light-with-an-animated-intensity-drawn-at-its-first", calm("animated_sun"),
+           lambda s: abs(light_intensity(s) - 3.0) < 1e-9),
+    warning("light-with-an-animated-intensity-warned", loads("scene/animated_sun.usda"), USDSceneWarning,
+            "</World/sun>", "animated inputs:intensity: the first time sample (time 0)"),
+    warning("mesh-with-time-samples-only-warned", loads("scene/animated_mesh.usda"), USDSceneWarning,
+            "</World/flag>", "animated points: the first time sample (time 1) is used (no animation)"),
     result("save-through-a-symlink-writes-its-target", through_a_link,
            lambda value: value == (True, True)),
 ]
