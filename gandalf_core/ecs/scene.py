@@ -11,6 +11,7 @@ import gc
 import math
 import os
 import uuid
+import weakref
 from collections.abc import Iterator, Sequence
 from time import perf_counter as _perf_counter
 from typing import Any, TypeVar
@@ -25,6 +26,10 @@ from .info import InfoComponent
 from .system import System
 
 C = TypeVar("C", bound=Component)
+
+#: Every scene alive, so that a mutable component held by an entity of one is refused to another (an edit of one
+#: would be an edit of both).
+_LIVE_SCENES: weakref.WeakSet[Scene] = weakref.WeakSet()
 
 
 class Scene:
@@ -47,6 +52,7 @@ class Scene:
         self.pending_destroy: list[uuid.UUID] = []
         self.hierarchy_version = 0  # bumped whenever a Link is added, removed or re-parented
         self.membership_version = 0  # bumped whenever any component is added or removed
+        _LIVE_SCENES.add(self)
 
     # --- entities ---------------------------------------------------------------------------------
     def enroll_entity(self, entity: uuid.UUID | None = None) -> uuid.UUID:
@@ -74,7 +80,7 @@ class Scene:
             component_type = type(component)
             if (component_type in comps or component_type is LinkComponent or not isinstance(component, Component)
                     or (isinstance(component, ColumnarComponent) and component._store is not None)
-                    or id(component) in self._owners):
+                    or id(component) in self._owners or self._held_elsewhere(component) is not None):
                 self.add_component(entity, component)  # the general path (and its errors)
                 continue
             if isinstance(component, ColumnarComponent):
@@ -259,6 +265,13 @@ class Scene:
                 f"belongs to {self.describe(owner)} (a change to one would change both); give each entity its own "
                 f"(copy.copy(component) or a new {component_type.__name__}(...))"
             )
+        elsewhere = self._held_elsewhere(component)
+        if elsewhere is not None:
+            raise ValueError(
+                f"cannot add this {component_type.__name__} to {self.describe(entity)}: the same object already "
+                f"belongs to {elsewhere} (a change to one would change both); give each entity its own "
+                f"(copy.copy(component) or a new {component_type.__name__}(...))"
+            )
         kept_children: list[uuid.UUID] = []
         if component_type is LinkComponent:
             self._check_parent(entity, component.parent)
@@ -288,9 +301,32 @@ class Scene:
                 raise ValueError(f"create_entities: {ctype.__name__} number {k} is the object that "
                                  f"{self.describe(owner)} holds (a change to one would change both); give each "
                                  "entity its own")
+            elsewhere = self._held_elsewhere(item)
+            if elsewhere is not None:
+                raise ValueError(f"create_entities: {ctype.__name__} number {k} is the object that {elsewhere} "
+                                 "holds (a change to one would change both); give each entity its own")
             if seen.setdefault(id(item), k) != k:
                 raise ValueError(f"create_entities: {ctype.__name__} number {k} is the same object as number "
                                  f"{seen[id(item)]} (a change to one would change both); give each entity its own")
+
+    def _held_elsewhere(self, component: Any) -> str | None:
+        """Which entity of another live scene holds this very mutable component object ("entity 'box' (…) of
+        scene 'a'"), or None. A scene dropped but not yet collected is collected first, so it never refuses a
+        reuse."""
+        if len(_LIVE_SCENES) < 2 or type(component).immutable or isinstance(component, ColumnarComponent):
+            return None
+        if self._holder(component) is None:
+            return None
+        gc.collect()  # the holder may be garbage that a reference cycle keeps: collect, then look again
+        return self._holder(component)
+
+    def _holder(self, component: Any) -> str | None:
+        """The entity of another scene that holds ``component``, described (no reference to that scene is kept)."""
+        for scene in list(_LIVE_SCENES):
+            owner = scene._owners.get(id(component)) if scene is not self else None
+            if owner is not None and scene._entities.get(owner, {}).get(type(component)) is component:
+                return f"{scene.describe(owner)} of scene '{scene.name}'"
+        return None
 
     def _joined(self, entity: uuid.UUID, comps: dict[type[Component], Component], component_type: type) -> None:
         """``entity`` (its components ``comps``) has gained a ``component_type``: every system of that type whose

@@ -163,6 +163,32 @@ def _info_back_after_destroy():
     return scene.get_component(scene.create_entity(info), InfoComponent).name
 
 
+def _info_in_two_scenes():
+    first, second = Scene("a"), Scene("b")
+    info = InfoComponent("box")
+    first.create_entity(info)
+    return second.create_entity(info)
+
+
+def _info_in_two_scenes_in_bulk():
+    first, second = Scene("a"), Scene("b")
+    info = InfoComponent("box")
+    first.create_entity(info)
+    return second.create_entities(1, [info])
+
+
+def _info_of_a_dropped_scene():
+    """A scene dropped while a reference cycle still holds it (its systems point back at it) does not keep the
+    component from a new scene."""
+    info = InfoComponent("box")
+    old = Scene("old")
+    old.create_entity(info)
+    old.cycle = old  # garbage only a collection finds
+    del old
+    scene = Scene("new")
+    return scene.get_component(scene.create_entity(info), InfoComponent).name
+
+
 CASES = [
     # systems
     error("remove-system-not-there", lambda: Scene("main").remove_system(Marker()), ValueError, "scene 'main'",
@@ -173,6 +199,11 @@ CASES = [
           InfoComponent("twin")), ValueError, "InfoComponent number 1", "same object as number 0"),
     error("a-held-info-in-a-bulk-creation", _held_info_in_bulk, ValueError, "InfoComponent number 0",
           "entity 'box'"),
+    error("one-info-in-two-scenes", _info_in_two_scenes, ValueError, "InfoComponent", "entity 'box'", "of scene 'a'",
+          "already belongs", "copy"),
+    error("one-info-in-two-scenes-in-bulk", _info_in_two_scenes_in_bulk, ValueError, "InfoComponent number 0",
+          "entity 'box'", "of scene 'a'"),
+    result("an-info-of-a-dropped-scene-reused", _info_of_a_dropped_scene, lambda name: name == "box"),
     result("an-info-moved-after-removal", _info_moved, lambda name: name == "box"),
     result("an-info-given-back-after-destroy", _info_back_after_destroy, lambda name: name == "box"),
     error("remove-system-of-another-scene", lambda: Scene("main").remove_system(Scene("other").add_system(Marker())),
