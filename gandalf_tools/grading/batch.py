@@ -262,6 +262,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--students", nargs="+", default=None, help="only these students (folder names)")
     parser.add_argument("--timeout", type=float, default=60.0, help="seconds per test (default 60)")
     parser.add_argument("--limit", type=float, default=1800.0, help="seconds per submission (default 1800)")
+    parser.add_argument(
+        "--allow-unisolated", action="store_true",
+        help="grade even where the student's code cannot be kept from the solutions, the tests, the other "
+        "submissions and the gradebook (isolation 'process'); every row is then flagged",
+    )
     args = parser.parse_args(argv)
 
     if not args.submissions.is_dir():
@@ -278,6 +283,13 @@ def main(argv: list[str] | None = None) -> int:
     args.out.mkdir(parents=True, exist_ok=True)
     print(f"grading {len(students)} submissions, steps {', '.join(steps)}, {args.jobs} at a time", flush=True)
     warning = isolation_warning(isolation())
+    if warning and not args.allow_unisolated:
+        print(f"not grading: {warning}.\nEach student's code could read the solutions and rewrite a classmate's "
+              "grade or the gradebook, so no grade made here can be defended. Grade as root (each student's code then "
+              "runs as a user of its own), or as a user where unprivileged user namespaces are allowed (Ubuntu: "
+              "sysctl kernel.apparmor_restrict_unprivileged_userns=0); `python -m gandalf_tools.doctor` says which "
+              "applies. --allow-unisolated grades anyway and flags every row.", file=sys.stderr, flush=True)
+        return 2
     if warning:
         print(warning, file=sys.stderr, flush=True)
     start = time.perf_counter()

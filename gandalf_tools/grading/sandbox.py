@@ -17,8 +17,10 @@ imports it.
   folder or other submission is there to read. As any other user, when the system allows it, the same covers are made
   in a user namespace (the same uid, mapped to its root), with Python read-only too, the graders' bytecode cache and
   the folders of ``GANDALF_SANDBOX_HIDE`` covered, its own pid namespace, and every capability dropped before the
-  student's code runs (so that it cannot undo a mount); where the system allows no namespaces, the student's process
-  can read and write what its user can (``isolation()`` says which applies; the grade records it;
+  student's code runs (so that it cannot undo a mount); as root where no namespace may be made (a container without
+  ``CAP_SYS_ADMIN``), a user of its own still, with the folders the grader knows to be secret closed to other users
+  (``chmod o-rwx``); where the system allows neither, the student's process can read and write what its user
+  can (``isolation()`` says which applies; the grade records it;
   ``GANDALF_SANDBOX_ISOLATION`` asks for a weaker one, to check it).
 * **Limits.** Memory (RLIMIT_AS), processes (RLIMIT_NPROC, for its own user), file size (RLIMIT_FSIZE), CPU time
   (RLIMIT_CPU), and a wall-clock budget per call kept by this process: a call past it ends the sandboxed process
@@ -89,7 +91,7 @@ def _namespaces_work(*flags: str) -> bool:
 #: Environment variable that asks for a weaker isolation than the machine allows ("mount" or "process"): to check
 #: what the grader does where a stronger one is not available (the attack replay does).
 ISOLATION_ENV = "GANDALF_SANDBOX_ISOLATION"
-MODES = ("user+mount", "mount", "process")
+MODES = ("user+mount", "mount", "user", "process")
 
 #: The system's top folders, left as they are in the student's mount namespace (every other is covered).
 SYSTEM_FOLDERS = frozenset({"usr", "lib", "lib32", "lib64", "libx32", "bin", "sbin", "etc", "proc", "dev", "sys", "run",
@@ -99,8 +101,10 @@ SYSTEM_FOLDERS = frozenset({"usr", "lib", "lib32", "lib64", "libx32", "bin", "sb
 def isolation() -> str:
     """How the student's process is kept from the checkout here: "user+mount" (its own uid, the solutions and
     tests covered), "mount" (the same user in a user + mount + pid namespace without capabilities: the solutions,
-    tests and bytecode cache covered, the checkout and Python read-only), or "process" (a separate process only: it
-    could read and write the files its user can). ``$GANDALF_SANDBOX_ISOLATION`` may ask for a weaker one."""
+    tests and bytecode cache covered, the checkout and Python read-only), "user" (root where no namespace may be made,
+    as in a container without ``CAP_SYS_ADMIN``: a user of its own, the folders the grader knows to be secret closed
+    to other users), or "process" (a separate process only: it could read and write the files its user can).
+    ``$GANDALF_SANDBOX_ISOLATION`` may ask for a weaker one."""
     wanted = os.environ.get(ISOLATION_ENV, "").strip()
     if wanted and wanted not in MODES:
         raise ValueError(f"${ISOLATION_ENV}={wanted!r}: expected one of {MODES}")
@@ -111,6 +115,8 @@ def isolation() -> str:
     if floor <= 1 and shutil.which("setpriv") and _namespaces_work("--user", "--map-root-user", "--mount", "--pid",
                                                                    "--fork", "--mount-proc"):
         return "mount"
+    if floor <= 2 and hasattr(os, "geteuid") and os.geteuid() == 0 and shutil.which("setpriv"):
+        return "user"
     return "process"
 
 
@@ -120,6 +126,10 @@ MEANING = {
                   "solutions, the tests or other submissions, nor write the grade",
     "mount": "the student's code runs in a user, mount and pid namespace without capabilities: it cannot read the "
              "solutions, the tests or other submissions, nor write the grade",
+    "user": "the student's code runs as a user of its own (no namespace could be made here): the solutions, tests, "
+            "output folders and other submissions the grader knows, and the solutions of copies of the course beside "
+            "the checkout, are closed to other users (chmod o-rwx), and it can write no file of the grader's; a copy "
+            "of the course elsewhere on this machine that every user may read, it could read too",
     "process": "NOT ISOLATED: the student's code runs in a separate process as the grader's own user, without "
                "namespaces, and could read the solutions and tests and write any file that user can, the grade "
                "included; a grade made so can be forged: grade as root (Gradescope's autograder, a container) or "
@@ -176,6 +186,19 @@ def hidden_paths(extra: list[str] | tuple[str, ...] = ()) -> list[Path]:
         if entry.strip():
             paths.add(Path(entry.strip()))
     return sorted(p.resolve() for p in paths if p.is_dir())
+
+
+def close_to_others(paths: list[Path]) -> None:
+    """Take every permission of other users from ``paths`` (``chmod o-rwx``: the user that owns a folder and its group
+    keep theirs): where no mount namespace can cover them, a student's process running as a user of its own can
+    then neither list nor read them. They stay so (each grading closes them again)."""
+    for path in paths:
+        try:
+            mode = path.stat().st_mode
+            if mode & 0o007:
+                path.chmod(mode & ~0o007 & 0o7777)
+        except OSError as exc:
+            raise PermissionError(f"cannot close {path} to other users for the sandbox: {exc}") from exc
 
 
 def _step_dirs(graded: list[Path]) -> list[Path]:
@@ -256,7 +279,9 @@ class Sandbox:
         self.import_errors: dict[str, str] = {}
         self.add(step, folder)
         self.mode = isolation()
-        self.uid = _uid() if self.mode == "user+mount" else None
+        # "user" mode keeps no mount namespace, so a process shown course folders (the shader process, which runs no
+        # student Python) stays the grader's user, to read them; every other process is a user of its own.
+        self.uid = _uid() if self.mode == "user+mount" or (self.mode == "user" and not self.shown) else None
         self.generation = 0  # bumped per process started: instances made in an older one are gone
         self.proc: subprocess.Popen[bytes] | None = None
         self.private: Path | None = None
@@ -316,13 +341,20 @@ class Sandbox:
                             nproc=PROCESS_LIMIT if self.uid is not None else None,
                             site=[str(p) for p in site_folders()])
         python = [sys.executable, "-I", "-c", boot, str(private), str(private / "pkgs"), str(fd_in), str(fd_out)]
-        if self.mode == "process":
+        if self.mode == "process" or (self.mode == "user" and self.uid is None):
             return python
         protected = [private, Path(sys.prefix).resolve(), Path(sys.base_prefix).resolve(), ROOT / "gandalf_core",
                      Path(tempfile.gettempdir()).resolve()]
         solutions = [str(d / "solutions") for d in self.step_dirs.values()]
         hide = [p for p in hidden_paths((*self.hide, *solutions))
                 if not any(q == p or p in q.parents for q in protected) and p not in self.shown]
+        if self.mode == "user":
+            # Without a mount namespace only permissions keep it out: the secret folders above and every copy of the
+            # course beside this checkout (clones and worktrees of one folder) are closed to other users.
+            beside = [p.resolve() for p in ROOT.parent.glob("*/step[0-9][0-9]_*/solutions") if p.is_dir()]
+            close_to_others([*hide, *beside])
+            return ["setpriv", f"--reuid={self.uid}", f"--regid={self.uid}", "--clear-groups", "--inh-caps=-all",
+                    "--", *python]
         if self.mode == "user+mount":
             drop = f"exec setpriv --reuid={self.uid} --regid={self.uid} --clear-groups --inh-caps=-all -- \"$@\"\n"
             script, kept = self._only_what_it_needs(private)

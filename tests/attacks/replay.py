@@ -239,7 +239,7 @@ def grade_batch(step: str, modules: dict[str, Path | str | None], *, jobs: int =
             submission(step, module, klass / student, root, places(out, klass, None, student, root))
         damage = Damage(klass, root)
         cmd = [sys.executable, "-m", "gandalf_tools.grading.batch", str(klass), "--out", str(out), "--jobs",
-               str(jobs), "--steps", step]
+               str(jobs), "--steps", step, "--allow-unisolated"]  # a machine without namespaces: what can be kept
         start = time.perf_counter()
         subprocess.run(cmd, cwd=root, env=replay_env(), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                        timeout=timeout, check=False)

@@ -275,3 +275,17 @@ def test_the_gradebook_flags_each_grade_made_without_namespaces(tmp_path, monkey
     batch.write_report(kept, tmp_path / "bob.md")
     assert f"**Not isolated:** {warning}" in (tmp_path / "alice.md").read_text()
     assert "Not isolated" not in (tmp_path / "bob.md").read_text()
+
+
+def test_the_batch_grader_refuses_a_machine_that_cannot_isolate(tmp_path, monkeypatch, capsys):
+    """A class graded where the student's code could read the solutions and rewrite the gradebook would get grades
+    nobody can defend: the batch grader says why and what to do, and grades nothing unless asked to anyway."""
+    from gandalf_tools.grading import batch
+
+    (tmp_path / "class" / "alice").mkdir(parents=True)
+    monkeypatch.setenv(sandbox.ISOLATION_ENV, "process")
+    assert batch.main([str(tmp_path / "class"), "--out", str(tmp_path / "out"), "--steps", "step01"]) == 2
+    said = capsys.readouterr().err
+    assert said.startswith("not grading: WARNING: NOT ISOLATED") and "--allow-unisolated" in said, said
+    assert "as root" in said and "gandalf_tools.doctor" in said
+    assert not (tmp_path / "out" / "gradebook.json").exists()

@@ -206,8 +206,8 @@ def test_every_top_folder_but_the_systems_shows_only_the_way_to_what_it_needs(st
     """Another copy of the course may lie in any top folder (``/work``, ``/data``, ``/autograder``), not only beside
     this checkout: inside the sandbox each top folder but the system's holds nothing but the way to the engine, the
     step packages, Python and the sandbox's own folder."""
-    if sandbox.isolation() == "process":
-        pytest.skip("no namespaces here: the student's process sees what its user can (the grade records it)")
+    if sandbox.isolation() in ("user", "process"):
+        pytest.skip("no mount namespace here: the student's process sees the folders its user may list")
     import sys
     import tempfile
 
@@ -230,8 +230,9 @@ def test_an_installed_course_beside_the_packages_shows_no_solutions(tmp_path, mo
     """A wheel of the course installed in a site folder (``pip install --target``) holds ``solutions/`` too: the
     site folder is put back for the student's process, and kept on its path (isolated Python, ``-I``, would drop a
     ``PYTHONPATH`` folder: a grader's packages installed so could not be imported), its solutions stay covered."""
-    if sandbox.isolation() == "process":
-        pytest.skip("no namespaces here: the student's process sees what its user can (the grade records it)")
+    if sandbox.isolation() in ("user", "process"):
+        pytest.skip("no mount namespace here: nothing is put back (a folder under pytest's private temp folder is "
+                    "closed to every other user)")
     site = tmp_path / "site"
     (site / "gandalf_graphics_course-1.0.dist-info").mkdir(parents=True)
     (site / "step01_window" / "solutions").mkdir(parents=True)
@@ -255,6 +256,46 @@ def test_an_installed_course_beside_the_packages_shows_no_solutions(tmp_path, mo
 
         sys.modules.pop("step01_window.exercises", None)
         importlib.import_module("step01_window").exercises = importlib.import_module("step01_window.exercises")
+
+
+def test_root_without_namespaces_still_runs_a_user_of_its_own_with_the_secrets_closed(tmp_path, monkeypatch):
+    """As root in a container that may make no namespace (Docker's default, likely Gradescope's), the student's
+    process is still a user of its own: the solutions, the tests and the other submissions, open to every user as a
+    checkout's folders are, are closed to other users before it starts."""
+    import shutil
+    import tempfile
+
+    if os.geteuid() != 0 or not shutil.which("setpriv"):
+        pytest.skip("needs root and setpriv (the grader as Gradescope runs it)")
+    monkeypatch.setenv(sandbox.ISOLATION_ENV, "user")
+    assert sandbox.isolation() == "user"
+    klass = Path(tempfile.mkdtemp(prefix="gandalf-class-"))  # outside pytest's own folder, which is closed to all
+    try:
+        klass.chmod(0o755)
+        (klass / "bob").mkdir(mode=0o755)
+        (klass / "bob" / "hue.py").write_text("BOB = 1\n")
+        (klass / "bob" / "hue.py").chmod(0o644)
+        folder = tmp_path / "submission" / "exercises"
+        folder.mkdir(parents=True)
+        (folder / "__init__.py").write_text(textwrap.dedent(PACKAGE))
+        box = sandbox.Sandbox("step01_window", folder, hide=(str(klass),))
+        try:
+            package = remote.install("step01_window", folder, box, budget=5.0)
+            assert package.whoami()[0] not in (0, os.getuid())
+            assert package.read(str(klass / "bob" / "hue.py")).startswith("unreadable"), "a classmate's file"
+            assert package.read(str(ROOT / "step01_window" / "solutions" / "hue.py")).startswith("unreadable")
+            assert package.read(str(ROOT / "tests" / "conftest.py")).startswith("unreadable")
+            assert not package.read(str(ROOT / "step01_window" / "__init__.py")).startswith("unreadable")  # the course
+            assert klass.stat().st_mode & 0o007 == 0
+        finally:
+            box.stop()
+            import importlib
+            import sys
+
+            sys.modules.pop("step01_window.exercises", None)
+            importlib.import_module("step01_window").exercises = importlib.import_module("step01_window.exercises")
+    finally:
+        shutil.rmtree(klass, ignore_errors=True)
 
 
 def _course_function(scale: float):
