@@ -126,10 +126,10 @@ MEANING = {
                   "solutions, the tests or other submissions, nor write the grade",
     "mount": "the student's code runs in a user, mount and pid namespace without capabilities: it cannot read the "
              "solutions, the tests or other submissions, nor write the grade",
-    "user": "the student's code runs as a user of its own (no namespace could be made here): the solutions, tests, "
-            "output folders and other submissions the grader knows, and the solutions of copies of the course beside "
-            "the checkout, are closed to other users (chmod o-rwx), and it can write no file of the grader's; a copy "
-            "of the course elsewhere on this machine that every user may read, it could read too",
+    "user": "the student's code runs as a user of its own (no namespace could be made here): the solutions, hidden "
+            "tests, mutants, output folders and other submissions the grader knows, and the solutions of copies of "
+            "the course beside the checkout, are closed to other users (chmod o-rwx), and it can write no file of the "
+            "grader's; a copy of the course elsewhere on this machine that every user may read, it could read too",
     "process": "NOT ISOLATED: the student's code runs in a separate process as the grader's own user, without "
                "namespaces, and could read the solutions and tests and write any file that user can, the grade "
                "included; a grade made so can be forged: grade as root (Gradescope's autograder, a container) or "
@@ -186,6 +186,21 @@ def hidden_paths(extra: list[str] | tuple[str, ...] = ()) -> list[Path]:
         if entry.strip():
             paths.add(Path(entry.strip()))
     return sorted(p.resolve() for p in paths if p.is_dir())
+
+
+def _secret_parts(hide: list[Path]) -> list[Path]:
+    """What of ``hide`` may be closed to other users: a checkout's ``tests`` folder stays open (the shader process,
+    a user of its own under ``user+mount``, reads its helpers; the public tests are the student's anyway) except its
+    hidden tests (``hidden``, ``hidden_*``, ``*_hidden``) and the mutants; every other folder whole."""
+    parts = []
+    for path in hide:
+        if path.name == "tests" and (path.parent / "gandalf_core").is_dir():
+            parts += [q for q in path.rglob("*") if q.stem == "hidden" or q.stem.startswith("hidden_")
+                      or q.stem.endswith("_hidden")]
+            parts += [q for q in (path / "mutants",) if q.is_dir()]
+        else:
+            parts.append(path)
+    return parts
 
 
 def close_to_others(paths: list[Path]) -> None:
@@ -352,7 +367,7 @@ class Sandbox:
             # Without a mount namespace only permissions keep it out: the secret folders above and every copy of the
             # course beside this checkout (clones and worktrees of one folder) are closed to other users.
             beside = [p.resolve() for p in ROOT.parent.glob("*/step[0-9][0-9]_*/solutions") if p.is_dir()]
-            close_to_others([*hide, *beside])
+            close_to_others([*_secret_parts(hide), *beside])
             return ["setpriv", f"--reuid={self.uid}", f"--regid={self.uid}", "--clear-groups", "--inh-caps=-all",
                     "--", *python]
         if self.mode == "user+mount":

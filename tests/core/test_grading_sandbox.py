@@ -260,7 +260,7 @@ def test_an_installed_course_beside_the_packages_shows_no_solutions(tmp_path, mo
 
 def test_root_without_namespaces_still_runs_a_user_of_its_own_with_the_secrets_closed(tmp_path, monkeypatch):
     """As root in a container that may make no namespace (Docker's default, likely Gradescope's), the student's
-    process is still a user of its own: the solutions, the tests and the other submissions, open to every user as a
+    process is still a user of its own: the solutions, the mutants and the other submissions, open to every user as a
     checkout's folders are, are closed to other users before it starts."""
     import shutil
     import tempfile
@@ -284,8 +284,10 @@ def test_root_without_namespaces_still_runs_a_user_of_its_own_with_the_secrets_c
             assert package.whoami()[0] not in (0, os.getuid())
             assert package.read(str(klass / "bob" / "hue.py")).startswith("unreadable"), "a classmate's file"
             assert package.read(str(ROOT / "step01_window" / "solutions" / "hue.py")).startswith("unreadable")
-            assert package.read(str(ROOT / "tests" / "conftest.py")).startswith("unreadable")
+            assert package.read(str(ROOT / "tests" / "mutants" / "step01_window.py")).startswith("unreadable")
             assert not package.read(str(ROOT / "step01_window" / "__init__.py")).startswith("unreadable")  # the course
+            # The tests' helpers stay open: the shader process, a user of its own under user+mount, reads them.
+            assert not package.read(str(ROOT / "tests" / "shader_harness.py")).startswith("unreadable")
             assert klass.stat().st_mode & 0o007 == 0
         finally:
             box.stop()
