@@ -368,8 +368,9 @@ class Sandbox:
             # course beside this checkout (clones and worktrees of one folder) are closed to other users.
             beside = [p.resolve() for p in ROOT.parent.glob("*/step[0-9][0-9]_*/solutions") if p.is_dir()]
             close_to_others([*_secret_parts(hide), *beside])
+            # No new privileges either: a set-uid program (sudo, su) it finds cannot make it root again.
             return ["setpriv", f"--reuid={self.uid}", f"--regid={self.uid}", "--clear-groups", "--inh-caps=-all",
-                    "--", *python]
+                    "--bounding-set=-all", "--no-new-privs", "--", *python]
         if self.mode == "user+mount":
             drop = f"exec setpriv --reuid={self.uid} --regid={self.uid} --clear-groups --inh-caps=-all -- \"$@\"\n"
             script, kept = self._only_what_it_needs(private)
