@@ -258,18 +258,11 @@ class Scene:
             raise ValueError(
                 f"cannot add this {component_type.__name__} to {self.describe(entity)}: it already belongs to an entity"
             )
-        owner = self._owners.get(id(component))
-        if owner is not None and owner != entity and owner in self._entities:
+        holder = self._held_by(component, entity)
+        if holder is not None:
             raise ValueError(
                 f"cannot add this {component_type.__name__} to {self.describe(entity)}: the same object already "
-                f"belongs to {self.describe(owner)} (a change to one would change both); give each entity its own "
-                f"(copy.copy(component) or a new {component_type.__name__}(...))"
-            )
-        elsewhere = self._held_elsewhere(component)
-        if elsewhere is not None:
-            raise ValueError(
-                f"cannot add this {component_type.__name__} to {self.describe(entity)}: the same object already "
-                f"belongs to {elsewhere} (a change to one would change both); give each entity its own "
+                f"belongs to {holder} (a change to one would change both); give each entity its own "
                 f"(copy.copy(component) or a new {component_type.__name__}(...))"
             )
         kept_children: list[uuid.UUID] = []
@@ -296,18 +289,21 @@ class Scene:
         """A bulk creation's mutable components must be distinct objects that no entity holds yet."""
         seen: dict[int, int] = {}
         for k, item in enumerate(items):
-            owner = self._owners.get(id(item))
-            if owner is not None and owner in self._entities:
-                raise ValueError(f"create_entities: {ctype.__name__} number {k} is the object that "
-                                 f"{self.describe(owner)} holds (a change to one would change both); give each "
-                                 "entity its own")
-            elsewhere = self._held_elsewhere(item)
-            if elsewhere is not None:
-                raise ValueError(f"create_entities: {ctype.__name__} number {k} is the object that {elsewhere} "
-                                 "holds (a change to one would change both); give each entity its own")
+            holder = self._held_by(item)
+            if holder is not None:
+                raise ValueError(f"create_entities: {ctype.__name__} number {k} is the object that {holder} holds "
+                                 "(a change to one would change both); give each entity its own")
             if seen.setdefault(id(item), k) != k:
                 raise ValueError(f"create_entities: {ctype.__name__} number {k} is the same object as number "
                                  f"{seen[id(item)]} (a change to one would change both); give each entity its own")
+
+    def _held_by(self, component: Any, entity: uuid.UUID | None = None) -> str | None:
+        """Who already holds this very mutable component object, described: an entity of this scene other than
+        ``entity``, or one of another live scene; None when nobody does."""
+        owner = self._owners.get(id(component))
+        if owner is not None and owner != entity and owner in self._entities:
+            return self.describe(owner)
+        return self._held_elsewhere(component)
 
     def _held_elsewhere(self, component: Any) -> str | None:
         """Which entity of another live scene holds this very mutable component object ("entity 'box' (…) of
