@@ -191,12 +191,14 @@ def hidden_paths(extra: list[str] | tuple[str, ...] = ()) -> list[Path]:
 def _secret_parts(hide: list[Path]) -> list[Path]:
     """What of ``hide`` may be closed to other users: a checkout's ``tests`` folder stays open (the shader process,
     a user of its own under ``user+mount``, reads its helpers; the public tests are the student's anyway) except its
-    hidden tests (``hidden``, ``hidden_*``, ``*_hidden``) and the mutants; every other folder whole."""
+    hidden tests (the release's rule, :func:`gandalf_tools.release.is_hidden`) and the mutants; every other folder
+    whole."""
+    from gandalf_tools.release import is_hidden
+
     parts = []
     for path in hide:
         if path.name == "tests" and (path.parent / "gandalf_core").is_dir():
-            parts += [q for q in path.rglob("*") if q.stem == "hidden" or q.stem.startswith("hidden_")
-                      or q.stem.endswith("_hidden")]
+            parts += [q for q in path.rglob("*") if is_hidden(q.name)]
             parts += [q for q in (path / "mutants",) if q.is_dir()]
         else:
             parts.append(path)
