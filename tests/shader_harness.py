@@ -91,6 +91,14 @@ def gl_target():
     return gl_context().simple_framebuffer((1, 1))
 
 
+def renderers() -> tuple[str, str]:
+    """The OpenGL renderer and the WebGPU adapter this process draws with (the grader asks its shader process)."""
+    from gandalf_core.render.webgpu.device import request_device
+
+    info = request_device()[0].info
+    return gl_context().info["GL_RENDERER"], f"{info.get('device', '')} ({info.get('backend_type', '')})"
+
+
 def glsl_source(prelude: str, expression: str, arrays: list[tuple[str, str, np.ndarray]], output: str) -> str:
     """A GLSL 3.30 vertex shader: each vertex is one element, its inputs are vertex attributes, and the result is
     captured by transform feedback (OpenGL 3.0), so the same test runs on every OpenGL of the course (3.3 core up,

@@ -281,8 +281,10 @@ class Sandbox:
     again after a hang or a crash)."""
 
     def __init__(self, step: str, folder: Path, *, hide: tuple[str, ...] = (), memory: int = MEMORY_LIMIT,
-                 shown: tuple[Path, ...] = (), shader_cache: Path | None = None) -> None:
+                 shown: tuple[Path, ...] = (), shader_cache: Path | None = None,
+                 env: dict[str, str] | None = None) -> None:
         self.hide, self.memory = tuple(hide), memory
+        self.env = dict(env or {})  # set in the process's environment besides the few it always gets
         # A folder of the grader's where the GPU driver keeps compiled shaders across this kind of process (writable
         # there); else the process's own folder (Mesa keeps none where it finds no home of the user: every context
         # compiled every program again).
@@ -443,7 +445,7 @@ class Sandbox:
         env = {"PATH": os.environ.get("PATH", "/usr/bin:/bin"), "HOME": str(self.private / "home"),
                "TMPDIR": str(self.private / "tmp"), "LANG": "C.UTF-8", "OPENBLAS_NUM_THREADS": "1",
                "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1",
-               "MESA_SHADER_CACHE_DIR": str(self.shader_cache or self.private / "home" / ".cache")}
+               "MESA_SHADER_CACHE_DIR": str(self.shader_cache or self.private / "home" / ".cache"), **self.env}
         with open(self.private / "stderr.txt", "wb") as err:
             self.proc = subprocess.Popen(
                 self._command(self.private, to_child_r, from_child_w), cwd=self.private, env=env,

@@ -10,6 +10,9 @@ folder's ``__file__`` (the shader files are read from there), so the only studen
 text, which the driver compiles. Its reply is plain data (arrays, numbers: :mod:`.wire`), and the test compares it
 here, where the grade is made.
 
+Where Mesa's software drivers are installed the shader process draws with them, whatever GPU the machine has
+(:data:`MESA_EGL_VENDOR`): the grades are proven on them, and they bound what a shader costs.
+
 Each call has a wall-clock budget (:data:`SHADER_BUDGET`, kept by this process): a shader that never ends, or that
 takes the driver down, fails that call with a sentence saying so; its process is ended, the next call starts a fresh
 one, and the same call (the helper and its text arguments: the API, the include, the expression) fails at once
@@ -21,6 +24,7 @@ from __future__ import annotations
 
 import functools
 import os
+import sys
 import tempfile
 import threading
 import types
@@ -35,6 +39,18 @@ from . import remote, sandbox
 SHADER_BUDGET = 20.0
 #: Address space for the shader process: llvmpipe and lavapipe reserve far more than they use.
 SHADER_MEMORY = 8 * 2**30
+#: Mesa's software drivers. Where they are installed the shader process draws with them (llvmpipe through EGL,
+#: lavapipe through Vulkan), whatever GPU the machine has: they are the implementations the grades are proven on in
+#: CI, and they bound what a shader costs (a loop's iterations are capped). A GPU without a watchdog does not: on an
+#: NVIDIA H200 an endless-loop shader, killed when its budget ran out, left the GPU so that the reference's own
+#: shaders stalled and read back zeros in every later process for as long as it was watched
+#: (``benchmarks/results/h200-2026-12-03b/``).
+MESA_EGL_VENDOR = Path("/usr/share/glvnd/egl_vendor.d/50_mesa.json")
+MESA_VULKAN_ICDS = Path("/usr/share/vulkan/icd.d")
+NO_SOFTWARE_DRIVERS = ("gandalf grade: Mesa's software drivers (llvmpipe, lavapipe) are not installed here, so the "
+                       "students' shaders run on this machine's GPU, where a shader that never ends can stall it for "
+                       "the rest of the run. To grade a class here, install them first: "
+                       "apt-get install libegl-mesa0 libgl1-mesa-dri mesa-vulkan-drivers")
 _boxes: list[sandbox.Sandbox] = []
 #: (process generation, API) pairs warmed up: before the first call of an API in a fresh process, the process starts
 #: that API's context or device (``warm_up`` of the tests' ``shader_harness``: a few seconds on a loaded machine) with
@@ -65,6 +81,17 @@ def shader_cache() -> Path:
     see this folder), so that the course's own programs and a student's repeated ones compile once."""
     uid = os.getuid() if hasattr(os, "getuid") else "user"
     return Path(tempfile.gettempdir()) / f"gandalf-shader-cache-{uid}"
+
+
+def software_drivers() -> dict[str, str]:
+    """The environment that points the shader process at Mesa's software drivers (see :data:`MESA_EGL_VENDOR`);
+    empty where they are not both installed."""
+    lavapipe = sorted(MESA_VULKAN_ICDS.glob("lvp_icd*.json"))
+    if not MESA_EGL_VENDOR.is_file() or not lavapipe:
+        return {}
+    env = {"__EGL_VENDOR_LIBRARY_FILENAMES": str(MESA_EGL_VENDOR), "LIBGL_ALWAYS_SOFTWARE": "1",
+           "VK_DRIVER_FILES": str(lavapipe[0]), "VK_ICD_FILENAMES": str(lavapipe[0])}  # the loader's new and old name
+    return env
 
 
 def routes(*values: Any) -> bool:
@@ -177,8 +204,11 @@ def _box(folders: dict[Path, str], hide: tuple[str, ...] | None = None) -> sandb
         _starting.pop().join()
     if not _boxes:
         step, folder = next((s, f) for f, s in folders.items())
+        drivers = software_drivers()
+        if not drivers:
+            print(NO_SOFTWARE_DRIVERS, file=sys.stderr)
         _boxes.append(sandbox.Sandbox(step, folder, hide=remote.hidden_outputs() if hide is None else hide,
-                                      memory=SHADER_MEMORY, shader_cache=shader_cache(),
+                                      memory=SHADER_MEMORY, shader_cache=shader_cache(), env=drivers,
                                       shown=(sandbox.ROOT / "tests", sandbox.ROOT / "gandalf_tools")))
     for folder, step in folders.items():
         _boxes[0].add(step, folder)
