@@ -15,9 +15,8 @@ case "$cmd" in
         ;;
     test)
         # One pytest worker per core (pytest-xdist; the window tests take turns on the display through a lock, see
-        # tests/conftest.py; the tests of one xdist group run in one worker, one after another: --dist loadgroup).
-        # `./run.sh test -n 0 ...` runs in one process.
-        parallel=(-n auto --dist loadgroup)
+        # tests/conftest.py). `./run.sh test -n 0 ...` runs in one process.
+        parallel=(-n auto)
         if [ -z "${DISPLAY:-}" ] && command -v xvfb-run >/dev/null 2>&1; then
             exec xvfb-run -a -s "-screen 0 1280x720x24" .venv/bin/python -m pytest "${parallel[@]}" "$@"
         fi
