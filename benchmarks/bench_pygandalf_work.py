@@ -136,6 +136,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
             break
     wall = time.perf_counter() - t0
     cpu = time.process_time() - cpu0
+    gpu_passes = gpu_ms_per_pass(app, cfg["gpu_passes"]) if cfg.get("gpu_passes") else None
     if cfg.get("png"):
         Path(cfg["png"]).mkdir(parents=True, exist_ok=True)
         app.save_png(Path(cfg["png"]) / f"pygandalf_work-{cfg['backend']}-{cfg['scene']}-{cfg['model']}.png")
@@ -151,9 +152,29 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
         "renderer": str(renderer.ctx.info.get("GL_RENDERER", "?")) if cfg["backend"] == "opengl"
         else str(getattr(renderer.adapter, "summary", "?")),
     }
+    if gpu_passes is not None:
+        record["gpu_ms_per_pass"] = gpu_passes
     app.close()
     record["peak_rss_mb"] = rss_mb()
     return record
+
+
+def gpu_ms_per_pass(app: Any, frames: int) -> dict[str, float]:
+    """Median GPU milliseconds of each pass, and of the whole frame, over ``frames`` frames captured after the
+    measured ones (the frame inspector's timer: timestamp queries; not part of the fps figures)."""
+    import statistics
+
+    from step07_advanced.editor.frame_inspector.capture import capture_frame
+
+    times: dict[str, list[float]] = {}
+    for _ in range(frames):
+        capture = capture_frame(app, describe=False)
+        for gpu_pass in capture.passes:
+            if gpu_pass.gpu_ms is not None:
+                times.setdefault(gpu_pass.name, []).append(gpu_pass.gpu_ms)
+        if capture.frame_gpu_ms:
+            times.setdefault("frame", []).append(capture.frame_gpu_ms[-1])
+    return {name: round(statistics.median(values), 3) for name, values in times.items()}
 
 
 # ------------------------------------------------------------------------------------------------
@@ -201,6 +222,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--quick", action="store_true",
                         help="smoke run: scene1,scene5, 1 repeat, 5 frames, 256² sky, 320x180, offscreen")
     parser.add_argument("--png", default=None, metavar="DIR", help="save each run's last frame here")
+    parser.add_argument("--gpu-passes", type=int, default=0, metavar="FRAMES",
+                        help="after measuring, capture FRAMES frames and add each pass's median GPU ms to the record")
     args = bench_common.parse_or_answer(parser, argv, run_config)
     if args is None:  # a child: it printed its record
         return 0
@@ -234,7 +257,7 @@ def main(argv: list[str] | None = None) -> int:
               f"{time.perf_counter() - started:.0f} s so far)", file=sys.stderr, flush=True)
         cfg = {"backend": backend, "scene": scene, "model": model, "size": list(size), "frames": frames,
                "warmup": warmup, "max_seconds": max_seconds, "sky": sky, "sky_size": sky_size,
-               "offscreen": offscreen, "repeat": rep, "png": args.png}
+               "offscreen": offscreen, "repeat": rep, "png": args.png, "gpu_passes": args.gpu_passes}
         record = run_child(__file__, cfg, {"bench": "pygandalf-work", "backend": backend, "scene": scene,
                                            "model": model})
         if record is None:

@@ -37,8 +37,8 @@ def one_window_at_a_time() -> Iterator[None]:
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
     """The in-process window tests (``tests/core/test_window.py``) first, so that a process opens its windows before
     any headless context: after headless EGL contexts in the same process Mesa's GLX refuses a window's context
-    (``X_GLXMakeCurrent``: BadAccess) and Xlib ends the process. pytest-xdist deals tests out in this order, so they
-    run first in a worker's fresh process too."""
+    (``X_GLXMakeCurrent``: BadAccess) and Xlib ends the process. pytest-xdist hands tests out in this order (the
+    first worker's share starts with them), so they run first in a worker's fresh process too."""
     first = [item for item in items if item.path.name == "test_window.py"]
     if first:
         items[:] = first + [item for item in items if item.path.name != "test_window.py"]
