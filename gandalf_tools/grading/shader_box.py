@@ -205,7 +205,7 @@ def _box(folders: dict[Path, str], hide: tuple[str, ...] | None = None) -> sandb
     if not _boxes:
         step, folder = next((s, f) for f, s in folders.items())
         drivers = software_drivers()
-        if not drivers:
+        if not drivers and sys.platform.startswith("linux"):  # macOS and Windows reset a hung GPU themselves
             print(NO_SOFTWARE_DRIVERS, file=sys.stderr)
         _boxes.append(sandbox.Sandbox(step, folder, hide=remote.hidden_outputs() if hide is None else hide,
                                       memory=SHADER_MEMORY, shader_cache=shader_cache(), env=drivers,
