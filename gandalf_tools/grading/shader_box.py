@@ -89,9 +89,8 @@ def software_drivers() -> dict[str, str]:
     lavapipe = sorted(MESA_VULKAN_ICDS.glob("lvp_icd*.json"))
     if not MESA_EGL_VENDOR.is_file() or not lavapipe:
         return {}
-    env = {"__EGL_VENDOR_LIBRARY_FILENAMES": str(MESA_EGL_VENDOR), "LIBGL_ALWAYS_SOFTWARE": "1",
-           "VK_DRIVER_FILES": str(lavapipe[0]), "VK_ICD_FILENAMES": str(lavapipe[0])}  # the loader's new and old name
-    return env
+    return {"__EGL_VENDOR_LIBRARY_FILENAMES": str(MESA_EGL_VENDOR), "LIBGL_ALWAYS_SOFTWARE": "1",
+            "VK_DRIVER_FILES": str(lavapipe[0]), "VK_ICD_FILENAMES": str(lavapipe[0])}  # the loader's new and old name
 
 
 def routes(*values: Any) -> bool:
