@@ -107,3 +107,21 @@ def grid_positions(n: int) -> Any:
     g = math.ceil(round(n ** (1.0 / 3.0), 9))
     i = np.arange(n)
     return np.stack([(i % g) - (g - 1) / 2, (i // g % g) - (g - 1) / 2, -(i // (g * g)) - 2.0], 1) * 1.8
+
+
+def gpu_ms_per_pass(app: Any, frames: int) -> dict[str, float]:
+    """Median GPU milliseconds of each pass, and of the whole frame, over ``frames`` frames captured after the
+    measured ones (the frame inspector's timer: timestamp queries; not part of the fps figures)."""
+    import statistics
+
+    from step07_advanced.editor.frame_inspector.capture import capture_frame
+
+    times: dict[str, list[float]] = {}
+    for _ in range(frames):
+        capture = capture_frame(app, describe=False)
+        for gpu_pass in capture.passes:
+            if gpu_pass.gpu_ms is not None:
+                times.setdefault(gpu_pass.name, []).append(gpu_pass.gpu_ms)
+        if capture.frame_gpu_ms:
+            times.setdefault("frame", []).append(capture.frame_gpu_ms[-1])
+    return {name: round(statistics.median(values), 3) for name, values in times.items()}

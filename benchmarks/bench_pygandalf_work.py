@@ -84,6 +84,8 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
 
     n, rotating = SCENES[cfg["scene"]]
     width, height = cfg["size"]
+    if cfg.get("gpu_passes"):
+        os.environ["GANDALF_GPU_TIMING"] = "1"  # WebGPU: the device is requested with the timestamp features
     t_start = time.perf_counter()
     app = Application(cfg["backend"], width, height, headless=cfg["offscreen"], fixed_dt=1 / 60,
                       title=f"pygandalf-work {cfg['scene']}")
@@ -136,7 +138,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
             break
     wall = time.perf_counter() - t0
     cpu = time.process_time() - cpu0
-    gpu_passes = gpu_ms_per_pass(app, cfg["gpu_passes"]) if cfg.get("gpu_passes") else None
+    gpu_passes = bench_common.gpu_ms_per_pass(app, cfg["gpu_passes"]) if cfg.get("gpu_passes") else None
     if cfg.get("png"):
         Path(cfg["png"]).mkdir(parents=True, exist_ok=True)
         app.save_png(Path(cfg["png"]) / f"pygandalf_work-{cfg['backend']}-{cfg['scene']}-{cfg['model']}.png")
@@ -157,24 +159,6 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
     app.close()
     record["peak_rss_mb"] = rss_mb()
     return record
-
-
-def gpu_ms_per_pass(app: Any, frames: int) -> dict[str, float]:
-    """Median GPU milliseconds of each pass, and of the whole frame, over ``frames`` frames captured after the
-    measured ones (the frame inspector's timer: timestamp queries; not part of the fps figures)."""
-    import statistics
-
-    from step07_advanced.editor.frame_inspector.capture import capture_frame
-
-    times: dict[str, list[float]] = {}
-    for _ in range(frames):
-        capture = capture_frame(app, describe=False)
-        for gpu_pass in capture.passes:
-            if gpu_pass.gpu_ms is not None:
-                times.setdefault(gpu_pass.name, []).append(gpu_pass.gpu_ms)
-        if capture.frame_gpu_ms:
-            times.setdefault("frame", []).append(capture.frame_gpu_ms[-1])
-    return {name: round(statistics.median(values), 3) for name, values in times.items()}
 
 
 # ------------------------------------------------------------------------------------------------

@@ -249,6 +249,8 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
 
     n, rotating = SCENES[cfg["scene"]]
     width, height = cfg["size"]
+    if cfg.get("gpu_passes"):
+        os.environ["GANDALF_GPU_TIMING"] = "1"  # WebGPU: the device is requested with the timestamp features
     t_start = time.perf_counter()
     app = Application(cfg["backend"], width, height, headless=True, fixed_dt=1 / 60)
     if cfg["backend"] == "opengl":
@@ -346,6 +348,9 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
         },
         "renderer": renderer_name(app),
     }
+    if cfg.get("gpu_passes"):
+        # After the measured frames, so the timer's queries cost the fps figures nothing.
+        record["gpu_ms_per_pass"] = bench_common.gpu_ms_per_pass(app, cfg["gpu_passes"])
     app.close()
     # Linux reports ru_maxrss in KiB (macOS in bytes).
     record["peak_rss_mb"] = rss_mb()
@@ -394,6 +399,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--png", default=None, metavar="DIR", help="save each configuration's last frame here")
     parser.add_argument("--json", default=None, metavar="FILE",
                         help="also write every record (and the host line) to FILE as one JSON list")
+    parser.add_argument("--gpu-passes", type=int, default=0, metavar="FRAMES",
+                        help="after measuring, time FRAMES more frames on the GPU and record each pass's median ms "
+                             "(timestamp queries; meaningless on llvmpipe, absent on lavapipe)")
     args = bench_common.parse_or_answer(parser, argv, run_config)
     if args is None:  # a child: it printed its record
         return 0
@@ -421,7 +429,8 @@ def main(argv: list[str] | None = None) -> int:
               file=sys.stderr, flush=True)
         cfg = {"backend": backend, "scene": scene, "size": size, "frames": frames, "warmup": warmup,
                "max_seconds": args.max_seconds, "model": args.model, "rotate": args.rotate,
-               "sync": args.sync, "profile": args.profile, "png": args.png, "spawn": args.spawn}
+               "sync": args.sync, "profile": args.profile, "png": args.png, "spawn": args.spawn,
+               "gpu_passes": args.gpu_passes}
         record = run_child(__file__, cfg, {"bench": "gandalf-scenes", "backend": backend, "scene": scene})
         if record is None:
             failures += 1
@@ -433,6 +442,9 @@ def main(argv: list[str] | None = None) -> int:
               f"frame p50 {record['frame_ms']['p50']:.3f} ms  CPU ms: update {cpu['update']:.3f} "
               f"transform {cpu['transform']:.3f} render {cpu['render']:.3f} (gather {cpu['gather']:.3f}) "
               f"sync {cpu['sync']:.3f}", file=sys.stderr, flush=True)
+        if "gpu_ms_per_pass" in record:
+            print("#   GPU ms: " + ", ".join(f"{k} {v:.3f}" for k, v in record["gpu_ms_per_pass"].items()),
+                  file=sys.stderr, flush=True)
     if args.json:
         Path(args.json).parent.mkdir(parents=True, exist_ok=True)
         Path(args.json).write_text(json.dumps(records, indent=1) + "\n")

@@ -10,6 +10,7 @@ import moderngl
 
 from gandalf_core.render.capabilities import require_opengl
 from gandalf_core.render.shader_files import load_shader
+from step07_advanced.editor.frame_inspector.capture import compute_recorded
 
 from .motion import KERNEL, PARAMS_BINDING, PARAMS_INCLUDES, PARAMS_LAYOUT, SHADER_DIR, WORKGROUP, MotionFrame
 
@@ -54,7 +55,10 @@ class GLMotionPass:
         self.moved.bind_to_storage_buffer(2)
         self.params.write(PARAMS_LAYOUT.pack({"time": frame.time, "count": count}))
         self.params.bind_to_uniform_block(PARAMS_BINDING)
-        self.program.run(group_x=groups)
+        with compute_recorded(self.ctx, "motion", (groups,), shader=f"{KERNEL}.comp",
+                              buffers=[("instances", instances.size), ("motion", self.motion.size),
+                                       ("moved", self.moved.size)]):  # listed and timed in a frame capture
+            self.program.run(group_x=groups)
         self.ctx.memory_barrier()  # the draws read what the kernel wrote
         self.stats["motion_passes"] += 1
         return self.moved

@@ -10,6 +10,7 @@ import wgpu
 
 from gandalf_core.render.frame import INSTANCE_STRIDE
 from gandalf_core.render.shader_files import load_shader
+from step07_advanced.editor.frame_inspector.capture import compute_recorded
 
 from .motion import KERNEL, PARAMS_INCLUDES, PARAMS_LAYOUT, SHADER_DIR, WORKGROUP, MotionFrame
 
@@ -74,7 +75,11 @@ class WGPUMotionPass:
         compute = encoder.begin_compute_pass()
         compute.set_pipeline(self.pipeline)
         compute.set_bind_group(0, self._group[3])
-        compute.dispatch_workgroups(-(-count // WORKGROUP))
+        groups = -(-count // WORKGROUP)
+        with compute_recorded(self.device, "motion", (groups,), shader=f"{KERNEL}.wgsl",
+                              buffers=[("instances", size), ("motion", rows.nbytes), ("moved", size)],
+                              where=compute):  # listed and timed in a frame capture
+            compute.dispatch_workgroups(groups)
         compute.end()
         self.stats["motion_passes"] += 1
         return self.moved

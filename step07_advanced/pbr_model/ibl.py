@@ -44,8 +44,9 @@ IRRADIANCE_SIZE = 16
 LUT_SIZE = 32
 LUT_SAMPLES = 256
 SKY_SIZE = 256
-# Directions times samples per chunk: bounds the memory of one vectorised step (~100 MB of float64).
-_CHUNK = 1 << 21
+# Directions times samples per chunk: one vectorised step's arrays stay near the CPU's caches (~1.5 MB of float64
+# each). Chunks of 2^21 (~50 MB arrays) made the whole build 2.5 times slower (3.6-5.7 s against 1.5 s, 2 cores).
+_CHUNK = 1 << 16
 
 
 def _smoothstep(e0: float, e1: float, x: np.ndarray) -> np.ndarray:
@@ -336,5 +337,5 @@ def build_ibl(environment: Radiance | CubeTextureData | None = None, samples: in
 
 @functools.cache
 def default_ibl() -> IBLMaps:
-    """:func:`build_ibl` of the procedural sky, computed once per process (about a second)."""
+    """:func:`build_ibl` of the procedural sky, computed once per process (about 1.5 s on 2 cores)."""
     return build_ibl()
