@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import argparse
 import ast
+import functools
 import hashlib
 import json
 import re
@@ -134,16 +135,22 @@ def python_solution_refs(text: str, strings: bool = False) -> list[str]:
     """What in Python source ``text`` reaches a ``solutions`` package: its imports, and with ``strings`` the
     string constants that name it (``"solutions"``, ``"x.solutions"``, ``"solutions/..."``; docstrings are
     prose and do not count)."""
-    tree = ast.parse(text)
+    return list(_python_solution_refs(text, strings))
+
+
+@functools.lru_cache(maxsize=4096)
+def _python_solution_refs(text: str, strings: bool) -> tuple[str, ...]:
+    # Remembered by text: a build reads each file once to choose it and once more in the release it checks.
     found = []
     docstrings = set()
-    for node in ast.walk(tree):
+    # One breadth-first walk: a body's first statement is met after its function, class or module, so a docstring
+    # is known as one before its constant is reached.
+    for node in ast.walk(ast.parse(text)):
         if isinstance(node, (ast.Module, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)) and node.body:
             first = node.body[0]
             if isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant):
                 docstrings.add(id(first.value))
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Import):
+        elif isinstance(node, ast.Import):
             found += [f"line {node.lineno}: import {a.name}" for a in node.names if _names_solutions(a.name)]
         elif isinstance(node, ast.ImportFrom):
             module = ("." * node.level) + (node.module or "")
@@ -153,7 +160,7 @@ def python_solution_refs(text: str, strings: bool = False) -> list[str]:
             value = node.value
             if value == "solutions" or value.endswith(".solutions") or "solutions/" in value or ".solutions." in value:
                 found.append(f"line {node.lineno}: the string {value[:60]!r}")
-    return found
+    return tuple(found)
 
 
 def solution_refs(path: str, text: str) -> list[str]:
