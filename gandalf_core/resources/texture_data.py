@@ -385,6 +385,35 @@ def cube_face_directions(size: int) -> np.ndarray:
     return dirs / np.linalg.norm(dirs, axis=-1, keepdims=True)
 
 
+class FaceFiles(Sequence[np.ndarray]):
+    """The six faces of a cube texture loaded from image files, read from the files at each access and not held:
+    a sky of six 2048² faces keeps no 96 MiB of pixels in memory once the renderer has uploaded it (each face is
+    read, uploaded and let go in turn). :meth:`CubeTextureData.from_files` checks every file once when it loads
+    them (each error names its file), so a later read fails only if a file changed meanwhile."""
+
+    def __init__(self, paths: Sequence[Path], label: str, size: int) -> None:
+        self.paths = tuple(paths)
+        self.label = label
+        self.size = size
+
+    def __len__(self) -> int:
+        return len(self.paths)
+
+    def __getitem__(self, index: Any) -> Any:
+        if isinstance(index, slice):
+            return tuple(self[i] for i in range(*index.indices(len(self))))
+        path, face = self.paths[index], CUBE_FACE_NAMES[index]
+        pixels = _check_rgba8(self.label, f"faces[{face}]", _read_image_rgba8(path, self.label))
+        if pixels.shape[:2] != (self.size, self.size):
+            now, was = f"{pixels.shape[1]}x{pixels.shape[0]}", f"{self.size}x{self.size}"
+            detail = f"{str(path)!r} is now {now}, was {was} when loaded"
+            raise ResourceError(self.label, f"faces[{face}]", detail)
+        return pixels
+
+    def __repr__(self) -> str:
+        return f"FaceFiles({[str(p) for p in self.paths]!r})"
+
+
 @dataclass(frozen=True, eq=False)
 class CubeTextureData:
     """Six square RGBA8 faces of equal size, in the order +X, -X, +Y, -Y, +Z, -Z (see :data:`CUBE_FACE_NAMES`).
@@ -399,7 +428,7 @@ class CubeTextureData:
     has ``1 + len(levels)`` levels); they need ``mipmaps=True``.
     """
 
-    faces: tuple[np.ndarray, ...]
+    faces: Sequence[np.ndarray]  # a tuple of arrays, or FaceFiles (read from files when asked)
     srgb: bool = True
     filter: str = "linear"
     mipmaps: bool = True
@@ -409,6 +438,9 @@ class CubeTextureData:
     def __post_init__(self) -> None:
         label = _label("cube texture", self.name)
         _check_settings(label, "clamp", self.filter)
+        if isinstance(self.faces, FaceFiles):  # checked face by face when loaded (from_files)
+            self._check_rest(label)
+            return
         faces = tuple(self.faces)
         if len(faces) != 6:
             raise ResourceError(label, "faces", f"expected 6 faces ({', '.join(CUBE_FACE_NAMES)}), got {len(faces)}")
@@ -421,6 +453,9 @@ class CubeTextureData:
                 detail = f"size {f.shape[1]}x{f.shape[0]} differs from face +X ({first}x{first})"
                 raise ResourceError(label, f"faces[{face}]", detail)
         object.__setattr__(self, "faces", checked)
+        self._check_rest(label)
+
+    def _check_rest(self, label: str) -> None:
         _check_flags(label, self.srgb, self.mipmaps)
         object.__setattr__(self, "srgb", bool(self.srgb))
         object.__setattr__(self, "mipmaps", bool(self.mipmaps))
@@ -465,17 +500,37 @@ class CubeTextureData:
         return cls(tuple(converted), **settings)
 
     @classmethod
-    def from_files(cls, paths: Sequence[str | Path], **settings: Any) -> CubeTextureData:
-        """Load six image files, in +X, -X, +Y, -Y, +Z, -Z order (same conversions as ``TextureData.from_file``)."""
+    def from_files(cls, paths: Sequence[str | Path], keep_pixels: bool = False, **settings: Any) -> CubeTextureData:
+        """Load six image files, in +X, -X, +Y, -Y, +Z, -Z order (same conversions as ``TextureData.from_file``).
+
+        Every file is read and checked now. Unless ``keep_pixels``, the texture then holds the paths, not the pixels
+        (:class:`FaceFiles`): ``faces`` reads them again when asked (the upload, a save, the editor)."""
         settings.setdefault("name", Path(paths[0]).stem if len(paths) else "cubemap")
         label = _label("cube texture", settings["name"])
         if len(paths) != 6:
             raise ResourceError(label, "faces", f"expected 6 files ({', '.join(CUBE_FACE_NAMES)}), got {len(paths)}")
+        if not keep_pixels:
+            # Each file decoded and checked now, one at a time, then let go: the faces are read again when the
+            # renderer uploads them (and when a save or the editor needs them), so the loaded texture holds none.
+            size = 0
+            for face, path in zip(CUBE_FACE_NAMES, paths):
+                pixels = _check_rgba8(label, f"faces[{face}]", _read_image_rgba8(path, label))
+                if pixels.shape[0] != pixels.shape[1]:
+                    detail = f"face must be square, got {pixels.shape[1]}x{pixels.shape[0]}"
+                    raise ResourceError(label, f"faces[{face}]", detail)
+                if size and pixels.shape[0] != size:
+                    detail = f"size {pixels.shape[1]}x{pixels.shape[0]} differs from face +X ({size}x{size})"
+                    raise ResourceError(label, f"faces[{face}]", detail)
+                size = pixels.shape[0]
+                del pixels
+            return cls(FaceFiles([Path(p) for p in paths], label, size), **settings)
         return cls(tuple(_read_image_rgba8(p, label) for p in paths), **settings)
 
     @property
     def size(self) -> int:
         """Edge length of each face in texels."""
+        if isinstance(self.faces, FaceFiles):
+            return self.faces.size
         return int(self.faces[0].shape[0])
 
     @property

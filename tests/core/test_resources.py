@@ -221,6 +221,58 @@ def test_cube_texture_from_files(tmp_path: Path) -> None:
         CubeTextureData.from_files(paths[:5] + [tmp_path / "gone.png"], name="env")
 
 
+def test_a_cube_from_files_holds_paths_not_pixels_and_reads_them_again(tmp_path: Path) -> None:
+    """The faces are checked when loaded and read again when asked (the upload, a save): the texture keeps none
+    of their pixels, unless asked to; a file that changed size since is an error naming it."""
+    from gandalf_core.resources.texture_data import FaceFiles
+
+    paths = []
+    for i in range(6):
+        paths.append(tmp_path / f"f{i}.png")
+        Image.new("RGBA", (4, 4), (i * 40, 7, 9, 255)).save(paths[-1])
+    lazy = CubeTextureData.from_files(paths, name="env")
+    assert isinstance(lazy.faces, FaceFiles) and lazy.size == 4 and lazy.mip_levels == 3
+    kept = CubeTextureData.from_files(paths, name="env", keep_pixels=True)
+    assert all(isinstance(f, np.ndarray) for f in kept.faces)
+    assert np.array_equal(lazy.pixels, kept.pixels) and np.array_equal(lazy.mip_chain()[1], kept.mip_chain()[1])
+    assert [int(f[0, 0, 0]) for f in lazy.faces[2:4]] == [80, 120]
+    Image.new("RGBA", (8, 8)).save(paths[3])
+    with pytest.raises(ResourceError, match=r"cube texture 'env': faces\[-Y\]: .*f3\.png' is now 8x8, was 4x4"):
+        _ = lazy.pixels
+    with pytest.raises(ResourceError, match=r"cube texture 'env': faces\[-Y\]: size 8x8 differs from face \+X"):
+        CubeTextureData.from_files(paths, name="env")
+    paths[5].write_bytes(b"not an image")
+    with pytest.raises(ResourceError, match=r"cube texture 'env'.*f5\.png"):
+        CubeTextureData.from_files(paths[:3] + paths[:2] + paths[5:], name="env")
+
+
+@pytest.mark.parametrize("backend", ["opengl", "webgpu"])
+def test_a_sky_from_files_draws_as_one_from_arrays(tmp_path: Path, backend: str) -> None:
+    """Read face by face at the upload, the sky is the same picture as from the arrays held in memory."""
+    from gandalf_core import Application, Scene, TransformComponent
+    from gandalf_core.components import CameraComponent, SkyboxComponent
+
+    rng = np.random.default_rng(5)
+    paths = []
+    for i in range(6):
+        paths.append(tmp_path / f"f{i}.png")
+        Image.fromarray(rng.integers(0, 256, (16, 16, 4), dtype=np.uint8)).save(paths[-1])
+    pictures = []
+    for keep in (False, True):
+        app = Application(backend, 32, 24, headless=True)
+        try:
+            scene = Scene("sky")
+            scene.assets.texture("sky", CubeTextureData.from_files(paths, name="sky", keep_pixels=keep))
+            scene.create_entity(TransformComponent((0.0, 0.0, 0.0)), CameraComponent(70.0, 0.1, 10.0))
+            scene.create_entity(SkyboxComponent("sky"))
+            app.add_scene(scene)
+            app.step()
+            pictures.append(app.capture())
+        finally:
+            app.close()
+    assert pictures[0].std() > 0 and np.array_equal(pictures[0], pictures[1])
+
+
 def test_cube_mip_chain_and_stacked_pixels() -> None:
     cube_tex = CubeTextureData(tuple(rgba(8, 8, i * 10) for i in range(6)))
     assert cube_tex.pixels.shape == (6, 8, 8, 4)
