@@ -389,7 +389,8 @@ class FaceFiles(Sequence[np.ndarray]):
     """The six faces of a cube texture loaded from image files, read from the files at each access and not held:
     a sky of six 2048² faces keeps no 96 MiB of pixels in memory once the renderer has uploaded it (each face is
     read, uploaded and let go in turn). :meth:`CubeTextureData.from_files` checks every file once when it loads
-    them (each error names its file), so a later read fails only if a file changed meanwhile."""
+    them (each error names its file). A later read gets the file as it is then: one that was removed or no longer
+    has the size it had is an error naming it."""
 
     def __init__(self, paths: Sequence[Path], label: str, size: int) -> None:
         self.paths = tuple(paths)
@@ -523,7 +524,8 @@ class CubeTextureData:
                     raise ResourceError(label, f"faces[{face}]", detail)
                 size = pixels.shape[0]
                 del pixels
-            return cls(FaceFiles([Path(p) for p in paths], label, size), **settings)
+            # Absolute: a later read must not depend on the working folder of that moment.
+            return cls(FaceFiles([Path(p).absolute() for p in paths], label, size), **settings)
         return cls(tuple(_read_image_rgba8(p, label) for p in paths), **settings)
 
     @property
