@@ -200,9 +200,9 @@ def crawl(site: Path, server: str, chromium: str, widths: tuple[int, ...]) -> di
         for number, rel in enumerate(found):
             current["page"] = rel or "index"
             if number == 1:
-                # The search worker fetches and indexes the whole site (1 MB) on every page load: the first page
-                # proves it loads; on the others it is cut off (an aborted request, not a broken one), which
-                # takes a fifth off the crawl.
+                # The search worker fetches and indexes the whole site (1 MB) on every page load. The first page
+                # asks for it (a missing index or worker answers 404, which the response check reports); on the
+                # others it is cut off (an aborted request, not a broken one), which takes a fifth off the crawl.
                 for pattern in ("**/search/search_index.json", "**/assets/javascripts/workers/search*"):
                     page.route(pattern, lambda route: route.abort("aborted"))
             page.set_viewport_size({"width": widths[0], "height": 800})
