@@ -109,6 +109,15 @@ def grid_positions(n: int) -> Any:
     return np.stack([(i % g) - (g - 1) / 2, (i // g % g) - (g - 1) / 2, -(i // (g * g)) - 2.0], 1) * 1.8
 
 
+def request_gpu_timing() -> None:
+    """Have WebGPU devices made from now on requested with the timestamp features (before the app is made)."""
+    import os
+
+    from gandalf_core.render.gpu_timing import TIMING_VARIABLE
+
+    os.environ[TIMING_VARIABLE] = "1"
+
+
 def gpu_ms_per_pass(app: Any, frames: int) -> dict[str, float]:
     """Median GPU milliseconds of each pass, and of the whole frame, over ``frames`` frames captured after the
     measured ones (the frame inspector's timer: timestamp queries; not part of the fps figures)."""

@@ -85,7 +85,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
     n, rotating = SCENES[cfg["scene"]]
     width, height = cfg["size"]
     if cfg.get("gpu_passes"):
-        os.environ["GANDALF_GPU_TIMING"] = "1"  # WebGPU: the device is requested with the timestamp features
+        bench_common.request_gpu_timing()
     t_start = time.perf_counter()
     app = Application(cfg["backend"], width, height, headless=cfg["offscreen"], fixed_dt=1 / 60,
                       title=f"pygandalf-work {cfg['scene']}")

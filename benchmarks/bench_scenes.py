@@ -250,7 +250,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
     n, rotating = SCENES[cfg["scene"]]
     width, height = cfg["size"]
     if cfg.get("gpu_passes"):
-        os.environ["GANDALF_GPU_TIMING"] = "1"  # WebGPU: the device is requested with the timestamp features
+        bench_common.request_gpu_timing()
     t_start = time.perf_counter()
     app = Application(cfg["backend"], width, height, headless=True, fixed_dt=1 / 60)
     if cfg["backend"] == "opengl":
@@ -401,7 +401,7 @@ def main(argv: list[str] | None = None) -> int:
                         help="also write every record (and the host line) to FILE as one JSON list")
     parser.add_argument("--gpu-passes", type=int, default=0, metavar="FRAMES",
                         help="after measuring, time FRAMES more frames on the GPU and record each pass's median ms "
-                             "(timestamp queries; meaningless on llvmpipe, absent on lavapipe)")
+                             "(timestamp queries; llvmpipe's OpenGL draws at the flush, after them)")
     args = bench_common.parse_or_answer(parser, argv, run_config)
     if args is None:  # a child: it printed its record
         return 0

@@ -17,7 +17,6 @@ passes lies more than 20 % from the median frame time.
 from __future__ import annotations
 
 import argparse
-import os
 import statistics
 import sys
 from pathlib import Path
@@ -26,7 +25,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
-from bench_common import backends_parser, per_backend  # noqa: E402
+from bench_common import backends_parser, per_backend, request_gpu_timing  # noqa: E402
 
 
 def check(backend: str, width: int, height: int, frames: int) -> dict:
@@ -80,7 +79,7 @@ def check(backend: str, width: int, height: int, frames: int) -> dict:
 def main(argv: list[str] | None = None) -> int:
     args = backends_parser(__doc__, 15, "timed frames", formatter_class=argparse.RawDescriptionHelpFormatter,
                            epilog=__doc__).parse_args(argv)
-    os.environ["GANDALF_GPU_TIMING"] = "1"  # WebGPU devices get the timestamp features (before any is made)
+    request_gpu_timing()  # WebGPU devices get the timestamp features (before any is made)
     return 0 if all(result["ok"] for result in per_backend(args, check)) else 1
 
 

@@ -385,6 +385,15 @@ def cube_face_directions(size: int) -> np.ndarray:
     return dirs / np.linalg.norm(dirs, axis=-1, keepdims=True)
 
 
+def _check_face_shape(label: str, face: str, pixels: np.ndarray, first: int) -> None:
+    """Raise unless a cube face is square and as large as face +X (``first`` texels a side)."""
+    height, width = pixels.shape[:2]
+    if height != width:
+        raise ResourceError(label, f"faces[{face}]", f"face must be square, got {width}x{height}")
+    if height != first:
+        raise ResourceError(label, f"faces[{face}]", f"size {width}x{height} differs from face +X ({first}x{first})")
+
+
 class FaceFiles(Sequence[np.ndarray]):
     """The six faces of a cube texture loaded from image files, read from the files at each access and not held:
     a sky of six 2048² faces keeps no 96 MiB of pixels in memory once the renderer has uploaded it (each face is
@@ -447,12 +456,7 @@ class CubeTextureData:
             raise ResourceError(label, "faces", f"expected 6 faces ({', '.join(CUBE_FACE_NAMES)}), got {len(faces)}")
         checked = tuple(_check_rgba8(label, f"faces[{face}]", f) for face, f in zip(CUBE_FACE_NAMES, faces))
         for face, f in zip(CUBE_FACE_NAMES, checked):
-            if f.shape[0] != f.shape[1]:
-                raise ResourceError(label, f"faces[{face}]", f"face must be square, got {f.shape[1]}x{f.shape[0]}")
-            if f.shape != checked[0].shape:
-                first = checked[0].shape[0]
-                detail = f"size {f.shape[1]}x{f.shape[0]} differs from face +X ({first}x{first})"
-                raise ResourceError(label, f"faces[{face}]", detail)
+            _check_face_shape(label, face, f, checked[0].shape[0])
         object.__setattr__(self, "faces", checked)
         self._check_rest(label)
 
@@ -516,13 +520,8 @@ class CubeTextureData:
             size = 0
             for face, path in zip(CUBE_FACE_NAMES, paths):
                 pixels = _check_rgba8(label, f"faces[{face}]", _read_image_rgba8(path, label))
-                if pixels.shape[0] != pixels.shape[1]:
-                    detail = f"face must be square, got {pixels.shape[1]}x{pixels.shape[0]}"
-                    raise ResourceError(label, f"faces[{face}]", detail)
-                if size and pixels.shape[0] != size:
-                    detail = f"size {pixels.shape[1]}x{pixels.shape[0]} differs from face +X ({size}x{size})"
-                    raise ResourceError(label, f"faces[{face}]", detail)
-                size = pixels.shape[0]
+                size = size or pixels.shape[0]
+                _check_face_shape(label, face, pixels, size)
                 del pixels
             # Absolute: a later read must not depend on the working folder of that moment.
             return cls(FaceFiles([Path(p).absolute() for p in paths], label, size), **settings)

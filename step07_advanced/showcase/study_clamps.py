@@ -108,7 +108,8 @@ def reference_energy(roughness: float) -> float:
     ring = np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2  # (P, 3)
     total = 0.0
     for start in range(0, len(theta), 256):  # rows of the grid in chunks whose arrays stay near the CPU's caches
-        t = theta[start:start + 256, None]
+        rows = slice(start, start + 256)
+        t = theta[rows, None]
         n = np.cos(t)[..., None] * h + np.sin(t)[..., None] * ring  # (T, P, 3)
         n_dot_v, n_dot_l, n_dot_h = n @ VIEW, n @ LIGHT, np.cos(t)
         dist = a2 / (np.pi * (n_dot_h ** 2 * (a2 - 1.0) + 1.0) ** 2)
@@ -116,7 +117,7 @@ def reference_energy(roughness: float) -> float:
         nv, nl = np.where(visible, n_dot_v, 1.0), np.where(visible, n_dot_l, 1.0)
         g = nv / (nv * (1 - k) + k) * nl / (nl * (1 - k) + k)
         integrand = np.where(visible, dist * g * fresnel / 4.0, 0.0)  # f · n·l · n·v = D G F / 4
-        d_omega = np.sin(t) * dtheta[start:start + 256, None] * (2.0 * np.pi / len(phi))
+        d_omega = np.sin(t) * dtheta[rows, None] * (2.0 * np.pi / len(phi))
         total += float(np.sum(integrand * d_omega))
     return total
 
