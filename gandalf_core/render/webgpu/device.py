@@ -10,6 +10,7 @@ import wgpu
 
 from ..capabilities import FLOOR, Needs, check, webgpu_offer
 from ..gpu_timing import timing_features
+from .type_parsing import parse_only_mentioned_typedefs
 
 
 def _quiet_runtime_dir() -> None:
@@ -35,6 +36,7 @@ def request_device(canvas_context: Any = None, needs: Needs = FLOOR) -> tuple[An
     :class:`~gandalf_core.render.capabilities.CapabilityError` when the adapter lacks it): what runs here then
     runs on every implementation that offers the same."""
     _quiet_runtime_dir()
+    parse_only_mentioned_typedefs()
     if canvas_context is not None:
         adapter = wgpu.gpu.request_adapter_sync(canvas=canvas_context, power_preference="high-performance")
     else:
