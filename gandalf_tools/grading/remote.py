@@ -11,6 +11,10 @@
   forwards the hooks the student's class overrides to the instance in the sandbox, with copies of the components'
   field values, and applies back only the field values that come back with the same type and shape
   (:func:`apply_fields`) and the meshes, textures and materials registered in ``scene.assets``.
+
+The stand-ins' own frames carry ``__tracebackhide__``: a failed test's traceback (the grade's log) goes from the test's
+line to the student's error, without the grader's relay in between (``--fulltrace`` shows it), and pytest does not
+read and parse this module's source again for every failed test.
 """
 
 from __future__ import annotations
@@ -64,6 +68,7 @@ def _encode_object(value: Any) -> tuple[str, dict[str, Any]]:
 
 
 def _raise(error: dict[str, Any], label: str) -> None:
+    __tracebackhide__ = True
     message = str(error.get("message", ""))
     where = f" (at {error['where']})" if error.get("where") else ""
     for name in error.get("types", []):
@@ -97,6 +102,7 @@ class Session:
 
     def call(self, message: dict[str, Any], label: str | Callable[[], str], key: str,
              hang: str = "a loop that never ends?", crash: str = "") -> Any:
+        __tracebackhide__ = True
         try:
             reply = self.sandbox.request({**message, "package": self.package}, label=label, key=key, budget=self.budget,
                                          objects=trusted_object, encode_objects=_encode_object, hang=hang,
@@ -133,6 +139,7 @@ class RemoteFunction:
         self.__name__ = self.__qualname__ = target.rsplit(".", 1)[-1]
 
     def __call__(self, *args: Any, **kwargs: Any) -> Any:
+        __tracebackhide__ = True
         try:
             result = self.session.call({"op": "call", "target": self.target, "args": list(args), "kwargs": kwargs},
                                        lambda: describe_call(self.__name__, args, kwargs), self.target)
@@ -155,6 +162,7 @@ class RemoteClass:
         self.__name__ = self.__qualname__ = target.rsplit(".", 1)[-1]
 
     def __call__(self, *args: Any, **kwargs: Any) -> Any:
+        __tracebackhide__ = True
         label = describe_call(self.__name__, args, kwargs)
         info = self.session.call({"op": "new", "target": self.target, "args": list(args), "kwargs": kwargs},
                                  label, self.target)
@@ -241,6 +249,7 @@ class RemoteSystem:
             self.data = pack_lights([])
 
     def _forward(self, hook: str, args: list[Any], members: list[tuple[uuid.UUID, tuple[Any, ...]]]) -> Any:
+        __tracebackhide__ = True
         shown = "on_update_entity" if hook == "on_update_system" and hook not in self._hooks else hook
         label = f"{type(self).__name__}.{shown}"
         if self._session.sandbox.generation != self._generation:
@@ -271,24 +280,29 @@ class RemoteSystem:
         return list(self._members.items())  # type: ignore[attr-defined]
 
     def on_create_system(self) -> None:
+        __tracebackhide__ = True
         if "on_create_system" in self._hooks:
             self._forward("on_create_system", [], self._members_list())
 
     def on_create_entity(self, entity: uuid.UUID, components: tuple[Any, ...]) -> None:
+        __tracebackhide__ = True
         if "on_create_entity" in self._hooks:
             self._forward("on_create_entity", [str(entity)], [(entity, components)])
 
     def on_remove_entity(self, entity: uuid.UUID, components: tuple[Any, ...]) -> None:
+        __tracebackhide__ = True
         if "on_remove_entity" in self._hooks:
             self._forward("on_remove_entity", [str(entity)], [(entity, components)])
 
     def on_update_system(self, ts: float) -> None:
+        __tracebackhide__ = True
         if self._hooks & {"on_update_system", "on_update_entity"}:
             self._forward("on_update_system", [float(ts)], self._members_list())
         elif isinstance(self, _light_system()):
             _light_system().on_update_system(self, ts)
 
     def on_destroy_system(self) -> None:
+        __tracebackhide__ = True
         if "on_destroy_system" in self._hooks:
             self._forward("on_destroy_system", [], self._members_list())
 
