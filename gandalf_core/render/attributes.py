@@ -6,7 +6,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any
 
-from ..resources import ATTRIBUTE_LOCATIONS, INSTANCE_LOCATIONS
+from ..resources import ATTRIBUTE_LOCATIONS
 from .errors import ShaderCompileError
 
 _BY_LOCATION = {loc: name for name, loc in ATTRIBUTE_LOCATIONS.items()}
@@ -22,12 +22,12 @@ def mesh_has(data: Any) -> tuple[str, ...]:
 
 
 def mesh_attributes(shader_name: str, locations: Iterable[int]) -> tuple[str, ...]:
-    """Mesh attribute names for the shader's input ``locations`` (instance locations skipped), in location order."""
+    """Mesh attribute names for the shader's input ``locations``, in location order."""
     locations = sorted(locations)
-    unknown = [loc for loc in locations if loc not in _BY_LOCATION and loc not in INSTANCE_LOCATIONS]
+    unknown = [loc for loc in locations if loc not in _BY_LOCATION]
     if unknown:
         raise ShaderCompileError(
             f"shader '{shader_name}': vertex input locations {unknown} are not engine attributes "
-            f"(mesh: {ATTRIBUTE_LOCATIONS}; instance rows: 5, 6, 7)"
+            f"(mesh: {ATTRIBUTE_LOCATIONS}; the instance rows are no attributes: instance_model() reads them)"
         )
-    return tuple(_BY_LOCATION[loc] for loc in locations if loc in _BY_LOCATION)
+    return tuple(_BY_LOCATION[loc] for loc in locations)

@@ -7,8 +7,8 @@ vertex-buffer description.
 
 Attribute locations are fixed for the whole engine (:data:`ATTRIBUTE_LOCATIONS`), so any shader can be used with
 any mesh: ``layout(location = 2) in vec2 uv`` in GLSL and ``@location(2) uv: vec2f`` in WGSL always mean the
-UV set. Per-instance data (the three affine rows of the model matrix) uses locations 5, 6 and 7
-(:data:`INSTANCE_LOCATIONS`).
+UV set. Per-instance data (the three affine rows of the model matrix) is no vertex attribute: vertex shaders read
+it from the frame's instance buffer by instance index (``instance_model()`` in ``instance.glsl``/``instance.wgsl``).
 
 Tangent convention (the glTF one): ``tangent.xyz`` points along +u; the bitangent
 ``B = cross(N, tangent.xyz) * tangent.w`` points along -v, i.e. *up* the image (v = 0 is the top row). Normal maps
@@ -28,7 +28,6 @@ from gandalf_core.resources.errors import ResourceError
 #: The largest patch a patch mesh may have (OpenGL guarantees GL_MAX_PATCH_VERTICES >= 32).
 MAX_PATCH_SIZE = 32
 ATTRIBUTE_LOCATIONS: dict[str, int] = {"position": 0, "normal": 1, "uv": 2, "tangent": 3, "color": 4}
-INSTANCE_LOCATIONS = (5, 6, 7)
 
 # attribute name -> (MeshData field, components)
 _ATTRIBUTES: dict[str, tuple[str, int]] = {

@@ -3,7 +3,8 @@ shaders get it as generated text: no shader file of the project lays out a unifo
 uniform, by hand.
 
 A GLSL ``uniform`` outside a block is allowed only for opaque types (samplers and images: they take a texture
-unit or an image unit, not bytes); ``var<uniform>`` in WGSL and ``uniform Name { ... }`` blocks in GLSL are written
+unit or an image unit, not bytes) and for the renderer's per-draw value ``u_first_instance`` (instance.glsl: where
+the draw's rows start; WGSL's instance index includes it); ``var<uniform>`` in WGSL and ``uniform Name { ... }`` blocks in GLSL are written
 by :meth:`BlockLayout.glsl` / :meth:`BlockLayout.wgsl` and reach the shader as a generated ``#include``.
 """
 
@@ -14,6 +15,7 @@ from pathlib import Path
 
 import pytest
 
+from gandalf_core.render.opengl.libs import ENGINE_UNIFORMS
 from gandalf_core.resources.blocks import ENGINE_SNIPPETS, material_snippets
 from gandalf_core.resources.layout import BlockLayout, LayoutError
 from step07_advanced.filter.shaders import PARAMS_INCLUDES as FILTER_INCLUDES
@@ -49,7 +51,8 @@ def _shader_files() -> list[Path]:
 
 def _by_hand(text: str) -> list[str]:
     code = _comments_removed(text)
-    return [m.group(0).strip() for pattern in (WGSL_UNIFORM, GLSL_BLOCK, GLSL_LOOSE) for m in pattern.finditer(code)]
+    found = [m.group(0).strip() for pattern in (WGSL_UNIFORM, GLSL_BLOCK, GLSL_LOOSE) for m in pattern.finditer(code)]
+    return [line for line in found if line.split()[-1].rstrip(";") not in ENGINE_UNIFORMS]
 
 
 def test_the_project_has_shader_files_to_check():

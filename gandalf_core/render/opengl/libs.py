@@ -33,13 +33,17 @@ from ..rebuild import RebuildableShaders
 from ..shader_files import load_shader
 from ..storage import StorageBufferLib, StorageLayout, buffer_bytes, check_material_buffer, glsl_storage_layouts
 from ..texture_checks import check_texture_kinds, check_texture_size
+from . import raw_gl
 
 GL_SRGB8_ALPHA8 = 0x8C43
 # GL_FLOAT_MAT2, _MAT3, _MAT4 -> size
 # The engine's uniform blocks and their binding points (resources/blocks.py states the convention for both APIs).
 UNIFORM_BLOCKS = BLOCK_BINDINGS
-# The engine's samplers and their reserved texture units (materials use the units from 0 up).
-ENGINE_SAMPLERS = {"u_shadow_map": 15}
+# The engine's samplers and their reserved texture units (materials use the units from 0 up): the shadow map, and the
+# buffer texture of the frame's instance rows (instance.glsl).
+ENGINE_SAMPLERS = {"u_shadow_map": 15, "u_instance_rows": 14}
+# The engine's loose uniforms, set by the renderer per draw (a material's own values go in its Material block).
+ENGINE_UNIFORMS = frozenset({"u_first_instance"})
 GL_RGBA8 = 0x8058
 # Mesa: "0:12(5): error: ..."; NVIDIA: "0(12) : error ..."; others: "ERROR: 0:12: ..."
 _GL_LINE = re.compile(r"^\s*(?:ERROR:\s*)?\d+[:(](\d+)\)?")
@@ -259,11 +263,14 @@ class ShaderLib(RebuildableShaders, ResourceLib[GLShader]):
         samplers = list(dict.fromkeys(name for name in declared if name not in ENGINE_SAMPLERS))
         units = {**{sampler: unit for unit, sampler in enumerate(samplers)}, **ENGINE_SAMPLERS}
         for sampler, unit in units.items():
-            if sampler in uniforms:
+            if sampler == "u_instance_rows" and sampler in uniforms:  # a samplerBuffer: moderngl does not set it
+                raw_gl.set_sampler_unit(program.glo, program[sampler].location, unit)
+            elif sampler in uniforms:
                 program[sampler].value = unit
         storage_blocks = list(dict.fromkeys(b for src in stages.values() for b in _declared_storage_blocks(src.text)))
         kinds = dict(kind for src in stages.values() for kind in _declared_sampler_kinds(src.text))
-        values = {k: v for src in stages.values() for k, v in _declared_material_uniforms(src.text).items()}
+        values = {k: v for src in stages.values() for k, v in _declared_material_uniforms(src.text).items()
+                  if f"u_{k}" not in ENGINE_UNIFORMS}
         files = ", ".join(src.filename for src in stages.values())
         try:
             if material_block is not None:

@@ -1,5 +1,6 @@
 """The few OpenGL calls moderngl does not wrap, made through ctypes: clip control and a float depth buffer for
-real reverse-Z, and a colour-only blit to the window.
+real reverse-Z, a colour-only blit to the window, and the buffer texture through which shaders read the instance
+rows (:class:`BufferTexture`).
 
 Clip control (OpenGL 4.5) sets clip-space depth to [0, 1] as in WebGPU.
 With OpenGL's default [-1, 1] clip depth, reverse-Z gains nothing: the mapping to the depth buffer adds 1 and
@@ -28,6 +29,10 @@ GL_READ_FRAMEBUFFER = 0x8CA8
 GL_DRAW_FRAMEBUFFER = 0x8CA9
 GL_COLOR_BUFFER_BIT = 0x4000
 GL_NEAREST = 0x2600
+GL_TEXTURE0 = 0x84C0
+GL_MAX_TEXTURE_BUFFER_SIZE = 0x8C2B
+GL_TEXTURE_BUFFER = 0x8C2A
+GL_RGBA32F = 0x8814
 
 
 @functools.cache
@@ -45,7 +50,7 @@ def gl_function(name: str, argtypes: tuple[type, ...]) -> Callable[..., None]:
         function.argtypes = list(argtypes)
         function.restype = None
         return function
-    raise RuntimeError(f"reverse-Z in OpenGL needs {name}, which no GL library here exports "
+    raise RuntimeError(f"the OpenGL renderer needs {name}, which no GL library here exports "
                        f"({'; '.join(errors) or 'no libGL found'})")
 
 
@@ -67,6 +72,20 @@ def make_float_depth(glo: int, width: int, height: int) -> None:
     bind(GL_TEXTURE_2D, glo)
     image(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, width, height, 0, GL_DEPTH_COMPONENT, GL_FLOAT, None)
     bind(GL_TEXTURE_2D, previous.value)
+
+
+def get_integer(name: int) -> int:
+    """``glGetIntegerv(name)`` for the current context."""
+    value = ctypes.c_int()
+    gl_function("glGetIntegerv", (ctypes.c_uint, ctypes.POINTER(ctypes.c_int)))(name, ctypes.byref(value))
+    return value.value
+
+
+def set_sampler_unit(program_glo: int, location: int, unit: int) -> None:
+    """Point the sampler uniform at ``location`` of program ``program_glo`` at texture unit ``unit``: for sampler
+    types moderngl does not set (``samplerBuffer``). Leaves the program in use (moderngl binds its own per draw)."""
+    gl_function("glUseProgram", (ctypes.c_uint,))(program_glo)
+    gl_function("glUniform1i", (ctypes.c_int, ctypes.c_int))(location, unit)
 
 
 def supported(version_code: int, extensions: set[str]) -> bool:
@@ -136,3 +155,33 @@ def block_members(program_glo: int) -> dict[str, dict[str, tuple[int, int]]]:
         member = buffer.value.decode()
         out.setdefault(names[blocks[i]], {})[member] = (offsets[i], strides[i])
     return out
+
+
+class BufferTexture:
+    """A buffer texture (OpenGL 3.1, ``samplerBuffer`` in GLSL) over a moderngl buffer: the vertex shader fetches
+    the instance rows from it by index (``texelFetch``), as WebGPU's reads them from a storage buffer. moderngl
+    makes no buffer textures, so the texture object is made and bound here."""
+
+    def __init__(self) -> None:
+        name = ctypes.c_uint()
+        gl_function("glGenTextures", (ctypes.c_int, ctypes.POINTER(ctypes.c_uint)))(1, ctypes.byref(name))
+        self.glo = name.value
+        # Bound once now, so that the name is a buffer texture from the start.
+        gl_function("glBindTexture", (ctypes.c_uint, ctypes.c_uint))(GL_TEXTURE_BUFFER, self.glo)
+        self.buffer_glo: int | None = None  # the buffer whose store the texture reads (RGBA32F texels)
+
+    def attach(self, buffer_glo: int) -> None:
+        """Read ``buffer_glo``'s data store from now on (it stays attached when the store is orphaned)."""
+        gl_function("glBindTexture", (ctypes.c_uint, ctypes.c_uint))(GL_TEXTURE_BUFFER, self.glo)
+        gl_function("glTexBuffer", (ctypes.c_uint, ctypes.c_uint, ctypes.c_uint))(GL_TEXTURE_BUFFER, GL_RGBA32F,
+                                                                                 buffer_glo)
+        self.buffer_glo = buffer_glo
+
+    def use(self, unit: int) -> None:
+        """Bind the texture to texture unit ``unit`` (the unit the shaders' sampler reads)."""
+        gl_function("glActiveTexture", (ctypes.c_uint,))(GL_TEXTURE0 + unit)
+        gl_function("glBindTexture", (ctypes.c_uint, ctypes.c_uint))(GL_TEXTURE_BUFFER, self.glo)
+
+    def release(self) -> None:
+        name = ctypes.c_uint(self.glo)
+        gl_function("glDeleteTextures", (ctypes.c_int, ctypes.POINTER(ctypes.c_uint)))(1, ctypes.byref(name))

@@ -1,8 +1,8 @@
 """The OpenGL renderer: a moderngl context (EGL offscreen, or a glfw window) and an sRGB offscreen target.
 
-Each frame: one write of the frame uniform block, one write of all instance data, then one instanced
-draw call per (material, mesh) batch. With a shadow-casting light, a depth-only pass from the light
-draws the opaque batches into the shadow map first.
+Each frame: one write of the frame uniform block, one write of all instance data (which the vertex shaders read
+through a buffer texture, by instance index), then one instanced draw call per (material, mesh) batch. With a
+shadow-casting light, a depth-only pass from the light draws the opaque batches into the shadow map first.
 """
 
 from __future__ import annotations
@@ -15,10 +15,10 @@ import numpy as np
 
 from ...resources import MaterialData, ResourceError
 from ...resources.assets import Assets
-from ..attributes import INSTANCE_LOCATIONS, mesh_attributes
+from ..attributes import mesh_attributes
 from ..base import NOT_RECORDING, Renderer
 from ..capabilities import FLOOR, GL_FLOOR, CapabilityError, Needs, check, opengl_offer
-from ..frame import FRAME_FLOATS, INSTANCE_STRIDE, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
+from ..frame import FRAME_FLOATS, INSTANCE_FLOATS, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
 from ..texture_checks import check_target_size
 from . import raw_gl
 from .libs import (
@@ -88,6 +88,10 @@ class OpenGLRenderer(Renderer):
         self._shadow: tuple[moderngl.Texture, moderngl.Framebuffer] | None = None
         self._instance_buffer: moderngl.Buffer | None = None
         self._drawn_instances: moderngl.Buffer | None = None  # the instance rows the draws read (moved or not)
+        #: The texture through which the vertex shaders fetch the drawn instance rows (instance.glsl).
+        self.make_current()
+        self._instance_rows = raw_gl.BufferTexture()
+        self._max_instance_texels = raw_gl.get_integer(raw_gl.GL_MAX_TEXTURE_BUFFER_SIZE)
         self._vaos: dict[tuple[str, str], moderngl.VertexArray] = {}
         # Released or replaced resources take what refers to them along (rebuilt on their next use).
         self.meshes.on_forget.append(self._forget_vertex_arrays)
@@ -183,6 +187,8 @@ class OpenGLRenderer(Renderer):
         # scratch texture unit, which on some drivers is the unit the shadow map is bound to.
         draws = self.resolve_draws(data, assets)
         sky = self._prepare_sky(data.skybox, assets) if data.skybox is not None else None
+        if self._drawn_instances is not None:
+            self._bind_instance_rows(len(data.instances) if data.batches else 0)
         recorder = self.recorder  # the frame-capture hook (see Renderer.recorder), or None
         if recorder is not None:
             recorder.begin_frame(self._frame_ubo.read(), self._lights_ubo.read())
@@ -232,14 +238,26 @@ class OpenGLRenderer(Renderer):
             recorder.end_frame()
         self._present()
 
+    def _bind_instance_rows(self, count: int) -> None:
+        """Point the instance-row texture at the buffer the draws read (attached again each frame: the store may
+        have been orphaned or moved) and bind it at its reserved unit."""
+        if count * INSTANCE_FLOATS // 4 > self._max_instance_texels:
+            raise ValueError(f"{count} instances need {count * INSTANCE_FLOATS // 4} texels of instance rows, more "
+                             f"than this OpenGL driver's buffer textures hold (GL_MAX_TEXTURE_BUFFER_SIZE "
+                             f"{self._max_instance_texels}); draw fewer entities")
+        self._instance_rows.attach(self._drawn_instances.glo)
+        self.use_instance_rows()
+
+    def use_instance_rows(self) -> None:
+        """Bind the instance-row texture at its reserved unit again (for draws replayed after the frame)."""
+        self._instance_rows.use(ENGINE_SAMPLERS["u_instance_rows"])
+
     def _draw_batch(self, shader: GLShader, mesh: GLMesh, batch: DrawBatch) -> None:
-        """One instanced draw of ``batch`` with ``shader``, its instance rows bound from the shared buffer."""
+        """One instanced draw of ``batch`` with ``shader``: its rows start at ``u_first_instance`` in the instance
+        buffer texture (gl_InstanceID counts from 0 in every draw)."""
         vao = self._vertex_array(shader, mesh)
-        offset = batch.first_instance * INSTANCE_STRIDE
-        for i, location in enumerate(INSTANCE_LOCATIONS):
-            if location in shader.attributes:
-                vao.bind(location, "f", self._drawn_instances, "4f", offset=offset + 16 * i,
-                         stride=INSTANCE_STRIDE, divisor=1)
+        if "u_first_instance" in shader.uniforms:
+            shader.program["u_first_instance"].value = batch.first_instance
         # --8<-- [start:patches]
         if shader.patch_vertices is not None:  # a tessellation program draws patches, never triangles
             self.ctx.patch_vertices = shader.patch_vertices
@@ -430,6 +448,7 @@ class OpenGLRenderer(Renderer):
             self._shadow = None
         for lib in (self.materials, self.buffers, self.meshes, self.shaders, self.textures):
             lib.release()
+        self._instance_rows.release()
         if self._instance_buffer is not None:
             self._instance_buffer.release()
         for attached in self.attachments.values():

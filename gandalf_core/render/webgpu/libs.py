@@ -27,13 +27,12 @@ from ...resources.blocks import WGSL_BINDINGS, MaterialDeclaration
 from ...resources.errors import ResourceError
 from ...resources.layout import BlockLayout, LayoutError
 from ...resources.material_data import MaterialData
-from ...resources.mesh_data import ATTRIBUTE_LOCATIONS, INSTANCE_LOCATIONS, MeshData
+from ...resources.mesh_data import ATTRIBUTE_LOCATIONS, MeshData
 from ...resources.shader_source import ShaderSource
 from ...resources.texture_data import CubeTextureData, TextureData
 from ..builtin_materials import prepare as prepare_builtin
 from ..entry_points import wgsl_entry
 from ..errors import ShaderCompileError
-from ..frame import INSTANCE_STRIDE
 from ..library import ResourceLib
 from ..material_block import block_values, declared_block, used_block
 from ..material_checks import check_parameters
@@ -179,14 +178,12 @@ struct VOut { @builtin(position) pos: vec4<f32>, @location(0) uv: vec2<f32> };
 
 # --- shaders --------------------------------------------------------------------------------------
 # Every engine vertex input a shader may read, for the pipeline that checks a module when it is built: the mesh's
-# attributes at their fixed locations (attributes.py), then the instance rows.
+# attributes at their fixed locations (attributes.py). The instance rows are no vertex input (group 0 binds them).
 _ALL_INPUTS = [
     {"array_stride": 64, "step_mode": "vertex", "attributes": [
         {"format": f"float32x{n}", "offset": offset, "shader_location": ATTRIBUTE_LOCATIONS[name]}
         for name, n, offset in (("position", 3, 0), ("normal", 3, 12), ("uv", 2, 24), ("tangent", 4, 32),
                                 ("color", 4, 48))]},
-    {"array_stride": INSTANCE_STRIDE, "step_mode": "instance", "attributes": [
-        {"format": "float32x4", "offset": 16 * i, "shader_location": loc} for i, loc in enumerate(INSTANCE_LOCATIONS)]},
 ]
 
 

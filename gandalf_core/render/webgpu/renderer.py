@@ -16,7 +16,7 @@ import wgpu
 
 from ...resources import MaterialData, ResourceError
 from ...resources.assets import Assets
-from ..attributes import INSTANCE_LOCATIONS, mesh_has
+from ..attributes import mesh_has
 from ..base import NOT_RECORDING, Renderer
 from ..capabilities import FLOOR, Needs
 from ..errors import ShaderCompileError
@@ -29,8 +29,6 @@ from .validation import attribute_of, first_cause, missing_input
 
 COLOR_FORMAT = "rgba8unorm-srgb"
 #: The three rows of each instance's model matrix, at the engine's instance locations.
-_INSTANCE_LAYOUT = {"array_stride": INSTANCE_STRIDE, "step_mode": "instance", "attributes": [
-    {"format": "float32x4", "offset": 16 * i, "shader_location": loc} for i, loc in enumerate(INSTANCE_LOCATIONS)]}
 DEPTH_FORMAT = "depth32float"
 _BLEND = {
     "alpha": {"color": {"src_factor": "src-alpha", "dst_factor": "one-minus-src-alpha", "operation": "add"},
@@ -70,8 +68,9 @@ class WebGPURenderer(Renderer):
                 self.present_direct = False
             self._surface.set_physical_size(*window.framebuffer_size)
             self._present = _PresentBlit(self.device, self._surface_format)
-        # Group 0 is the engine's, shared by every pipeline: frame uniforms (0), lights (1), and the shadow
-        # map (2) with its comparison sampler (3), which shaders declare by including shadow.wgsl.
+        # Group 0 is the engine's, shared by every pipeline: frame uniforms (0), lights (1), the shadow map (2) with
+        # its comparison sampler (3), which shaders declare by including shadow.wgsl, and the instance rows (4),
+        # which vertex shaders read by instance index through instance.wgsl.
         visible = wgpu.ShaderStage.VERTEX | wgpu.ShaderStage.FRAGMENT
         self.frame_layout = self.device.create_bind_group_layout(entries=[
             {"binding": 0, "visibility": visible, "buffer": {"type": "uniform"}},
@@ -79,6 +78,7 @@ class WebGPURenderer(Renderer):
             {"binding": 2, "visibility": wgpu.ShaderStage.FRAGMENT,
              "texture": {"sample_type": "depth", "view_dimension": "2d"}},
             {"binding": 3, "visibility": wgpu.ShaderStage.FRAGMENT, "sampler": {"type": "comparison"}},
+            {"binding": 4, "visibility": wgpu.ShaderStage.VERTEX, "buffer": {"type": "read-only-storage"}},
         ], label="frame")
         uniform = wgpu.BufferUsage.UNIFORM | wgpu.BufferUsage.COPY_DST
         self._frame_buffer = self.device.create_buffer(size=FRAME_FLOATS * 4, usage=uniform)
@@ -91,8 +91,13 @@ class WebGPURenderer(Renderer):
         self._no_shadow_map = self.device.create_texture(
             size=(1, 1, 1), format=DEPTH_FORMAT, usage=wgpu.TextureUsage.TEXTURE_BINDING, label="no shadow map"
         )
-        self._frame_group = self._create_frame_group(self._no_shadow_map.create_view())
-        self._shadow: tuple[Any, Any, Any] | None = None  # the map, its view, the frame group that binds it
+        self._no_shadow_view = self._no_shadow_map.create_view()
+        # Before the first instance is drawn, group 0 binds one row of zeros.
+        self._no_instances = self.device.create_buffer(size=INSTANCE_STRIDE, usage=wgpu.BufferUsage.STORAGE)
+        #: Group 0 as bound with and without the shadow map, for the instance buffer the draws read now.
+        self._frame_groups: dict[bool, Any] = {}
+        self._frame_groups_for: Any = None  # that buffer
+        self._shadow: tuple[Any, Any] | None = None  # the map and its view
         self._sky_materials: dict[str, Any] = {}
         self.textures = TextureLib(self.device, self.stats)
         self.shaders = ShaderLib(self.device, self.stats)
@@ -118,13 +123,32 @@ class WebGPURenderer(Renderer):
         self._pending_surface: Any = None
         self._create_targets()
 
-    def _create_frame_group(self, shadow_view: Any) -> Any:
-        return self.device.create_bind_group(layout=self.frame_layout, entries=[
-            {"binding": 0, "resource": {"buffer": self._frame_buffer}},
-            {"binding": 1, "resource": {"buffer": self._lights_buffer}},
-            {"binding": 2, "resource": shadow_view},
-            {"binding": 3, "resource": self._shadow_sampler},
-        ])
+    def _check_instance_binding(self, count: int) -> None:
+        """The vertex shaders read the instance rows as one storage binding: no more than the device binds."""
+        limit = int(self.device.limits["max-storage-buffer-binding-size"])
+        if count * INSTANCE_STRIDE > limit:
+            raise ValueError(f"{count} instances need {count * INSTANCE_STRIDE} bytes of instance rows, more than this "
+                             f"device binds as one storage buffer (max-storage-buffer-binding-size {limit}); draw "
+                             "fewer entities, or request a device with a higher limit")
+
+    def frame_group(self, shadowed: bool) -> Any:
+        """Group 0 for the draws: the frame's blocks, the shadow map (``shadowed``) or its 1x1 stand-in, and the
+        instance rows the draws read this frame (made again only when that buffer changes)."""
+        rows = self._drawn_instances if self._drawn_instances is not None else self._no_instances
+        if self._frame_groups_for is not rows:
+            self._frame_groups, self._frame_groups_for = {}, rows
+        group = self._frame_groups.get(shadowed)
+        if group is None:
+            shadow_view = self._shadow[1] if shadowed and self._shadow is not None else self._no_shadow_view
+            group = self._frame_groups[shadowed] = self.device.create_bind_group(layout=self.frame_layout, entries=[
+                {"binding": 0, "resource": {"buffer": self._frame_buffer}},
+                {"binding": 1, "resource": {"buffer": self._lights_buffer}},
+                {"binding": 2, "resource": shadow_view},
+                {"binding": 3, "resource": self._shadow_sampler},
+                {"binding": 4, "resource": {"buffer": rows, "offset": 0, "size": min(
+                    rows.size, int(self.device.limits["max-storage-buffer-binding-size"]))}},
+            ])
+        return group
 
     # --8<-- [start:targets]
     def _create_targets(self) -> None:
@@ -154,6 +178,7 @@ class WebGPURenderer(Renderer):
         queue.write_buffer(self._frame_buffer, 0, data.frame)
         queue.write_buffer(self._lights_buffer, 0, data.lights)
         if data.batches:
+            self._check_instance_binding(len(data.instances))
             self._upload_instances(data)
         # Resolve everything before recording, so a missing resource fails before a pass is open.
         draws = [(batch, material, mesh, self._pipeline(material, mesh, data.reverse_z, batch.mirrored))
@@ -167,7 +192,7 @@ class WebGPURenderer(Renderer):
         if data.instance_pass is not None and data.batches:  # GPU work over the rows: the draws read its output
             self._drawn_instances = data.instance_pass.record(self, encoder, self._instance_buffer,
                                                               len(data.instances))
-        frame_group = self._frame_group
+        frame_group = self.frame_group(False)
         if data.shadows:
             frame_group = self._draw_shadow_map(encoder, draws)
         target = f"frame {self.width}x{self.height} ({self._target_format}, {DEPTH_FORMAT})"
@@ -248,22 +273,26 @@ class WebGPURenderer(Renderer):
 
     def _draw_batch(self, rpass: Any, shader: WGPUShader, mesh: WGPUMesh, attributes: tuple[str, ...],
                     batch: DrawBatch) -> None:
-        """One instanced draw of ``batch``: the mesh's buffer with ``attributes``, then the instance rows."""
-        slot = 0
+        """One instanced draw of ``batch``: the mesh's buffer with ``attributes``; the batch's instance rows start
+        at its first instance, which the vertex shader's instance index counts from (group 0 binds the rows)."""
         if attributes:
             vbo, _layout = self.meshes.vertex_buffer(mesh, attributes)
-            rpass.set_vertex_buffer(slot, vbo)
-            slot += 1
-        rpass.set_vertex_buffer(slot, self._drawn_instances, batch.first_instance * INSTANCE_STRIDE)
+            rpass.set_vertex_buffer(0, vbo)
+        first = batch.first_instance
         if mesh.data.indirect is not None:  # the count a compute pass wrote; the instances are the batch's
+            if first and "indirect-first-instance" not in self.device.features:
+                raise ResourceError(f"mesh '{mesh.name}'", "indirect",
+                                    f"this device lacks WebGPU's 'indirect-first-instance' feature, so an indirectly "
+                                    f"drawn mesh can only draw the frame's first instances (its batch starts at row "
+                                    f"{first}); draw it from a scene of its own")
             buffer = self.indirect_buffer(mesh.name, mesh.data)
-            self.device.queue.write_buffer(buffer, 4, np.array([batch.count, 0, 0], dtype=np.uint32).tobytes())
+            self.device.queue.write_buffer(buffer, 4, np.array([batch.count, 0, first], dtype=np.uint32).tobytes())
             rpass.draw_indirect(buffer, 0)
         elif mesh.index_buffer is not None:
             rpass.set_index_buffer(mesh.index_buffer, "uint32")
-            rpass.draw_indexed(mesh.count, batch.count)
+            rpass.draw_indexed(mesh.count, batch.count, 0, 0, first)
         else:
-            rpass.draw(mesh.count, batch.count)
+            rpass.draw(mesh.count, batch.count, 0, first)
         self.stats["draw_calls"] += 1
 
     # --8<-- [start:shadow_pass]
@@ -277,9 +306,10 @@ class WebGPURenderer(Renderer):
                 | wgpu.TextureUsage.COPY_SRC, label="shadow map",
             )
             view = texture.create_view()
-            self._shadow = (texture, view, self._create_frame_group(view))
+            self._shadow = (texture, view)
+            self._frame_groups.pop(True, None)
             self.stats["shadow_maps_created"] += 1
-        _texture, view, frame_group = self._shadow
+        _texture, view = self._shadow
         shader = self.pass_shader("shadow")
         recorder = self.recorder
         target = f"shadow map {SHADOW_MAP_SIZE}x{SHADOW_MAP_SIZE} ({DEPTH_FORMAT})"
@@ -287,7 +317,7 @@ class WebGPURenderer(Renderer):
             "view": view, "depth_clear_value": 1.0, "depth_load_op": "clear", "depth_store_op": "store",
         }, timestamp_writes=recorder.begin_target(target, encoder) if recorder is not None else None)
         # The stand-in group: the map itself must not be bound while this pass writes it.
-        rpass.set_bind_group(0, self._frame_group)
+        rpass.set_bind_group(0, self.frame_group(False))
         for batch, material, mesh, _pipeline in draws:
             if batch.transparent:
                 continue
@@ -302,7 +332,7 @@ class WebGPURenderer(Renderer):
             recorder.end_target(rpass)
         rpass.end()
         self.stats["shadow_passes"] += 1
-        return frame_group
+        return self.frame_group(True)
 
     def _shadow_pipeline(self, shader: WGPUShader, mesh: WGPUMesh) -> tuple[Any, tuple[str, ...]]:
         """The depth-only pipeline for ``mesh``'s position layout (one for all meshes of the same layout)."""
@@ -370,11 +400,11 @@ class WebGPURenderer(Renderer):
 
     def _buffer_layouts(self, mesh: WGPUMesh, attributes: tuple[str, ...]) -> list[Any]:
         """The vertex buffer layouts of a draw: the mesh's interleaved ``attributes`` (none for an indirectly drawn
-        mesh, whose shader pulls its vertices), then the instance rows."""
+        mesh, whose shader pulls its vertices). The instance rows are no vertex buffer: group 0 binds them."""
         if not attributes:
-            return [_INSTANCE_LAYOUT]
+            return []
         _vbo, layout = self.meshes.vertex_buffer(mesh, attributes)
-        return [self._vertex_layout(layout), _INSTANCE_LAYOUT]
+        return [self._vertex_layout(layout)]
 
     def _sky_layout(self) -> Any:
         return self.shaders.group_layout(("texture-cube", "sampler"))
@@ -474,6 +504,8 @@ class WebGPURenderer(Renderer):
         self._sky_materials.clear()
         if self._instance_buffer is not None:
             self._instance_buffer.destroy()
+        self._no_instances.destroy()
+        self._frame_groups, self._frame_groups_for = {}, None
         for attached in self.attachments.values():
             attached.release()
         if self._shadow is not None:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 
-from ...resources import ATTRIBUTE_LOCATIONS, INSTANCE_LOCATIONS, ShaderSource
+from ...resources import ATTRIBUTE_LOCATIONS, ShaderSource
 
 _NAGA_LINE = re.compile(r"(?:wgsl|<[^>]*>|\S+\.wgsl):(\d+):(\d+)")
 _MISSING_INPUT = re.compile(r"ShaderStages\((VERTEX|FRAGMENT)\).*?Location\[(\d+)\] (\w+)", re.S)
@@ -54,8 +54,8 @@ def stage_error(src: ShaderSource, message: str, vertex: tuple[str, int], fragme
                                 f"({fmt}), which vertex entry point '{vertex[0]}' never returns (not at that "
                                 "location, or with fewer components or another type)")
     return src.format_error(vertex[1], f"vertex entry point '{vertex[0]}' reads @location({location}) ({fmt}), "
-                            f"which is no engine attribute (mesh: {ATTRIBUTE_LOCATIONS}; instance rows: "
-                            f"{', '.join(map(str, INSTANCE_LOCATIONS))})")
+                            f"which is no engine attribute (mesh: {ATTRIBUTE_LOCATIONS}; the instance rows are no "
+                            "attributes: take an `inst: Instance` parameter and call instance_model(inst))")
 
 
 def attribute_of(location: int) -> str | None:

@@ -24,6 +24,7 @@ def replay(renderer: Any, draws: list[DrawRecord], data: Any, assets: Any, x: in
     fbo.clear(r, g, b, a, depth=0.0 if data.reverse_z else 1.0, viewport=pixel)
     renderer._clip_depth(data.reverse_z)
     renderer._state = None
+    renderer.use_instance_rows()  # an overlay drawn since the frame may have bound another texture there
     results: list[Any] = []
     fbo.scissor = pixel
     try:

@@ -33,8 +33,7 @@ def replay(renderer: Any, draws: list[DrawRecord], data: Any, assets: Any, x: in
             occlusion_query_set=queries,
         )
         rpass.set_scissor_rect(x, y, 1, 1)
-        shadow = renderer._shadow
-        rpass.set_bind_group(0, shadow[2] if data.shadows and shadow is not None else renderer._frame_group)
+        rpass.set_bind_group(0, renderer.frame_group(bool(data.shadows) and renderer._shadow is not None))
         keys: list[Any] = []
         for draw in draws:
             if draw.mesh is None:  # the sky
