@@ -1,6 +1,6 @@
 """The GPU-driven motion pass on OpenGL: a compute shader (GLSL 4.30) reads the frame's instance buffer and the
-motion rows as shader storage buffers and writes the moved rows into a buffer the draws then read as their
-instance attributes (a GL buffer is only bytes: the same object is a storage and a vertex buffer)."""
+motion rows as shader storage buffers and writes the moved rows into a buffer the draws then read their instance rows
+from (a GL buffer is only bytes: the same object is a storage buffer here and a buffer texture's store there)."""
 
 from __future__ import annotations
 

@@ -1,6 +1,7 @@
 """The GPU-driven motion pass on WebGPU: a compute pipeline (WGSL) reads the frame's instance buffer and the
-motion rows as storage buffers and writes the moved rows into a buffer the draws then bind as their instance
-vertex buffer (usage STORAGE | VERTEX). Recorded in the frame's command encoder, before the render passes."""
+motion rows as storage buffers and writes the moved rows into a storage buffer that the renderer then binds in group 0
+for the draws (their vertex shaders fetch the rows by instance index). Recorded in the frame's command encoder, before
+the render passes."""
 
 from __future__ import annotations
 
@@ -58,8 +59,7 @@ class WGPUMotionPass:
         if self.moved is None or self.moved.size < instances.size:
             if self.moved is not None:
                 self.moved.destroy()
-            self.moved = self.device.create_buffer(size=instances.size,
-                                                   usage=wgpu.BufferUsage.STORAGE | wgpu.BufferUsage.VERTEX)
+            self.moved = self.device.create_buffer(size=instances.size, usage=wgpu.BufferUsage.STORAGE)
             self.stats["buffers_created"] += 1
             self._group = None
         size = count * INSTANCE_STRIDE  # bound as used, not the buffer's whole (power-of-two) capacity

@@ -4,8 +4,9 @@ uniform, by hand.
 
 A GLSL ``uniform`` outside a block is allowed only for opaque types (samplers and images: they take a texture
 unit or an image unit, not bytes) and for the renderer's per-draw value ``u_first_instance`` (instance.glsl: where
-the draw's rows start; WGSL's instance index includes it); ``var<uniform>`` in WGSL and ``uniform Name { ... }`` blocks in GLSL are written
-by :meth:`BlockLayout.glsl` / :meth:`BlockLayout.wgsl` and reach the shader as a generated ``#include``.
+the draw's rows start; WGSL's instance index includes it). ``var<uniform>`` in WGSL and ``uniform Name { ... }``
+blocks in GLSL are written by :meth:`BlockLayout.glsl` / :meth:`BlockLayout.wgsl` and reach the shader as a
+generated ``#include``.
 """
 
 from __future__ import annotations

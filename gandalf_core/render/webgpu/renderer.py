@@ -378,8 +378,9 @@ class WebGPURenderer(Renderer):
         if self._instance_buffer is not None:
             self._instance_buffer.destroy()
         self._instance_buffer = self.device.create_buffer(
-            # STORAGE too: a GPU pass over the instance rows (FrameData.instance_pass) reads them from it.
-            size=capacity, usage=wgpu.BufferUsage.VERTEX | wgpu.BufferUsage.COPY_DST | wgpu.BufferUsage.STORAGE
+            # A storage buffer: the vertex shaders fetch the rows by instance index (group 0), and a GPU pass over
+            # them (FrameData.instance_pass) reads them too.
+            size=capacity, usage=wgpu.BufferUsage.COPY_DST | wgpu.BufferUsage.STORAGE
         )
 
     def _write_instances(self, rows: np.ndarray, offset: int) -> None:
