@@ -29,10 +29,15 @@ def depth_through_gl_range(adapter: Any) -> bool:
     return adapter.info.get("backend_type") == "OpenGL"
 
 
+#: Optional WebGPU features the renderer uses where the adapter offers them (and explains the lack of where not).
+ENGINE_FEATURES = ("indirect-first-instance",)
+
+
 def request_device(canvas_context: Any = None, needs: Needs = FLOOR) -> tuple[Any, Any]:
     """Return ``(adapter, device)``; with a canvas context the adapter must be able to present to it.
 
-    The device has WebGPU's default limits and no optional feature, plus what ``needs`` states (a
+    The device has WebGPU's default limits and, of the optional features, the engine's own where the adapter offers
+    them (:data:`ENGINE_FEATURES`) plus what ``needs`` states (a
     :class:`~gandalf_core.render.capabilities.CapabilityError` when the adapter lacks it): what runs here then
     runs on every implementation that offers the same."""
     _quiet_runtime_dir()
@@ -46,7 +51,11 @@ def request_device(canvas_context: Any = None, needs: Needs = FLOOR) -> tuple[An
             "no WebGPU adapter found: install a Vulkan driver (on Debian: mesa-vulkan-drivers libvulkan1)"
         )
     check(needs, webgpu_offer(adapter))
-    # GPU timing (gpu_timing.py) only when asked for: a device without it behaves as a browser's would.
-    features = list(dict.fromkeys([*needs.features, *timing_features(adapter.features)]))
+    # GPU timing (gpu_timing.py) only when asked for: a device without it behaves as a browser's would. The engine's
+    # vertex shaders read their instance rows by instance index, so an indirect draw of a batch that does not start
+    # at row 0 needs 'indirect-first-instance' (ENGINE_FEATURES): asked for where offered; where not, such a draw is
+    # refused with an error that says so (WebGPURenderer._draw_batch).
+    engine = [f for f in ENGINE_FEATURES if f in adapter.features]
+    features = list(dict.fromkeys([*needs.features, *engine, *timing_features(adapter.features)]))
     return adapter, adapter.request_device_sync(required_features=features,
                                                 required_limits=needs.device_limits(adapter.limits))

@@ -97,6 +97,8 @@ class WebGPURenderer(Renderer):
         #: Group 0 as bound with and without the shadow map, for the instance buffer the draws read now.
         self._frame_groups: dict[bool, Any] = {}
         self._frame_groups_for: Any = None  # that buffer
+        #: The most bytes of instance rows one storage binding holds on this device.
+        self._max_instance_bytes = int(self.device.limits["max-storage-buffer-binding-size"])
         self._shadow: tuple[Any, Any] | None = None  # the map and its view
         self._sky_materials: dict[str, Any] = {}
         self.textures = TextureLib(self.device, self.stats)
@@ -125,7 +127,7 @@ class WebGPURenderer(Renderer):
 
     def _check_instance_binding(self, count: int) -> None:
         """The vertex shaders read the instance rows as one storage binding: no more than the device binds."""
-        limit = int(self.device.limits["max-storage-buffer-binding-size"])
+        limit = self._max_instance_bytes
         if count * INSTANCE_STRIDE > limit:
             raise ValueError(f"{count} instances need {count * INSTANCE_STRIDE} bytes of instance rows, more than this "
                              f"device binds as one storage buffer (max-storage-buffer-binding-size {limit}); draw "
@@ -145,8 +147,8 @@ class WebGPURenderer(Renderer):
                 {"binding": 1, "resource": {"buffer": self._lights_buffer}},
                 {"binding": 2, "resource": shadow_view},
                 {"binding": 3, "resource": self._shadow_sampler},
-                {"binding": 4, "resource": {"buffer": rows, "offset": 0, "size": min(
-                    rows.size, int(self.device.limits["max-storage-buffer-binding-size"]))}},
+                {"binding": 4, "resource": {"buffer": rows, "offset": 0,
+                                            "size": min(rows.size, self._max_instance_bytes)}},
             ])
         return group
 
