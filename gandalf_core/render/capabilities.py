@@ -1,7 +1,9 @@
 """What a part needs from the GPU beyond the course's floor, stated once and checked when its app starts.
 
 The floor every part fits: OpenGL 3.3 core, and a WebGPU device with the limits every implementation guarantees
-(:data:`WEBGPU_DEFAULT_LIMITS`, the WebGPU specification's defaults) and no optional feature. A part that needs
+(:data:`WEBGPU_DEFAULT_LIMITS`, the WebGPU specification's defaults) and no optional feature a part relies on (the
+device asks for ``indirect-first-instance`` where offered, which only an indirect draw of a batch that does not start
+at the frame's first row uses, and without which that draw is refused with an error that says so). A part that needs
 more says so in its :class:`Needs` (tessellation: OpenGL 4.0; compute shaders, storage buffers and image
 load/store: OpenGL 4.3; a WebGPU feature such as ``float32-filterable``; a limit above its default). The renderer
 compares the needs with what the context or adapter offers (:class:`Offer`) before building anything, and a gap

@@ -15,6 +15,7 @@ from gandalf_core import Application
 from gandalf_core.app.cli import CAPABILITY_EXIT, Part, launcher
 from gandalf_core.render.capabilities import WEBGPU_DEFAULT_LIMITS, CapabilityError, Needs, Offer
 from gandalf_core.render.probe import offer_here
+from gandalf_core.render.webgpu.device import ENGINE_FEATURES
 from gandalf_tools.tour import REPO_ROOT
 from step01_window.scene import build_scene
 
@@ -31,7 +32,10 @@ def test_a_webgpu_device_gets_the_default_limits_not_all_the_adapter_has():
                 continue
             expected = max(default, have) if name.startswith("min-") else min(default, have)
             assert device.limits[name] == expected, (name, device.limits[name], expected, have)
-        assert not set(device.features), f"a device with optional features nobody asked for: {device.features}"
+        # The engine's own (ENGINE_FEATURES, where offered) and nothing else.
+        unasked = set(device.features) - set(ENGINE_FEATURES)
+        assert not unasked, f"a device with optional features nobody asked for: {unasked}"
+        assert set(device.features) == set(ENGINE_FEATURES) & set(adapter.features)
 
 
 def test_a_part_that_needs_a_higher_limit_gets_it():
