@@ -88,8 +88,8 @@ class OpenGLRenderer(Renderer):
         self._shadow: tuple[moderngl.Texture, moderngl.Framebuffer] | None = None
         self._instance_buffer: moderngl.Buffer | None = None
         self._drawn_instances: moderngl.Buffer | None = None  # the instance rows the draws read (moved or not)
+        self.make_current()  # the buffer texture is made through raw GL calls, in this renderer's context
         #: The texture through which the vertex shaders fetch the drawn instance rows (instance.glsl).
-        self.make_current()
         self._instance_rows = raw_gl.BufferTexture()
         self._max_instance_texels = raw_gl.get_integer(raw_gl.GL_MAX_TEXTURE_BUFFER_SIZE)
         self._vaos: dict[tuple[str, str], moderngl.VertexArray] = {}

@@ -28,7 +28,6 @@ from .libs import BufferLib, MaterialLib, MeshLib, ShaderLib, TextureLib, WGPUMa
 from .validation import attribute_of, first_cause, missing_input
 
 COLOR_FORMAT = "rgba8unorm-srgb"
-#: The three rows of each instance's model matrix, at the engine's instance locations.
 DEPTH_FORMAT = "depth32float"
 _BLEND = {
     "alpha": {"color": {"src_factor": "src-alpha", "dst_factor": "one-minus-src-alpha", "operation": "add"},
