@@ -263,9 +263,11 @@ class ShaderLib(RebuildableShaders, ResourceLib[GLShader]):
         samplers = list(dict.fromkeys(name for name in declared if name not in ENGINE_SAMPLERS))
         units = {**{sampler: unit for unit, sampler in enumerate(samplers)}, **ENGINE_SAMPLERS}
         for sampler, unit in units.items():
-            if sampler == "u_instance_rows" and sampler in uniforms:  # a samplerBuffer: moderngl does not set it
+            if sampler not in uniforms:
+                continue
+            if program[sampler].gl_type in raw_gl.GL_BUFFER_SAMPLER_TYPES:  # moderngl ignores their value
                 raw_gl.set_sampler_unit(program.glo, program[sampler].location, unit)
-            elif sampler in uniforms:
+            else:
                 program[sampler].value = unit
         storage_blocks = list(dict.fromkeys(b for src in stages.values() for b in _declared_storage_blocks(src.text)))
         kinds = dict(kind for src in stages.values() for kind in _declared_sampler_kinds(src.text))

@@ -33,6 +33,8 @@ GL_TEXTURE0 = 0x84C0
 GL_MAX_TEXTURE_BUFFER_SIZE = 0x8C2B
 GL_TEXTURE_BUFFER = 0x8C2A
 GL_RGBA32F = 0x8814
+#: The sampler types of buffer textures (float, int, uint): moderngl does not set their uniform's unit.
+GL_BUFFER_SAMPLER_TYPES = frozenset({0x8DC2, 0x8DD0, 0x8DD8})
 
 
 @functools.cache
@@ -168,14 +170,12 @@ class BufferTexture:
         self.glo = name.value
         # Bound once now, so that the name is a buffer texture from the start.
         gl_function("glBindTexture", (ctypes.c_uint, ctypes.c_uint))(GL_TEXTURE_BUFFER, self.glo)
-        self.buffer_glo: int | None = None  # the buffer whose store the texture reads (RGBA32F texels)
 
     def attach(self, buffer_glo: int) -> None:
-        """Read ``buffer_glo``'s data store from now on (it stays attached when the store is orphaned)."""
+        """Read ``buffer_glo``'s data store (RGBA32F texels) from now on."""
         gl_function("glBindTexture", (ctypes.c_uint, ctypes.c_uint))(GL_TEXTURE_BUFFER, self.glo)
         gl_function("glTexBuffer", (ctypes.c_uint, ctypes.c_uint, ctypes.c_uint))(GL_TEXTURE_BUFFER, GL_RGBA32F,
                                                                                  buffer_glo)
-        self.buffer_glo = buffer_glo
 
     def use(self, unit: int) -> None:
         """Bind the texture to texture unit ``unit`` (the unit the shaders' sampler reads)."""
