@@ -134,3 +134,69 @@ def gpu_ms_per_pass(app: Any, frames: int) -> dict[str, float]:
         if capture.frame_gpu_ms:
             times.setdefault("frame", []).append(capture.frame_gpu_ms[-1])
     return {name: round(statistics.median(values), 3) for name, values in times.items()}
+
+
+# ------------------------------------------------------------------------------------------------
+# Frame pacing: two frames in flight
+# ------------------------------------------------------------------------------------------------
+class GLFramesInFlight:
+    """Wait as a swap chain of two images does: each call copies one pixel of the frame just drawn into a read-back
+    buffer of its own (a pixel-pack buffer, asynchronous), sends the frame to the GPU (glFlush) and then waits for
+    the previous frame's pixel. The GPU draws frame N while the CPU builds frame N+1, and the CPU is never more than
+    one frame ahead. ``drain()`` waits for the last frame. ``pixel`` is the last pixel read (RGBA bytes; None before
+    the second call)."""
+
+    def __init__(self, ctx: Any, framebuffer: Any, x: int, y: int) -> None:
+        from gandalf_core.render.opengl.raw_gl import gl_function
+
+        self._framebuffer, self._viewport = framebuffer, (int(x), int(y), 1, 1)
+        self._buffers = [ctx.buffer(reserve=4), ctx.buffer(reserve=4)]
+        self._flush = gl_function("glFlush", ())
+        self._count = 0
+        self.pixel: bytes | None = None
+
+    def __call__(self) -> None:
+        self._framebuffer.read_into(self._buffers[self._count % 2], viewport=self._viewport, components=4)
+        self._flush()
+        if self._count:
+            self.pixel = self._buffers[(self._count - 1) % 2].read()
+        self._count += 1
+
+    def drain(self) -> None:
+        if self._count:
+            self.pixel = self._buffers[(self._count - 1) % 2].read()
+
+
+class WgpuFramesInFlight:
+    """:class:`GLFramesInFlight` in WebGPU: each call copies one pixel of ``texture()`` (the frame just drawn) into a
+    mappable buffer of its own, then waits until the previous frame's buffer is mapped (its copy, and so its frame,
+    has finished) and maps this frame's buffer asynchronously."""
+
+    def __init__(self, device: Any, texture: Any, x: int, y: int) -> None:
+        import wgpu
+
+        self._device, self._texture, self._origin = device, texture, (int(x), int(y), 0)
+        usage = wgpu.BufferUsage.MAP_READ | wgpu.BufferUsage.COPY_DST
+        self._buffers = [device.create_buffer(size=256, usage=usage) for _ in range(2)]
+        self._pending: Any = None
+        self._count = 0
+        self.pixel: bytes | None = None
+
+    def __call__(self) -> None:
+        buffer = self._buffers[self._count % 2]
+        encoder = self._device.create_command_encoder()
+        encoder.copy_texture_to_buffer({"texture": self._texture(), "origin": self._origin},
+                                       {"buffer": buffer, "offset": 0, "bytes_per_row": 256, "rows_per_image": 1},
+                                       (1, 1, 1))
+        self._device.queue.submit([encoder.finish()])
+        self.drain()
+        self._pending = (buffer, buffer.map_async("READ"))
+        self._count += 1
+
+    def drain(self) -> None:
+        if self._pending is not None:
+            buffer, promise = self._pending
+            promise.sync_wait()
+            self.pixel = bytes(buffer.read_mapped(0, 4))
+            buffer.unmap()
+            self._pending = None

@@ -37,6 +37,10 @@ Every measured frame ends with a read-back (``--sync``) so the GPU has finished 
 
 * ``pixel`` (default): one pixel of the colour target;
 * ``full``: the whole frame through ``app.capture()`` (adds a full-frame copy and row flip);
+* ``inflight``: two frames in flight, as a swap chain of two images allows: each frame copies a pixel into a
+  read-back buffer of its own and waits for the *previous* frame's pixel, so the GPU draws frame N while the CPU
+  builds frame N+1 (``bench_common.GLFramesInFlight`` / ``WgpuFramesInFlight``; ``raw_ceiling.py`` has the same
+  mode, ``SYNC=inflight``);
 * ``none``: no wait (measures CPU submission only; the GPU may still be queueing work).
 
 Run by hand, never in CI::
@@ -74,7 +78,7 @@ SCENES: dict[str, tuple[int, bool]] = {
 }
 MODELS = ("cube", "sphere")
 ROTATE_MODES = ("batch", "entity", "angle", "gpu")
-SYNC_MODES = ("pixel", "full", "none")
+SYNC_MODES = ("pixel", "full", "inflight", "none")
 
 
 # ------------------------------------------------------------------------------------------------
@@ -198,6 +202,10 @@ def make_sync(app: Any, mode: str) -> tuple[Any, str]:
         return app.capture, "full"
     r = app.renderer
     x, y = r.width // 2, r.height // 2
+    if mode == "inflight":
+        if app.backend == "opengl":
+            return bench_common.GLFramesInFlight(r.ctx, r.framebuffer, x, r.height - 1 - y), "inflight"
+        return bench_common.WgpuFramesInFlight(r.device, lambda: r.frame_texture, x, y), "inflight"
     return (lambda: r.read_pixel(x, y)), "pixel"
 
 
@@ -299,6 +307,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
         times.append(c - a)
         if c > deadline:
             break
+    getattr(sync, "drain", lambda: None)()  # two frames in flight: the last frame has finished too
     wall = time.perf_counter() - t0
     if profiler is not None:
         import pstats

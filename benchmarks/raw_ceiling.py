@@ -2,14 +2,22 @@
 moderngl or wgpu directly (vectorised numpy model matrices uploaded every frame, ONE instanced draw,
 a 1-pixel readback per frame so the GPU really finishes). The framework is measured against this.
 usage: python raw_ceiling.py [opengl|webgpu|both] [W H] [frames]
-(The same program as the shared bench/raw_ceiling.py, only reformatted.)"""
+(The same program as the shared bench/raw_ceiling.py, only reformatted.)
+
+``SYNC=inflight`` waits as ``bench_scenes.py --sync inflight`` does: each frame waits for the previous frame's
+pixel, not its own (two frames in flight, as a swap chain of two images allows)."""
 
 import json
 import os
 import sys
 import time
 
+import bench_common
 import numpy as np
+
+SYNC = os.environ.get("SYNC", "pixel")
+if SYNC not in ("pixel", "inflight"):
+    sys.exit(f"SYNC must be pixel or inflight, not {SYNC!r}")
 
 
 def cube():
@@ -103,6 +111,7 @@ void main(){ float d = max(dot(normalize(vn), normalize(vec3(0.3,0.5,1.0))), 0.0
   f = vec4(vec3(0.2) + d*vec3(0.8,0.6,0.3), 1.0); }""",
     )
     prog["vp"].write(np.ascontiguousarray(view_proj(W, H, n, False).T, dtype="f4").tobytes())
+    pacer = bench_common.GLFramesInFlight(ctx, fbo, W // 2, H // 2) if SYNC == "inflight" else None
     models = Models(n)
     vbo = ctx.buffer(cube().tobytes())
     ibo = ctx.buffer(reserve=n * 64, dynamic=True)
@@ -112,9 +121,13 @@ void main(){ float d = max(dot(normalize(vn), normalize(vec3(0.3,0.5,1.0))), 0.0
         ibo.write(models.at(i * 0.01).tobytes())
         fbo.clear(0.05, 0.05, 0.1, 1.0, depth=1.0)
         vao.render(instances=n)
-        fbo.read(viewport=(W // 2, H // 2, 1, 1), components=4)
+        if pacer is None:
+            fbo.read(viewport=(W // 2, H // 2, 1, 1), components=4)
+        else:
+            pacer()
 
     info = ctx.info["GL_RENDERER"]
+    frame.drain = getattr(pacer, "drain", lambda: None)
     return frame, info, lambda: np.frombuffer(fbo.read(components=4), np.uint8).reshape(H, W, 4)[::-1]
 
 
@@ -168,6 +181,7 @@ struct VOut { @builtin(position) pos: vec4<f32>, @location(0) n: vec3<f32> };
     color = device.create_texture(size=(W, H, 1), format="rgba8unorm", usage="RENDER_ATTACHMENT|COPY_SRC")
     depth = device.create_texture(size=(W, H, 1), format="depth24plus", usage="RENDER_ATTACHMENT")
     cv, dv = color.create_view(), depth.create_view()
+    pacer = bench_common.WgpuFramesInFlight(device, lambda: color, W // 2, H // 2) if SYNC == "inflight" else None
 
     def frame(i):
         device.queue.write_buffer(sbo, 0, models.at(i * 0.01))
@@ -189,9 +203,14 @@ struct VOut { @builtin(position) pos: vec4<f32>, @location(0) n: vec3<f32> };
         rp.draw(36, n)
         rp.end()
         device.queue.submit([enc.finish()])
-        device.queue.read_texture({"texture": color, "origin": (W // 2, H // 2, 0)}, {"bytes_per_row": 256}, (1, 1, 1))
+        if pacer is None:
+            device.queue.read_texture({"texture": color, "origin": (W // 2, H // 2, 0)}, {"bytes_per_row": 256},
+                                      (1, 1, 1))
+        else:
+            pacer()
 
     info = adapter.summary
+    frame.drain = getattr(pacer, "drain", lambda: None)
     return (
         frame,
         info,
@@ -218,6 +237,7 @@ def main():
                 a = time.perf_counter()
                 frame(i)
                 ts.append(time.perf_counter() - a)
+            frame.drain()
             wall = time.perf_counter() - t0
             ts = np.array(ts) * 1e3
             print(
@@ -226,6 +246,7 @@ def main():
                         "backend": backend,
                         "n": n,
                         "size": [W, H],
+                        "sync": SYNC,
                         "fps": round(frames / wall, 1),
                         "p50_ms": round(float(np.median(ts)), 3),
                         "p95_ms": round(float(np.percentile(ts, 95)), 3),

@@ -455,6 +455,12 @@ class WebGPURenderer(Renderer):
         return pipeline
 
     # --- read-back, resize, release -------------------------------------------------------------------
+    @property
+    def frame_texture(self) -> Any:
+        """The texture the current (or last) frame is drawn into: the window's surface texture while one is
+        pending, else the offscreen target (the WebGPU twin of the OpenGL renderer's ``framebuffer``)."""
+        return self._frame_texture()[0]
+
     def _frame_texture(self) -> tuple[Any, bool]:
         """The texture holding the last frame, and whether its bytes are in BGRA order."""
         if self._pending_surface is not None:
