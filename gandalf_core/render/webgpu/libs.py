@@ -80,8 +80,10 @@ class TextureLib(ResourceLib[WGPUTexture]):
             usage |= wgpu.TextureUsage.RENDER_ATTACHMENT | wgpu.TextureUsage.COPY_SRC
             texture = self.device.create_texture(size=(data.size, data.size, 6), mip_level_count=data.mip_levels,
                                                  format=fmt, usage=usage, label=name)
-            for face, pixels in enumerate(data.faces):
+            for face in range(6):
+                pixels = data.faces[face]  # decoded now when loaded from files; let go before the next (as in GL)
                 self._write(texture, 0, face, pixels)
+                del pixels
             self._downsample(texture, fmt, data.size, data.mip_levels)
         else:
             chain = data.mip_chain() if data.mipmaps else [data.pixels]
