@@ -215,7 +215,9 @@ def _decode_image_rgba8(path: str | Path, label: str) -> np.ndarray:
     try:
         with Image.open(p) as img:
             img.load()
-            img = ImageOps.exif_transpose(img)  # photos store their rotation in EXIF; textures want pixels
+            # Photos store their rotation in EXIF; textures want pixels. In place: no copy of an image that needs
+            # no turn (a 2048² face is 16 MiB; each copy while decoding adds to a sky's peak memory).
+            ImageOps.exif_transpose(img, in_place=True)
             mode = img.mode
             if mode == "F":
                 # 32-bit float images have no agreed range (0..1? 0..255? HDR?): converting silently would
@@ -233,14 +235,27 @@ def _decode_image_rgba8(path: str | Path, label: str) -> np.ndarray:
                 grey8 = ((grey * 255 + 32767) // 65535).astype(np.uint8)
                 return _to_rgba8(label, grey8)
             try:
-                rgba = img.convert("RGBA")
+                rgba = img if mode == "RGBA" else img.convert("RGBA")
             except ValueError as exc:
                 raise ResourceError(label, "mode", f"{str(p)!r}: cannot convert mode {mode!r} to RGBA: {exc}") from exc
-            return np.array(rgba, dtype=np.uint8, order="C")
+            return _image_array(rgba)
     except ResourceError:
         raise
     except (OSError, ValueError, SyntaxError, Image.DecompressionBombError) as exc:
         raise ResourceError(label, "path", f"cannot read image {str(p)!r}: {exc}") from exc
+
+
+def _image_array(image: Any) -> np.ndarray:
+    """An RGBA Pillow image's pixels as a fresh (H, W, 4) uint8 array, copied in strips of about 1 MiB. Pillow's
+    ``tobytes()`` (and so ``np.array(image)``) holds its encoded chunks and their join at once: twice the image on
+    top of it while decoding, 32 MiB more for one 2048² face of a sky."""
+    width, height = image.size
+    pixels = np.empty((height, width, 4), dtype=np.uint8)
+    rows = max(1, (1 << 20) // max(1, 4 * width))
+    for top in range(0, height, rows):
+        bottom = min(height, top + rows)
+        pixels[top:bottom] = np.asarray(image.crop((0, top, width, bottom)))
+    return pixels
 
 
 def _write_png(pixels: np.ndarray, path: str | Path, label: str) -> None:

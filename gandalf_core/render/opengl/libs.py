@@ -21,6 +21,7 @@ import numpy as np
 from ...resources import CubeTextureData, MaterialData, MeshData, ResourceError, ShaderSource, TextureData
 from ...resources.blocks import BLOCK_BINDINGS, MaterialDeclaration
 from ...resources.layout import BlockLayout, LayoutError
+from ...resources.memory import give_back_freed_memory
 from ..builtin_materials import prepare as prepare_builtin
 from ..entry_points import check_glsl_main
 from ..errors import ShaderCompileError
@@ -84,14 +85,18 @@ class TextureLib(_InContext, ResourceLib[Any]):
             # Each face goes straight from its own array (no stacked copy, no bytes copy) and the mip levels are
             # made on the GPU (glGenerateMipmap; sRGB levels are averaged in linear light by the driver): a sky of
             # six 2048² faces costs no CPU memory beyond the faces themselves.
-            tex = self.ctx.texture_cube((data.size, data.size), 4, None, internal_format=fmt)
+            if data.mipmaps and raw_gl.has_texture_storage(self.ctx.version_code, self.ctx.extensions):
+                tex = raw_gl.CubeTexture(data.size, data.mip_levels, fmt)  # every level allocated once
+            else:
+                tex = self.ctx.texture_cube((data.size, data.size), 4, None, internal_format=fmt)
             for face in range(6):
                 pixels = data.faces[face]  # a sky loaded from files is decoded now
                 tex.write(face, pixels)
-                # Let go before the next face is decoded and the levels are made: a face still held sits on top of
-                # the heap and keeps the freed faces below it from going back to the system (a 2048² sky's peak:
-                # 472 MiB held to the end of the loop, 376 MiB let go; benchmarks page).
+                # Let go, and given back, before the next face is decoded and the levels are made: a face still
+                # held sits on top of the heap and keeps the freed faces below it with the process (benchmarks
+                # page, "Peak memory with a 2048² sky").
                 del pixels
+                give_back_freed_memory()
             if data.mipmaps:
                 tex.build_mipmaps(0, data.mip_levels - 1)
             return self._finish(tex, data, data.mipmaps)

@@ -27,6 +27,7 @@ from ...resources.blocks import WGSL_BINDINGS, MaterialDeclaration
 from ...resources.errors import ResourceError
 from ...resources.layout import BlockLayout, LayoutError
 from ...resources.material_data import MaterialData
+from ...resources.memory import give_back_freed_memory
 from ...resources.mesh_data import ATTRIBUTE_LOCATIONS, MeshData
 from ...resources.shader_source import ShaderSource
 from ...resources.texture_data import CubeTextureData, TextureData
@@ -84,6 +85,7 @@ class TextureLib(ResourceLib[WGPUTexture]):
                 pixels = data.faces[face]  # decoded now when loaded from files; let go before the next (as in GL)
                 self._write(texture, 0, face, pixels)
                 del pixels
+                give_back_freed_memory()
             self._downsample(texture, fmt, data.size, data.mip_levels)
         else:
             chain = data.mip_chain() if data.mipmaps else [data.pixels]
