@@ -1,6 +1,6 @@
 """The few OpenGL calls moderngl does not wrap, made through ctypes: clip control and a float depth buffer for
-real reverse-Z, a colour-only blit to the window, and the buffer texture through which shaders read the instance
-rows (:class:`BufferTexture`).
+real reverse-Z, a colour-only blit to the window, the buffer texture through which shaders read the instance
+rows (:class:`BufferTexture`), and cube maps whose mip levels are allocated at once (:class:`CubeTexture`).
 
 Clip control (OpenGL 4.5) sets clip-space depth to [0, 1] as in WebGPU.
 With OpenGL's default [-1, 1] clip depth, reverse-Z gains nothing: the mapping to the depth buffer adds 1 and
