@@ -164,6 +164,7 @@ def test_opengl_cube_texture_refuses_a_face_of_another_shape() -> None:
     renderer = OpenGLRenderer(16, 16)
     try:
         texture = raw_gl.CubeTexture(8, 4, 0x8C43)
+        assert texture.filter == (raw_gl.GL_LINEAR, raw_gl.GL_LINEAR)
         with pytest.raises(ValueError, match="8x8x4 uint8"):
             texture.write(0, np.zeros((4, 8, 4), np.uint8))
         with pytest.raises(ValueError, match="8x8x4 uint8"):

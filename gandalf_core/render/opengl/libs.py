@@ -94,7 +94,7 @@ class TextureLib(_InContext, ResourceLib[Any]):
                 tex.write(face, pixels)
                 # Let go, and given back, before the next face is decoded and the levels are made: a face still
                 # held sits on top of the heap and keeps the freed faces below it with the process (benchmarks
-                # page, "Peak memory with a 2048² sky").
+                # page, "Again on 7 December: the sky's peak memory").
                 del pixels
                 give_back_freed_memory()
             if data.mipmaps:

@@ -118,6 +118,7 @@ GL_TEXTURE_CUBE_MAP = 0x8513
 GL_TEXTURE_CUBE_MAP_POSITIVE_X = 0x8515
 GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL = 0x813C, 0x813D
 GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER = 0x2801, 0x2800
+GL_LINEAR = 0x2601
 GL_UNPACK_ALIGNMENT, GL_PACK_ALIGNMENT = 0x0CF5, 0x0D05
 GL_RGBA = 0x1908
 GL_UNSIGNED_BYTE = 0x1401
@@ -145,6 +146,7 @@ class CubeTexture:
         self.use(0)
         gl_function("glTexStorage2D", (ctypes.c_uint, ctypes.c_int, ctypes.c_uint, ctypes.c_int, ctypes.c_int))(
             GL_TEXTURE_CUBE_MAP, levels, internal_format, size, size)
+        self.filter = (GL_LINEAR, GL_LINEAR)  # as moderngl's textures start
 
     def _parameter(self, name: int, value: int) -> None:
         self.use(0)
