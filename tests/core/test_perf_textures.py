@@ -27,6 +27,10 @@ def test_webgpu_cube_mips_are_made_on_the_gpu(srgb: bool) -> None:
 
     renderer = WebGPURenderer(16, 16)
     try:
+        if renderer.device.adapter.info.get("backend_type") == "OpenGL":
+            # There the engine makes cube mips on the CPU (TextureLib._cube_mips_on_gpu), and wgpu's OpenGL backend
+            # cannot copy a cube texture to a buffer to read them back ("not implemented yet" in wgpu-native 29).
+            pytest.skip("wgpu's OpenGL backend: cube mips are made on the CPU and cube textures cannot be read back")
         data = _noise_cube(32, srgb)
         texture = renderer.textures.build(data.name, data).texture
         assert texture.mip_level_count == data.mip_levels == 6
