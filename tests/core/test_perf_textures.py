@@ -1,5 +1,5 @@
 """Cube maps without extra CPU copies: mip levels made on the GPU (OpenGL glGenerateMipmap, WebGPU render passes),
-float32 CPU mip chains, image files adopted without a copy.
+float32 CPU mip chains, image files adopted without a copy and decoded with few (their EXIF turn, strip by strip).
 
 Tolerances: a GPU-made level differs from the CPU's float box filter (``CubeTextureData.mip_chain``) by at most
 1/255 at level 1 (0.6/255 on average) and 4/255 at deeper levels (3/255 on average) of a 32² noise cube: the GPU
@@ -177,3 +177,33 @@ def test_opengl_cube_texture_refuses_a_face_of_another_shape() -> None:
         assert renderer.ctx.error == "GL_NO_ERROR"
     finally:
         renderer.release()
+
+
+@pytest.mark.parametrize("mode", ["RGBA", "RGB", "LA"])
+def test_image_files_are_turned_by_their_exif_orientation(tmp_path, mode: str) -> None:
+    # The decode turns a photo by its EXIF orientation in place and copies the pixels out in strips: the texture must
+    # hold what Pillow's own exif_transpose + convert give, for an image that needs a turn and one that does not.
+    from PIL import Image, ImageOps
+
+    rng = np.random.default_rng(3)
+    image = Image.fromarray(rng.integers(0, 256, (5, 3, 4), dtype=np.uint8), "RGBA").convert(mode)
+    for orientation in (1, 6, 3):
+        exif = Image.Exif()
+        exif[0x0112] = orientation
+        path = tmp_path / f"o{orientation}{mode}.png"
+        image.save(path, exif=exif)
+        with Image.open(path) as reference:
+            expected = np.asarray(ImageOps.exif_transpose(reference).convert("RGBA"))
+        got = TextureData.from_file(path).pixels
+        assert got.shape == expected.shape and np.array_equal(got, expected), (mode, orientation)
+        assert got.shape[:2] == ((3, 5) if orientation == 6 else (5, 3))
+
+
+def test_a_large_image_is_copied_whole_strip_by_strip(tmp_path) -> None:
+    # 1024 x 600: three strips of 256 rows (1 MiB each) and a short one; every row must land where it belongs.
+    from PIL import Image
+
+    rng = np.random.default_rng(4)
+    pixels = rng.integers(0, 256, (600, 1024, 4), dtype=np.uint8)
+    Image.fromarray(pixels, "RGBA").save(tmp_path / "big.png", compress_level=1)
+    assert np.array_equal(TextureData.from_file(tmp_path / "big.png").pixels, pixels)
