@@ -1,5 +1,6 @@
 """Cube maps without extra CPU copies: mip levels made on the GPU (OpenGL glGenerateMipmap, WebGPU render passes),
-float32 CPU mip chains, image files decoded with few copies (the EXIF turn in place, strips) and adopted without another.
+float32 CPU mip chains, image files decoded with few copies (the EXIF turn in place, strips) and adopted without
+another.
 
 Tolerances: a GPU-made level differs from the CPU's float box filter (``CubeTextureData.mip_chain``) by at most
 1/255 at level 1 (0.6/255 on average) and 4/255 at deeper levels (3/255 on average) of a 32² noise cube: the GPU
