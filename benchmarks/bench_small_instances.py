@@ -24,6 +24,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import moderngl  # noqa: E402
 import raw_ceiling as rc  # noqa: E402
+from bench_instance_rows import indexed_cube, instance_rows  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from gandalf_core.render.opengl import raw_gl  # noqa: E402
@@ -35,26 +36,8 @@ W, H = [int(v) for v in os.environ.get("SIZE4", "1280x720").split("x")]
 REPS = int(os.environ.get("REPS4", "30"))
 
 cube36 = rc.cube()
-verts, idx = [], []
-for f in range(6):
-    quad = cube36[f * 6:(f + 1) * 6]
-    base = len(verts)
-    verts += [quad[0], quad[1], quad[2], quad[5]]
-    idx += [base, base + 1, base + 2, base, base + 2, base + 3]
-verts = np.array(verts, "f4")
-idx = np.array(idx, "i4")
+verts, idx = indexed_cube()  # the 24-vertex cube and the rows of bench_instance_rows.py: the same cubes and grid
 V = len(verts)
-
-
-def rows(n):
-    pos = rc.grid(n)
-    a = np.arange(n) * 0.1
-    c, s = np.cos(a), np.sin(a)
-    r = np.zeros((n, 3, 4), "f4")
-    r[:, 0, 0], r[:, 0, 2], r[:, 0, 3] = c, s, pos[:, 0]
-    r[:, 1, 1], r[:, 1, 3] = 1, pos[:, 1]
-    r[:, 2, 0], r[:, 2, 2], r[:, 2, 3] = -s, c, pos[:, 2]
-    return r
 
 
 FS = """#version 430 core
@@ -96,7 +79,7 @@ _keep = []
 
 def rowtex(n):
     """The rows in a buffer texture at unit 3, as the engine binds them (``raw_gl.BufferTexture``)."""
-    buf = ctx.buffer(rows(n).tobytes())
+    buf = ctx.buffer(instance_rows(n).tobytes())
     texture = raw_gl.BufferTexture()
     texture.attach(buf.glo)
     texture.use(3)
@@ -214,7 +197,7 @@ def wrun(label, n, k, reps=30):
     ud = np.ascontiguousarray(rc.view_proj(W, H, n, True).T, dtype="f4").tobytes() + np.array(
         [k, V, n, 0], "u4").tobytes()
     ub = dev.create_buffer_with_data(data=ud, usage=wgpu.BufferUsage.UNIFORM)
-    sb = dev.create_buffer_with_data(data=rows(n).tobytes(), usage=wgpu.BufferUsage.STORAGE)
+    sb = dev.create_buffer_with_data(data=instance_rows(n).tobytes(), usage=wgpu.BufferUsage.STORAGE)
     bg = dev.create_bind_group(layout=pipe.get_bind_group_layout(0), entries=[
         {"binding": 0, "resource": {"buffer": ub}}, {"binding": 1, "resource": {"buffer": sb}}])
     vbd = np.concatenate([verts] * k)
