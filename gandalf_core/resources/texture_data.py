@@ -13,7 +13,7 @@ Pillow is imported only when a file is read or written.
 from __future__ import annotations
 
 import weakref
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 
 from gandalf_core.resources.errors import ResourceError
+from gandalf_core.resources.memory import give_back_freed_memory
 
 WRAP_MODES = ("repeat", "clamp")
 FILTER_MODES = ("linear", "nearest")
@@ -541,6 +542,17 @@ class CubeTextureData:
             # Absolute: a later read must not depend on the working folder of that moment.
             return cls(FaceFiles([Path(p).absolute() for p in paths], label, size), **settings)
         return cls(tuple(_read_image_rgba8(p, label) for p in paths), **settings)
+
+    def write_faces(self, write: Callable[[int, np.ndarray], None]) -> None:
+        """Hand each face in turn to ``write(index, pixels)`` (0-5: +X, -X, +Y, -Y, +Z, -Z), holding one at a time:
+        a face read from a file is decoded just before its write and let go, its memory given back to the system,
+        before the next is read. A face still held would sit on top of the C heap and keep the freed faces below it
+        with the process (benchmarks page, "Again on 7 December: the sky's peak memory")."""
+        for index in range(len(self.faces)):
+            pixels = self.faces[index]
+            write(index, pixels)
+            del pixels
+            give_back_freed_memory()
 
     @property
     def size(self) -> int:

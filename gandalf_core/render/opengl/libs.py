@@ -21,7 +21,6 @@ import numpy as np
 from ...resources import CubeTextureData, MaterialData, MeshData, ResourceError, ShaderSource, TextureData
 from ...resources.blocks import BLOCK_BINDINGS, MaterialDeclaration
 from ...resources.layout import BlockLayout, LayoutError
-from ...resources.memory import give_back_freed_memory
 from ..builtin_materials import prepare as prepare_builtin
 from ..entry_points import check_glsl_main
 from ..errors import ShaderCompileError
@@ -89,14 +88,7 @@ class TextureLib(_InContext, ResourceLib[Any]):
                 tex = raw_gl.CubeTexture(data.size, data.mip_levels, fmt)  # every level allocated once
             else:
                 tex = self.ctx.texture_cube((data.size, data.size), 4, None, internal_format=fmt)
-            for face in range(6):
-                pixels = data.faces[face]  # a sky loaded from files is decoded now
-                tex.write(face, pixels)
-                # Let go, and given back, before the next face is decoded and the levels are made: a face still
-                # held sits on top of the heap and keeps the freed faces below it with the process (benchmarks
-                # page, "Again on 7 December: the sky's peak memory").
-                del pixels
-                give_back_freed_memory()
+            data.write_faces(tex.write)  # one face held at a time (a sky from files is decoded face by face)
             if data.mipmaps:
                 tex.build_mipmaps(0, data.mip_levels - 1)
             return self._finish(tex, data, data.mipmaps)

@@ -27,7 +27,6 @@ from ...resources.blocks import WGSL_BINDINGS, MaterialDeclaration
 from ...resources.errors import ResourceError
 from ...resources.layout import BlockLayout, LayoutError
 from ...resources.material_data import MaterialData
-from ...resources.memory import give_back_freed_memory
 from ...resources.mesh_data import ATTRIBUTE_LOCATIONS, MeshData
 from ...resources.shader_source import ShaderSource
 from ...resources.texture_data import CubeTextureData, TextureData
@@ -81,14 +80,13 @@ class TextureLib(ResourceLib[WGPUTexture]):
             usage |= wgpu.TextureUsage.RENDER_ATTACHMENT | wgpu.TextureUsage.COPY_SRC
             texture = self.device.create_texture(size=(data.size, data.size, 6), mip_level_count=data.mip_levels,
                                                  format=fmt, usage=usage, label=name)
-            for face in range(6):
-                pixels = data.faces[face]  # decoded now when loaded from files; let go before the next (as in GL)
+            def write_face(face: int, pixels: np.ndarray) -> None:
                 self._write(texture, 0, face, pixels)
                 # The write's staging copy goes to the GPU now, not with the six others at the next submission:
                 # one face's staging held at a time (bench_skybox.py on lavapipe: 370 -> 308 MiB at the peak).
                 self.device.queue.submit([])
-                del pixels
-                give_back_freed_memory()
+
+            data.write_faces(write_face)  # one face held at a time (a sky from files is decoded face by face)
             self._downsample(texture, fmt, data.size, data.mip_levels)
         else:
             chain = data.mip_chain() if data.mipmaps else [data.pixels]
