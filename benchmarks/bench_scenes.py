@@ -254,6 +254,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
     """Build the scene, warm up, measure; return the result record."""
     from gandalf_core import Application, TransformSystem
     from gandalf_core.render import RenderSystem
+    from gandalf_core.render.gpu_memory import in_mib
 
     n, rotating = SCENES[cfg["scene"]]
     width, height = cfg["size"]
@@ -357,6 +358,8 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
         },
         "renderer": renderer_name(app),
     }
+    # The buffers and textures the renderer holds (as asked of the API: gandalf_core/render/gpu_memory.py), in MiB.
+    record["gpu_memory_mib"] = in_mib(app.renderer.gpu_memory())
     if cfg.get("gpu_passes"):
         # After the measured frames, so the timer's queries cost the fps figures nothing.
         record["gpu_ms_per_pass"] = bench_common.gpu_ms_per_pass(app, cfg["gpu_passes"])
@@ -451,6 +454,9 @@ def main(argv: list[str] | None = None) -> int:
               f"frame p50 {record['frame_ms']['p50']:.3f} ms  CPU ms: update {cpu['update']:.3f} "
               f"transform {cpu['transform']:.3f} render {cpu['render']:.3f} (gather {cpu['gather']:.3f}) "
               f"sync {cpu['sync']:.3f}", file=sys.stderr, flush=True)
+        held = record["gpu_memory_mib"]
+        print(f"#   GPU memory {held['total']:.1f} MiB: " + ", ".join(
+            f"{k} {v:.1f}" for k, v in held.items() if k != "total" and v), file=sys.stderr, flush=True)
         if "gpu_ms_per_pass" in record:
             print("#   GPU ms: " + ", ".join(f"{k} {v:.3f}" for k, v in record["gpu_ms_per_pass"].items()),
                   file=sys.stderr, flush=True)

@@ -240,6 +240,29 @@ class Renderer(ABC):
         """Write ``rows`` into the instance buffer at byte ``offset``."""
         raise NotImplementedError
 
+    def gpu_memory(self) -> dict[str, int]:
+        """Bytes of GPU memory this renderer holds, by kind, and their ``"total"``: what was asked of the API for its
+        buffers and textures (:mod:`.gpu_memory`), the same way in both backends.
+
+        Kinds: ``textures``, ``meshes`` (vertex and index buffers), ``storage buffers``, ``material blocks``,
+        ``frame targets`` (colour and depth), ``shadow map``, ``instances`` (the instance buffer's capacity),
+        ``frame uniforms`` (frame and lights blocks, and WebGPU's stand-ins for an absent shadow map or instance
+        buffer); then each of :attr:`attachments` that reports its own (``gpu_bytes()``), by its name.
+        """
+        held = {"textures": self.textures.gpu_bytes(), "meshes": self.meshes.gpu_bytes(),
+                "storage buffers": self.buffers.gpu_bytes(), "material blocks": self.materials.gpu_bytes(),
+                **self._frame_gpu_memory()}
+        for name, attached in self.attachments.items():
+            if hasattr(attached, "gpu_bytes"):
+                held[name] = int(attached.gpu_bytes())
+        held["total"] = sum(held.values())
+        return held
+
+    def _frame_gpu_memory(self) -> dict[str, int]:
+        """The bytes of the renderer's own objects: ``frame targets``, ``shadow map``, ``instances``,
+        ``frame uniforms``."""
+        raise NotImplementedError
+
     def save_png(self, path: str | Path) -> Path:
         """Write the last frame to a PNG file."""
         from PIL import Image

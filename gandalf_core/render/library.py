@@ -156,8 +156,16 @@ class ResourceLib(Generic[T]):
         self._items.clear()
         self._data.clear()
 
+    def gpu_bytes(self) -> int:
+        """Bytes of GPU memory this library's objects hold, as asked of the API (:mod:`.gpu_memory`)."""
+        return sum(self._gpu_bytes(item, self._data.get(name)) for name, item in self._items.items())
+
     def _create(self, name: str, data: Any) -> T:
         raise NotImplementedError
+
+    def _gpu_bytes(self, item: T, data: Any) -> int:
+        """One object's bytes of GPU memory; 0 by default (a shader program is the driver's business)."""
+        return 0
 
     def _release(self, item: T) -> None:
         """Free one object's GPU memory; nothing by default."""

@@ -9,10 +9,13 @@ from typing import Any
 import moderngl
 
 from gandalf_core.render.capabilities import require_opengl
+from gandalf_core.render.gpu_memory import buffer_size
 from gandalf_core.render.shader_files import load_shader
 from step07_advanced.editor.frame_inspector.capture import compute_recorded
 
 from .motion import KERNEL, PARAMS_BINDING, PARAMS_INCLUDES, PARAMS_LAYOUT, SHADER_DIR, WORKGROUP, MotionFrame
+
+GL_TEXTURE_FETCH_BARRIER_BIT, GL_SHADER_STORAGE_BARRIER_BIT = 0x00000008, 0x00002000
 
 
 class GLMotionPass:
@@ -59,9 +62,15 @@ class GLMotionPass:
                               buffers=[("instances", instances.size), ("motion", self.motion.size),
                                        ("moved", self.moved.size)]):  # listed and timed in a frame capture
             self.program.run(group_x=groups)
-        self.ctx.memory_barrier()  # the draws read what the kernel wrote
+        # The draws read what the kernel wrote, through the instance rows' buffer texture (texelFetch) or as a
+        # storage buffer: only those two caches need the barrier, not every one (GL_ALL_BARRIER_BITS).
+        self.ctx.memory_barrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT)
         self.stats["motion_passes"] += 1
         return self.moved
+
+    def gpu_bytes(self) -> int:
+        """Bytes of its buffers (the renderer's ``gpu_memory()`` reports them under the kernel's name)."""
+        return sum(buffer_size(b) for b in (self.motion, self.moved, self.params))
 
     def release(self) -> None:
         for obj in (self.motion, self.moved, self.params, self.program):

@@ -10,6 +10,7 @@ from typing import Any
 import wgpu
 
 from gandalf_core.render.frame import INSTANCE_STRIDE
+from gandalf_core.render.gpu_memory import buffer_size
 from gandalf_core.render.shader_files import load_shader
 from step07_advanced.editor.frame_inspector.capture import compute_recorded
 
@@ -97,6 +98,10 @@ class WGPUMotionPass:
             raise ValueError(f"GPU-driven motion: the instance rows ({size} bytes) are more than this device "
                              f"binds as one storage buffer ({limits['max-storage-buffer-binding-size']} bytes); "
                              "request a device with a higher max_storage_buffer_binding_size, or move fewer entities")
+
+    def gpu_bytes(self) -> int:
+        """Bytes of its buffers (the renderer's ``gpu_memory()`` reports them under the kernel's name)."""
+        return sum(buffer_size(b) for b in (self.motion, self.moved, self.params))
 
     def release(self) -> None:
         for obj in (self.motion, self.moved, self.params):

@@ -154,3 +154,16 @@ def test_more_instances_than_one_dispatch_or_binding_holds_is_an_error_naming_th
     motion._check_limits(None, 134217728 // 48)
     with pytest.raises(ValueError, match=r"instance rows \(134217744 bytes\) are more than this device binds"):
         motion._check_limits(None, 134217728 // 48 + 1)
+
+
+@pytest.mark.parametrize("backend", ["opengl", "webgpu"])
+def test_the_motion_pass_reports_its_buffers_in_the_renderers_gpu_memory(backend: str) -> None:
+    """The pass's buffers: its motion rows (2 vec4 an instance), the moved rows (as large as the instance buffer they
+    are read instead of) and its small parameter block, under the kernel's name."""
+    with Application(backend, W, H, headless=True, fixed_dt=1 / 60) as app:
+        app.add_scene(build_scene(path="gpu", count=COUNT))
+        app.step()
+        held = app.renderer.gpu_memory()
+        rows_and_moved = COUNT * 32 + held["instances"]
+        assert rows_and_moved < held["motion_spin"] <= rows_and_moved + 64
+        assert held["total"] == sum(v for k, v in held.items() if k != "total")

@@ -24,6 +24,7 @@ from ...resources.layout import BlockLayout, LayoutError
 from ..builtin_materials import prepare as prepare_builtin
 from ..entry_points import check_glsl_main
 from ..errors import ShaderCompileError
+from ..gpu_memory import buffer_size, chain_bytes
 from ..library import ResourceLib
 from ..material_block import MATERIAL_BLOCK, block_values, check_glsl_varyings, declared_block, used_block
 from ..material_checks import check_parameters
@@ -145,6 +146,12 @@ class TextureLib(_InContext, ResourceLib[Any]):
                 face_pixels = np.ascontiguousarray(pixels[face])
                 sub_image(self._GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, level, 0, 0, size, size, self._GL_RGBA,
                           self._GL_UNSIGNED_BYTE, face_pixels.ctypes.data)
+
+    def _gpu_bytes(self, item: Any, data: TextureData | CubeTextureData) -> int:
+        # Every level the texture has: the data's chain, or all of them where the GL makes them (glGenerateMipmap).
+        cube = isinstance(data, CubeTextureData)
+        width, height = (data.size, data.size) if cube else (data.width, data.height)
+        return chain_bytes(width, height, 4, data.mip_levels, 6 if cube else 1)
 
     def _release(self, item: Any) -> None:
         item.release()
@@ -406,6 +413,9 @@ class MeshLib(_InContext, ResourceLib[GLMesh]):
             self.stats["buffers_created"] += 1
         return mesh.vertex_buffers[attributes], layout
 
+    def _gpu_bytes(self, item: GLMesh, data: MeshData) -> int:
+        return buffer_size(item.index_buffer) + sum(buffer_size(b) for b in item.vertex_buffers.values())
+
     def _release(self, item: GLMesh) -> None:
         for buf in item.vertex_buffers.values():
             buf.release()
@@ -439,6 +449,9 @@ class BufferLib(StorageBufferLib, _InContext, ResourceLib[moderngl.Buffer]):
     def _write(self, buffer: moderngl.Buffer, content: bytes) -> None:
         make_current(self.ctx)
         buffer.write(content)
+
+    def _gpu_bytes(self, item: moderngl.Buffer, data: Any) -> int:
+        return buffer_size(item)
 
     def _release(self, item: moderngl.Buffer) -> None:
         item.release()
@@ -528,6 +541,9 @@ class MaterialLib(ResourceLib[GLMaterial]):
         fields = {f.name: f.has_default for f in block.fields} if block is not None else {}
         check_parameters(name, shader.name, shader.source, data.params, fields)
         return GLMaterial(name, data, shader, textures, buffers)
+
+    def _gpu_bytes(self, item: GLMaterial, data: MaterialData) -> int:
+        return buffer_size(item.block_buffer)  # made on the material's first draw
 
     def _release(self, item: GLMaterial) -> None:
         if item.block_buffer is not None:

@@ -19,6 +19,7 @@ from ..attributes import mesh_attributes
 from ..base import NOT_RECORDING, Renderer
 from ..capabilities import FLOOR, GL_FLOOR, CapabilityError, Needs, check, opengl_offer
 from ..frame import FRAME_FLOATS, INSTANCE_FLOATS, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
+from ..gpu_memory import buffer_size, gl_texture_bytes
 from ..texture_checks import check_target_size
 from . import raw_gl
 from .libs import (
@@ -327,6 +328,13 @@ class OpenGLRenderer(Renderer):
                                                                             reverse_z=reverse_z, sky=name):
             vao.render(moderngl.TRIANGLES, vertices=3)
         self.stats["draw_calls"] += 1
+
+    def _frame_gpu_memory(self) -> dict[str, int]:
+        # The buffer texture over the instance rows is a view of the instance buffer: no storage of its own.
+        return {"frame targets": gl_texture_bytes(self._color) + gl_texture_bytes(self._depth),
+                "shadow map": gl_texture_bytes(self._shadow[0]) if self._shadow is not None else 0,
+                "instances": buffer_size(self._instance_buffer),
+                "frame uniforms": buffer_size(self._frame_ubo) + buffer_size(self._lights_ubo)}
 
     def _renew_instance_buffer(self, capacity: int | None) -> None:
         if capacity is None:

@@ -33,6 +33,7 @@ from ...resources.texture_data import CubeTextureData, TextureData
 from ..builtin_materials import prepare as prepare_builtin
 from ..entry_points import wgsl_entry
 from ..errors import ShaderCompileError
+from ..gpu_memory import buffer_size, wgpu_texture_bytes
 from ..library import ResourceLib
 from ..material_block import block_values, declared_block, used_block
 from ..material_checks import check_parameters
@@ -153,6 +154,9 @@ class TextureLib(ResourceLib[WGPUTexture]):
                                                  address_mode_u="clamp-to-edge", address_mode_v="clamp-to-edge")
             cache[fmt] = (pipeline, sampler)
         return cache[fmt]
+
+    def _gpu_bytes(self, item: WGPUTexture, data: Any) -> int:
+        return wgpu_texture_bytes(item.texture)
 
     def _release(self, item: WGPUTexture) -> None:
         item.texture.destroy()
@@ -324,6 +328,9 @@ class MeshLib(ResourceLib[WGPUMesh]):
             self.stats["buffers_created"] += 1
         return mesh.vertex_buffers[attributes]
 
+    def _gpu_bytes(self, item: WGPUMesh, data: MeshData) -> int:
+        return buffer_size(item.index_buffer) + sum(buffer_size(b) for b, _ in item.vertex_buffers.values())
+
     def _release(self, item: WGPUMesh) -> None:
         for buf, _ in item.vertex_buffers.values():
             buf.destroy()
@@ -376,6 +383,9 @@ class BufferLib(StorageBufferLib, ResourceLib[Any]):
 
     def _write(self, buffer: Any, content: bytes) -> None:
         self.device.queue.write_buffer(buffer, 0, content)
+
+    def _gpu_bytes(self, item: Any, data: Any) -> int:
+        return buffer_size(item)
 
     def _release(self, item: Any) -> None:
         item.destroy()
@@ -503,6 +513,9 @@ class MaterialLib(ResourceLib[WGPUMaterial]):
         fields = {f.name: f.has_default for f in block.fields} if block is not None else {}
         check_parameters(name, shader.name, shader.source.filename, data.params, fields)
         return WGPUMaterial(name, data, shader, textures, self.device, self.shaders.group_layout, buffers)
+
+    def _gpu_bytes(self, item: WGPUMaterial, data: MaterialData) -> int:
+        return buffer_size(item.uniform_buffer)
 
     def _release(self, item: WGPUMaterial) -> None:
         if item.uniform_buffer is not None:

@@ -21,6 +21,7 @@ from ..base import NOT_RECORDING, Renderer
 from ..capabilities import FLOOR, Needs
 from ..errors import ShaderCompileError
 from ..frame import FRAME_FLOATS, INSTANCE_STRIDE, LIGHTS_BLOCK_BYTES, SHADOW_MAP_SIZE, SKY_STATE, DrawBatch, FrameData
+from ..gpu_memory import buffer_size, wgpu_texture_bytes
 from ..shader_files import engine_shader_files, load_shader
 from ..texture_checks import check_target_size
 from .device import request_device
@@ -372,6 +373,14 @@ class WebGPURenderer(Renderer):
             pipeline = self._pipelines[key] = self._create_pipeline(shader, [], SKY_STATE, reverse_z,
                                                                     self._sky_layout())
         return pipeline, material
+
+    def _frame_gpu_memory(self) -> dict[str, int]:
+        return {"frame targets": wgpu_texture_bytes(self._color) + wgpu_texture_bytes(self._depth),
+                "shadow map": wgpu_texture_bytes(self._shadow[0]) if self._shadow is not None else 0,
+                "instances": buffer_size(self._instance_buffer),
+                "frame uniforms": sum(buffer_size(b) for b in (self._frame_buffer, self._lights_buffer,
+                                                               self._no_instances))
+                + wgpu_texture_bytes(self._no_shadow_map)}
 
     def _renew_instance_buffer(self, capacity: int | None) -> None:
         if capacity is None:
