@@ -80,6 +80,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
         SkyboxComponent,
     )
     from gandalf_core.math import quat_from_axis_angle
+    from gandalf_core.render.gpu_memory import in_mib
     from gandalf_core.resources import CubeTextureData, MaterialData
 
     n, rotating = SCENES[cfg["scene"]]
@@ -156,6 +157,8 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
     }
     if gpu_passes is not None:
         record["gpu_ms_per_pass"] = gpu_passes
+    # The buffers and textures the renderer holds (as asked of the API: gandalf_core/render/gpu_memory.py), in MiB.
+    record["gpu_memory_mib"] = in_mib(renderer.gpu_memory())
     app.close()
     record["peak_rss_mb"] = rss_mb()
     return record
