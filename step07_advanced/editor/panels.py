@@ -9,6 +9,8 @@ from __future__ import annotations
 
 from imgui_bundle import imgui
 
+from gandalf_core.render.gpu_memory import MIB
+
 from .components import EditorPanelComponent, is_editor_entity
 from .console_panel import ConsolePanelSystem
 from .content_panel import ContentPanelSystem
@@ -23,9 +25,12 @@ from .viewport_panel import ViewportPanelSystem
 
 
 class StatsPanelSystem(PanelSystem):
-    """Frame rate, frame time, the editor's own share of it, draw calls, entity count and backend."""
+    """Frame rate, frame time, the editor's own share of it, draw calls, entity count, the GPU memory the renderer
+    holds (by kind when hovered) and backend."""
 
     kind = "stats"
+    #: The renderer's ``gpu_memory()`` report the panel last showed.
+    gpu_memory: dict[str, int] | None = None
 
     def draw(self, panel: EditorPanelComponent) -> None:
         editor = self.editor
@@ -44,6 +49,13 @@ class StatsPanelSystem(PanelSystem):
             imgui.text(f"editor    {1000.0 * editor.gui_seconds:8.3f} ms")
         imgui.text(f"draws     {renderer.stats['draw_calls'] + editor.viewport.draw_calls:8d}")  # + the viewport's
         imgui.text(f"entities  {editor._entity_count:8d}")
+        # The buffers and textures the renderer holds, as asked of the API; hovered: by kind.
+        self.gpu_memory = held = renderer.gpu_memory()
+        imgui.text(f"GPU mem   {held['total'] / MIB:8.1f} MiB")
+        if imgui.is_item_hovered():
+            imgui.set_tooltip("\n".join(f"{kind:16s} {n / MIB:9.3f} MiB" for kind, n in held.items()
+                                         if n and kind != "total"))
+        self.remember("stats/gpu_memory")
         imgui.text(f"backend   {renderer.backend:>8}")
 
 

@@ -424,3 +424,17 @@ def test_idle_frames_draw_the_cached_gui_and_input_runs_the_panels(app) -> None:
     before = editor.gui_frames
     app.step()
     assert editor.gui_frames == before + 1, "an edit runs the panels"
+
+
+def test_stats_panel_shows_the_gpu_memory_the_renderer_holds(app) -> None:
+    from step07_advanced.editor.panels import StatsPanelSystem
+
+    editor = enable_editor(app)
+    app.run(frames=3)
+    stats = app.scene.get_system(StatsPanelSystem)
+    assert "stats/gpu_memory" in editor.item_rects
+    held = app.renderer.gpu_memory()
+    assert stats.gpu_memory == held and held["total"] > held["frame targets"] > 0
+    app.input.move_mouse(*center(editor.item_rects["stats/gpu_memory"]))  # hovered: the breakdown's tooltip
+    app.run(frames=2)
+    assert stats.gpu_memory == app.renderer.gpu_memory()
