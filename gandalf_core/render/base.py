@@ -55,6 +55,8 @@ class Renderer(ABC):
     recorder: Any = None
     #: ``instances_version`` of the rows the instance buffer holds (see :meth:`_instance_span`).
     _instances_uploaded: tuple[object, int] | None = None
+    #: The lights block the lights buffer holds (see :meth:`_lights_changed`).
+    _lights_in_buffer: bytes | None = None
 
     def __init__(self, width: int, height: int, window: Any = None) -> None:
         if int(width) <= 0 or int(height) <= 0:
@@ -216,6 +218,16 @@ class Renderer(ABC):
             return None
         self.stats["buffers_created"] += 1
         return instance_capacity(nbytes)
+
+    def _lights_changed(self, lights: bytes) -> bool:
+        """Whether the lights buffer must be written with ``lights`` this frame: not when it holds those bytes
+        already (lights that did not move or change, seen from a camera that did not move, cost no upload).
+        Counts ``stats["lights_uploaded"]`` (1 or 0 for the frame)."""
+        changed = lights != self._lights_in_buffer
+        if changed:
+            self._lights_in_buffer = lights
+        self.stats["lights_uploaded"] = int(changed)
+        return changed
 
     def _upload_instances(self, data: FrameData) -> None:
         """Write the frame's instance rows: only the span that changed when the buffer holds the previous frame's

@@ -177,3 +177,26 @@ def test_with_the_transform_system_paused_every_row_is_packed(backend: str) -> N
         assert app.renderer.stats["instances_uploaded"] == 20
     finally:
         app.close()
+
+
+@pytest.mark.parametrize("backend", ["opengl", "webgpu"])
+def test_unchanged_lights_are_not_uploaded_again_and_a_changed_light_is_drawn(backend: str) -> None:
+    scene, _ids = grid_scene(20)
+    app = app_with(backend, scene)
+    try:
+        app.step()
+        assert app.renderer.stats["lights_uploaded"] == 1
+        app.step()
+        before = app.capture()
+        assert app.renderer.stats["lights_uploaded"] == 0  # same lights, same camera: the buffer holds them
+        light = next(lc for lc, _t in scene.query(LightComponent, TransformComponent).components)
+        light.color = (1.0, 0.2, 0.2)
+        app.step()
+        assert app.renderer.stats["lights_uploaded"] == 1
+        reddened = app.capture()
+        assert np.count_nonzero(np.any(reddened != before, axis=-1)) > 100, "the changed light was not drawn"
+        app.step()
+        assert app.renderer.stats["lights_uploaded"] == 0
+        assert np.array_equal(app.capture(), reddened)
+    finally:
+        app.close()

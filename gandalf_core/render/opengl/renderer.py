@@ -177,7 +177,8 @@ class OpenGLRenderer(Renderer):
         self.stats["draw_calls"] = 0
         self._frame_ubo.write(data.frame)
         self._frame_ubo.bind_to_uniform_block(0)
-        self._lights_ubo.write(data.lights)
+        if self._lights_changed(data.lights):
+            self._lights_ubo.write(data.lights)
         self._lights_ubo.bind_to_uniform_block(1)
         if data.batches:
             self._upload_instances(data)

@@ -178,7 +178,8 @@ class WebGPURenderer(Renderer):
         self._target_format = self._surface_format if direct else COLOR_FORMAT
         queue = self.device.queue
         queue.write_buffer(self._frame_buffer, 0, data.frame)
-        queue.write_buffer(self._lights_buffer, 0, data.lights)
+        if self._lights_changed(data.lights):
+            queue.write_buffer(self._lights_buffer, 0, data.lights)
         if data.batches:
             self._check_instance_binding(len(data.instances))
             self._upload_instances(data)
