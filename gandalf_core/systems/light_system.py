@@ -34,10 +34,26 @@ class LightSystem(System):
 
     def __init__(self) -> None:
         super().__init__([LightComponent, TransformComponent])
-        self.data = pack_lights([])
+        self._data: bytes | None = pack_lights([])
 
     def on_update_system(self, ts: float) -> None:
-        self.data = self.pack(self.components)
+        if type(self).pack is LightSystem.pack:
+            # The stock packing: the render system packs the lights once, relative to the camera (relative()), and
+            # data is packed only if something reads it.
+            self._data = None
+        else:
+            self._data = self.pack(self.components)  # a subclass's own packing runs (and fails) in its own update
+
+    @property
+    def data(self) -> bytes:
+        """This frame's lights block (the lights part, world positions), as :meth:`pack` made it."""
+        if self._data is None:
+            self._data = self.pack(self.components)
+        return self._data
+
+    @data.setter
+    def data(self, block: bytes) -> None:
+        self._data = block
 
     def pack(self, components: list[tuple[LightComponent, TransformComponent]]) -> bytes:
         return pack_lights(components)
