@@ -22,6 +22,8 @@ from typing import Any
 import numpy as np
 from imgui_bundle import imgui
 
+from gandalf_core.render.gpu_memory import MIB
+
 from .components import EditorPanelComponent
 from .entities import display_name
 from .panel_base import ERROR_COLOR, PanelSystem, wrapped
@@ -218,6 +220,8 @@ class FramePanelSystem(PanelSystem):
             self._pick_summary()
         if self.capture is not None:
             imgui.text_disabled(f"GPU timing: {self.capture.timing}")
+            if self.capture.gpu_memory:  # by kind: the stats panel, hovered
+                imgui.text_disabled(f"GPU memory held: {self.capture.gpu_memory['total'] / MIB:.1f} MiB")
             self._tree()
             self._details()
         if self._open_viewer:

@@ -56,6 +56,9 @@ def test_capture_lists_the_passes_and_draws_the_renderer_counts(backend: str) ->
         pane = capture.passes[3].draws[0]
         assert "alpha" in pane.state["blend"].lower() and pane.mesh == "pane" and pane.vertex_count > 0
         assert all(d.shader_files for d in capture.draws)
+        # What the renderer held after the frame: its shadow map and sky among it.
+        held = capture.gpu_memory
+        assert held == app.renderer.gpu_memory() and held["shadow map"] > 0 and held["textures"] > 0
     finally:
         app.close()
 

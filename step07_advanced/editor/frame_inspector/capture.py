@@ -269,6 +269,7 @@ def capture_frame(app: Any, timing: bool = True, dt: float | None = None, descri
     finally:
         renderer.recorder = None
     capture = recorder.finish()
+    capture.gpu_memory = renderer.gpu_memory()
     name_entities(capture, app.scene)
     return capture
 

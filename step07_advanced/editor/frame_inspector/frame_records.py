@@ -68,6 +68,8 @@ class FrameCapture:
     frame_gpu_ms: list[float] = field(default_factory=list)
     #: Whether the (last) render() call drew with reverse-Z.
     reverse_z: bool = False
+    #: The buffers and textures the renderer held after the frame, in bytes by kind (``Renderer.gpu_memory()``).
+    gpu_memory: dict[str, int] = field(default_factory=dict)
 
     @property
     def draws(self) -> list[DrawRecord]:
