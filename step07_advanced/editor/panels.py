@@ -43,20 +43,20 @@ class StatsPanelSystem(PanelSystem):
         # In a window: the wall clock, whatever the app's time step. Headless (captures, tests): the app's
         # own time step, so that a picture does not depend on how fast the machine was.
         seconds = editor.frame_seconds if app.window is not None else editor.frame_dt
-        imgui.text(f"fps       {1.0 / seconds if seconds else 0.0:8.1f}")
-        imgui.text(f"frame     {1000.0 * seconds:8.3f} ms")
+        draws = renderer.stats["draw_calls"] + editor.viewport.draw_calls  # + the viewport's
+        imgui.text(f"fps     {1.0 / seconds if seconds else 0.0:8.1f}   frame    {1000.0 * seconds:8.3f} ms")
         if app.window is not None:
-            imgui.text(f"editor    {1000.0 * editor.gui_seconds:8.3f} ms")
-        imgui.text(f"draws     {renderer.stats['draw_calls'] + editor.viewport.draw_calls:8d}")  # + the viewport's
-        imgui.text(f"entities  {editor._entity_count:8d}")
+            imgui.text(f"editor  {1000.0 * editor.gui_seconds:8.3f} ms")
+        imgui.text(f"draws   {draws:8d}   entities {editor._entity_count:8d}")
         # The buffers and textures the renderer holds, as asked of the API; hovered: by kind.
         self.gpu_memory = held = renderer.gpu_memory()
-        imgui.text(f"GPU mem   {held['total'] / MIB:8.1f} MiB")
+        imgui.text(f"GPU mem {held['total'] / MIB:8.1f} MiB")
         if imgui.is_item_hovered():
             imgui.set_tooltip("\n".join(f"{kind:16s} {n / MIB:9.3f} MiB" for kind, n in held.items()
                                          if n and kind != "total"))
         self.remember("stats/gpu_memory")
-        imgui.text(f"backend   {renderer.backend:>8}")
+        imgui.same_line()
+        imgui.text(f"   backend {renderer.backend:>8}")
 
 
 class FilePanelSystem(PanelSystem):

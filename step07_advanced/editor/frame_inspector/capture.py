@@ -169,7 +169,7 @@ class FrameRecorder:
             del _ACTIVE[key]
 
     def finish(self) -> FrameCapture:
-        """The capture, with the GPU times read back (waits for the GPU once)."""
+        """The capture, with the GPU times read back (waits for the GPU once) and the GPU memory the renderer holds."""
         frame_ms: list[float] = []
         self._unregister()
         if self.timer is not None:
@@ -180,7 +180,8 @@ class FrameRecorder:
                     d.gpu_ms = ms.get(f"draw {d.index}")
             frame_ms = [ms[label] for label in self._frames if label in ms]
             self.timer.release()
-        return FrameCapture(self.renderer.backend, self.passes, self.timing, frame_ms, self.reverse_z)
+        return FrameCapture(self.renderer.backend, self.passes, self.timing, frame_ms, self.reverse_z,
+                            self.renderer.gpu_memory())
 
     # --- inside -------------------------------------------------------------------------------------
     def _span_begin(self, label: str, where: Any) -> None:
@@ -269,7 +270,6 @@ def capture_frame(app: Any, timing: bool = True, dt: float | None = None, descri
     finally:
         renderer.recorder = None
     capture = recorder.finish()
-    capture.gpu_memory = renderer.gpu_memory()
     name_entities(capture, app.scene)
     return capture
 
