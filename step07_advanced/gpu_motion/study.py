@@ -9,6 +9,8 @@ compute pass turns the instance rows; no CPU work per cube), and whether the pic
   with a one-pixel read-back (the GPU's work is inside); the first frames (compile, upload) are not timed. Beside
   it, the engine's own Python a frame (the systems' updates and the render system's gathering, not the driver's
   work): on a software rasteriser the drawing itself runs on the same CPU and hides what the path saves;
+* GPU memory: what the renderer holds after the timed frames (``Renderer.gpu_memory()``), the motion pass's rows
+  and moved copy included;
 * error, against the per-entity CPU path (``entity``, the teaching form) at the same time t: the pixels that
   differ by more than 1/255 and the largest channel difference. The float32 argument (``tests/step07_advanced/
   test_gpu_motion.py``) bounds it by a few edge pixels; the study shows what it is.
@@ -25,6 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
+from gandalf_core.render.gpu_memory import MIB
 from gandalf_tools.plots import figure, label_axes, save_figure
 from gandalf_tools.studies import StudyParser, groups, markdown_table, write_study
 
@@ -102,6 +105,7 @@ def run_study(backends: list[str], counts: tuple[int, ...], size: tuple[int, int
                     for _ in range(SETTLE):
                         app.step()
                     runs = [timed_run(app, frames) for _ in range(repeats)]
+                    row["gpu_mib"] = round(app.renderer.gpu_memory()["total"] / MIB, 2)
                 finally:
                     app.close()
                 row["frame_ms"] = round(statistics.median(r[0] for r in runs), 3)
@@ -115,9 +119,10 @@ def format_table(rows: list[dict]) -> str:
         return "—" if "pixels_off" not in r else f"{r['pixels_off']} px, max {r['max_diff']}/255"
 
     return markdown_table(["API", "N", "frame, CPU path (ms)", "frame, GPU path (ms)", "Python, CPU path (ms)",
-                           "Python, GPU path (ms)", "error of the GPU path"],
+                           "Python, GPU path (ms)", "GPU memory, CPU / GPU path (MiB)", "error of the GPU path"],
                           [(b, f"{n:,}", f"{cpu['frame_ms']:.2f}", f"{gpu['frame_ms']:.2f}",
-                            f"{cpu['python_ms']:.3f}", f"{gpu['python_ms']:.3f}", error(gpu))
+                            f"{cpu['python_ms']:.3f}", f"{gpu['python_ms']:.3f}",
+                            f"{cpu['gpu_mib']:.2f} / {gpu['gpu_mib']:.2f}", error(gpu))
                            for (b, n), (cpu, gpu) in _pairs(rows)], left=2)
 
 
