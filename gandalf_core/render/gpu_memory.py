@@ -45,14 +45,15 @@ def wgpu_texture_bytes(texture: Any) -> int:
     return chain_bytes(width, height, TEXEL_BYTES[fmt], texture.mip_level_count, layers) * int(texture.sample_count)
 
 
-def gl_texture_bytes(texture: Any, levels: int = 1, layers: int = 1) -> int:
-    """Bytes of a moderngl texture (2D, cube with ``layers=6``, or depth) of ``levels`` mip levels. A depth texture
-    counts 4 bytes a texel (32-bit float, or 24-bit depth in a 32-bit word)."""
+def gl_texture_bytes(texture: Any) -> int:
+    """Bytes of a moderngl 2D texture of one level (a render target, a shadow map). A depth texture counts 4 bytes
+    a texel (32-bit float, or 24-bit depth in a 32-bit word). The texture library counts its textures from their
+    data instead: moderngl's cube maps do not say their size or levels."""
     if getattr(texture, "depth", False) is True:
         texel = 4
     else:
         texel = int(texture.components) * _DTYPE_BYTES[str(texture.dtype)]
-    return chain_bytes(texture.width, texture.height, texel, levels, layers)
+    return chain_bytes(texture.width, texture.height, texel)
 
 
 def buffer_size(buffer: Any) -> int:

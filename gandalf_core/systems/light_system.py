@@ -37,9 +37,9 @@ class LightSystem(System):
         self._data: bytes | None = pack_lights([])
 
     def on_update_system(self, ts: float) -> None:
-        if type(self).pack is LightSystem.pack:
-            # The stock packing: the render system packs the lights once, relative to the camera (relative()), and
-            # data is packed only if something reads it.
+        if self._stock_packing:
+            # The render system packs the lights once, relative to the camera (relative()), and data is packed only
+            # if something reads it.
             self._data = None
         else:
             self._data = self.pack(self.components)  # a subclass's own packing runs (and fails) in its own update
@@ -58,6 +58,11 @@ class LightSystem(System):
     def pack(self, components: list[tuple[LightComponent, TransformComponent]]) -> bytes:
         return pack_lights(components)
 
+    @property
+    def _stock_packing(self) -> bool:
+        """Whether the lights are packed by this class's :meth:`pack`, not a subclass's own (step 06's exercise)."""
+        return type(self).pack is LightSystem.pack
+
     def shadow(self, depth_range: str | tuple[float, float], origin: np.ndarray | None = None) -> bytes:
         """The shadow part of the block for this frame's lights, projected for ``depth_range``, from positions
         relative to ``origin``."""
@@ -72,7 +77,7 @@ class LightSystem(System):
         """:attr:`data` with point lights relative to ``origin``. The stock packing recomputes them from the
         float64 world matrices; a subclass's own :meth:`pack` (step 06's exercise) is moved by ``-origin`` from
         its float32 values."""
-        if type(self).pack is LightSystem.pack:
+        if self._stock_packing:
             return pack_lights(self.components, origin)
         return relative_lights(self.data, origin)
 
