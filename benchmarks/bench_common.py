@@ -118,21 +118,31 @@ def request_gpu_timing() -> None:
     os.environ[TIMING_VARIABLE] = "1"
 
 
-def gpu_ms_per_pass(app: Any, frames: int) -> dict[str, float]:
+def gpu_ms_per_pass(app: Any, frames: int, warmup: int = 3) -> dict[str, float]:
     """Median GPU milliseconds of each pass, and of the whole frame, over ``frames`` frames captured after the
-    measured ones (the frame inspector's timer: timestamp queries; not part of the fps figures)."""
+    measured ones (the frame inspector's timer: timestamp queries; not part of the fps figures).
+
+    The captures run back to back, after ``warmup`` captured frames that are not counted, and name no entities
+    (``name=False``): a capture's own CPU work between frames (naming a million instances takes a quarter of a
+    second) would leave the GPU idle long enough to lower its clocks, and its passes would be timed slower than the
+    frames whose fps are reported. Passes of one name in a frame (two dispatches, say) add up."""
     import statistics
 
     from step07_advanced.editor.frame_inspector.capture import capture_frame
 
     times: dict[str, list[float]] = {}
-    for _ in range(frames):
-        capture = capture_frame(app, describe=False)
+    for frame in range(warmup + frames):
+        capture = capture_frame(app, describe=False, name=False)
+        if frame < warmup:
+            continue
+        this_frame: dict[str, float] = {}
         for gpu_pass in capture.passes:
             if gpu_pass.gpu_ms is not None:
-                times.setdefault(gpu_pass.name, []).append(gpu_pass.gpu_ms)
+                this_frame[gpu_pass.name] = this_frame.get(gpu_pass.name, 0.0) + gpu_pass.gpu_ms
         if capture.frame_gpu_ms:
-            times.setdefault("frame", []).append(capture.frame_gpu_ms[-1])
+            this_frame["frame"] = sum(capture.frame_gpu_ms)
+        for name, ms in this_frame.items():
+            times.setdefault(name, []).append(ms)
     return {name: round(statistics.median(values), 3) for name, values in times.items()}
 
 

@@ -55,6 +55,9 @@ class FrameRecorder:
         self._pass_label = ""
         self._blocks: dict[str, dict[str, Any]] = {}
         self._draws = 0
+        #: describe=False: each draw's rows as copied while the frame ran, made into lists in :meth:`finish` (after
+        #: the frame, so that a million rows cost the timed spans nothing).
+        self._rows: list[tuple[DrawRecord, Any]] = []
         #: The current render pass's begin and end timestamps (its first pass starts at the first, its last ends
         #: at the second), or None.
         self._target_stamps: list[int | None] | None = None
@@ -146,8 +149,9 @@ class FrameRecorder:
         self._span_begin(f"draw {record.index}", where)
         yield
         self._span_end(where)
-        if self.renderer.backend == "webgpu":  # the dispatch's pass ends with it: the next one is timed anew
-            self._close_pass(where)
+        # The dispatch's pass ends with it (a WebGPU compute pass does; on OpenGL, so that the span does not run on
+        # through the CPU's work before the next pass): a dispatch after it is timed as a pass of its own.
+        self._close_pass(where)
 
     @contextmanager
     def overlay(self, where: Any = None) -> Iterator[None]:
@@ -172,6 +176,9 @@ class FrameRecorder:
         """The capture, with the GPU times read back (waits for the GPU once) and the GPU memory the renderer holds."""
         frame_ms: list[float] = []
         self._unregister()
+        for record, rows in self._rows:
+            record.rows = rows.tolist()
+        self._rows = []
         if self.timer is not None:
             ms = self.timer.results()
             for i, p in enumerate(self.passes):
@@ -215,11 +222,14 @@ class FrameRecorder:
         index = self._draws
         self._draws += 1
         if not self.describe:
-            return DrawRecord(index, pass_name, mesh.name if mesh is not None else None,
-                              material.name if material is not None else None, shader.name, [],
-                              batch.count if batch is not None else 1, batch.first_instance if batch is not None else 0,
-                              [int(r) for r in batch.rows] if batch is not None else [], 0, 0, [], {}, {}, [], [],
-                              bool(batch is not None and batch.mirrored), sky)
+            record = DrawRecord(index, pass_name, mesh.name if mesh is not None else None,
+                                material.name if material is not None else None, shader.name, [],
+                                batch.count if batch is not None else 1,
+                                batch.first_instance if batch is not None else 0, [], 0, 0, [], {}, {}, [], [],
+                                bool(batch is not None and batch.mirrored), sky)
+            if batch is not None:
+                self._rows.append((record, batch.rows.copy()))
+            return record
         return describe_draw(self.renderer, index, pass_name, shader, batch, material, mesh, reverse_z,
                              self._blocks, sky, pipeline)
 
@@ -254,10 +264,12 @@ def compute_recorded(context: Any, label: str, workgroups: tuple[int, ...], *, s
     return recorder.dispatch(label, workgroups, shader, list(buffers), where)
 
 
-def capture_frame(app: Any, timing: bool = True, dt: float | None = None, describe: bool = True) -> FrameCapture:
-    """Run one frame of ``app`` with its renderer recording, and return the capture (entities named).
+def capture_frame(app: Any, timing: bool = True, dt: float | None = None, describe: bool = True,
+                  name: bool = True) -> FrameCapture:
+    """Run one frame of ``app`` with its renderer recording, and return the capture (entities named, unless
+    ``name`` is False).
 
-    A benchmark that wants GPU milliseconds per pass: ``capture_frame(app, describe=False)``, then
+    A benchmark that wants GPU milliseconds per pass: ``capture_frame(app, describe=False, name=False)``, then
     ``{p.name: p.gpu_ms for p in capture.passes}`` and ``capture.frame_gpu_ms``."""
     renderer = app.renderer
     recorder = FrameRecorder(renderer, timing, describe)
@@ -270,7 +282,8 @@ def capture_frame(app: Any, timing: bool = True, dt: float | None = None, descri
     finally:
         renderer.recorder = None
     capture = recorder.finish()
-    name_entities(capture, app.scene)
+    if name:
+        name_entities(capture, app.scene)
     return capture
 
 

@@ -154,7 +154,7 @@ def describe_draw(renderer: Any, index: int, pass_name: str, shader: Any, batch:
         shader=shader.name, shader_files=_shader_files(renderer, shader),
         instances=batch.count if batch is not None else 1,
         first_instance=batch.first_instance if batch is not None else 0,
-        rows=[int(r) for r in batch.rows] if batch is not None else [],
+        rows=batch.rows.tolist() if batch is not None else [],
         vertex_count=mesh.data.vertex_count if mesh is not None else 3,
         index_count=mesh.data.index_count if mesh is not None and mesh.index_buffer is not None else 0,
         layout=layout, state=state, blocks={k: v for k, v in blocks.items() if v is not None},
