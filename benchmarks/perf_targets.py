@@ -105,16 +105,33 @@ def time_table(records: list[dict[str, Any]]) -> str:
     lines = ["| backend | scene | path | wait | fps | p50 ms | rotate ms | transform ms | render ms (gather) "
              "| sync ms | GPU ms per pass | GPU MiB |",
              "|---|---|---|---|---:|---:|---:|---:|---:|---:|---|---:|"]
+    doubtful = False
     for r in records:
         c = r["cpu_ms"]
         passes = r.get("gpu_ms_per_pass")
         gpu = ", ".join(f"{k} {v}" for k, v in passes.items()) if passes else "—"
+        if passes and not plausible_gpu_times(r):
+            gpu, doubtful = gpu + " ‡", True
         held = r.get("gpu_memory_mib", {}).get("total", "—")
         lines.append(f"| {r['backend']} | {r['scene']} | {r.get('rotate') or 'static'} | {r.get('sync', 'pixel')} | "
                      f"{r['fps']} | "
                      f"{r['frame_ms']['p50']} | {c['update']} | {c['transform']} | {c['render']} "
                      f"({c.get('gather', '—')}) | {c['sync']} | {gpu} | {held} |")
+    if doubtful:
+        lines.append("\n‡ The captured frames' GPU time is longer than the measured frames' whole time (p50): those "
+                     "captures did not run as the measured frames did (lower GPU clocks, or CPU work inside the "
+                     "timed spans), and their milliseconds are not the frame's.")
     return "\n".join(lines) + "\n"
+
+
+def plausible_gpu_times(record: dict[str, Any]) -> bool:
+    """Whether a scene's GPU ms per pass can be those of its measured frames: with every frame waited for, no pass
+    and not the whole GPU frame may take longer than the frame did on the wall clock (p50, 10 % allowed for the
+    median's spread). Frames in flight overlap, so they are not checked."""
+    passes = record.get("gpu_ms_per_pass") or {}
+    if record.get("sync", "pixel") == "inflight" or not passes:
+        return True
+    return max(passes.values()) <= 1.1 * record["frame_ms"]["p50"]
 
 
 def main(argv: list[str]) -> int:

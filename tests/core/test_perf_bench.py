@@ -41,3 +41,37 @@ def test_bench_pygandalf_work_quick(tmp_path) -> None:
     assert runs[0]["fps"] > 0 and runs[0]["rotating"] and runs[0]["triangles_per_model"] == 48
     # A quick run is not the reference work: no ratio against pyGANDALF may be printed for it.
     assert summary and not summary[0]["same_work_as_reference"] and "fps_ratio" not in summary[0]
+
+
+def test_bench_scenes_times_each_pass_on_the_gpu_path(tmp_path) -> None:
+    """``--gpu-passes``: the GPU milliseconds of the motion kernel's compute pass, the opaque pass and the whole
+    frame are in each record (both APIs time them on these rasterisers). llvmpipe runs a small dispatch as it is
+    made, so its compute pass may round to 0.000 ms."""
+    records = _run("bench_scenes.py", "--quick", "--scenes", "cubes1k", "--rotate", "gpu", "--frames", "3",
+                   "--gpu-passes", "2")
+    runs = [r for r in records if r["bench"] == "gandalf-scenes"]
+    assert {r["backend"] for r in runs} == {"opengl", "webgpu"}
+    for r in runs:
+        assert "error" not in r, r
+        passes = r["gpu_ms_per_pass"]
+        assert {"compute", "opaque", "frame"} <= set(passes), (r["backend"], passes)
+        assert passes["compute"] >= 0 and passes["opaque"] > 0 and passes["frame"] > 0, (r["backend"], passes)
+
+
+def test_perf_targets_marks_gpu_times_longer_than_their_frame() -> None:
+    """A scene whose captured passes took longer on the GPU than its measured frames on the wall clock gets a mark
+    and the note saying those times are not the frame's; plausible times and frames in flight get none."""
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    from perf_targets import plausible_gpu_times, time_table
+
+    def record(gpu: dict[str, float], sync: str = "pixel") -> dict:
+        return {"backend": "opengl", "scene": "cubes1m", "rotate": "gpu", "sync": sync, "fps": 60.0,
+                "frame_ms": {"p50": 16.0}, "gpu_ms_per_pass": gpu,
+                "cpu_ms": {"update": 0.0, "transform": 0.0, "render": 0.5, "gather": 0.2, "sync": 15.0}}
+
+    fine, slow = record({"compute": 0.1, "opaque": 15.2, "frame": 15.3}), record({"opaque": 78.0, "frame": 78.1})
+    assert plausible_gpu_times(fine) and not plausible_gpu_times(slow)
+    assert plausible_gpu_times(record({"opaque": 78.0}, sync="inflight"))
+    assert "‡" not in time_table([fine])
+    table = time_table([fine, slow])
+    assert table.count("‡") == 2 and "not the frame's" in table
