@@ -17,7 +17,8 @@ timed=(--gpu-passes 20)  # then 20 frames more through the frame inspector's tim
 {
   "$py" benchmarks/bench_scenes.py "${common[@]}" --scenes scene1,cubes1k,cubes10k,static100k --rotate batch \
       "${timed[@]}" --json "$out/scenes-cpu.json"
-  "$py" benchmarks/bench_scenes.py "${common[@]}" --scenes cubes1k,cubes10k --rotate angle --json "$out/scenes-angle.json"
+  "$py" benchmarks/bench_scenes.py "${common[@]}" --scenes cubes1k,cubes10k --rotate angle \
+      "${timed[@]}" --json "$out/scenes-angle.json"
   "$py" benchmarks/bench_scenes.py "${common[@]}" --scenes cubes1k,cubes10k,cubes100k,cubes1m --rotate gpu \
       "${timed[@]}" --json "$out/scenes-gpu.json"
   NS=1,1000,10000,100000 "$py" benchmarks/raw_ceiling.py both 1280 720 300 > "$out/raw.jsonl"
