@@ -55,8 +55,8 @@ class FrameRecorder:
         self._pass_label = ""
         self._blocks: dict[str, dict[str, Any]] = {}
         self._draws = 0
-        #: describe=False: each draw's rows as copied while the frame ran, made into lists in :meth:`finish` (after
-        #: the frame, so that a million rows cost the timed spans nothing).
+        #: describe=False: each draw's rows array as drawn, made into a list in :meth:`finish`, right after the
+        #: frame and before anything can change them (so that a million rows cost the timed spans nothing).
         self._rows: list[tuple[DrawRecord, Any]] = []
         #: The current render pass's begin and end timestamps (its first pass starts at the first, its last ends
         #: at the second), or None.
@@ -228,7 +228,7 @@ class FrameRecorder:
                                 batch.first_instance if batch is not None else 0, [], 0, 0, [], {}, {}, [], [],
                                 bool(batch is not None and batch.mirrored), sky)
             if batch is not None:
-                self._rows.append((record, batch.rows.copy()))
+                self._rows.append((record, batch.rows))
             return record
         return describe_draw(self.renderer, index, pass_name, shader, batch, material, mesh, reverse_z,
                              self._blocks, sky, pipeline)
