@@ -4,12 +4,11 @@ ceiling, many spinning cubes on the GPU, 100k static models with one moving, one
 usage: python benchmarks/perf_targets.py OUT_DIR   (reads the files ``run_perf_targets.sh`` writes there,
 writes ``OUT_DIR/targets.md`` and ``OUT_DIR/targets.json`` and prints the table)
 
-Inputs: ``scenes-*.json`` (``bench_scenes.py --json``: a list of records, the host first) and ``raw*.jsonl``
-(``raw_ceiling.py``'s JSON lines). Ratios are of fps measured in the same run, with the same wait: every target is
-judged with a read-back of each frame (``pixel``, the CPU waits for the frame it drew); the runs with two frames in
-flight (``inflight``: each frame waits for the one before, as a swap chain lets a real application) are judged again
-by the same targets, in rows of their own.
-"""
+Inputs: ``scenes-*.json`` (``bench_scenes.py --json``: a list of records, the host first), ``raw*.jsonl``
+(``raw_ceiling.py``'s JSON lines) and, where the run sampled them, the GPU's clocks (``clocks.csv``). Ratios are of
+fps measured in the same run, with the same wait: every target is judged with a read-back of each frame (``pixel``,
+the CPU waits for the frame it drew); the runs with two frames in flight (``inflight``: each frame waits for the one
+before, as a swap chain lets a real application) are judged again by the same targets, in rows of their own."""
 
 from __future__ import annotations
 
@@ -99,12 +98,34 @@ def frame_cost_rows(out: Path) -> list[dict[str, Any]]:
     return rows
 
 
-def time_table(records: list[dict[str, Any]]) -> str:
+def load_clocks(path: Path) -> list[tuple[str, float]]:
+    """``clocks.csv`` (nvidia-smi's ``--query-gpu=timestamp,clocks.sm,...`` lines): (timestamp, SM MHz) in order;
+    empty when there is no such file."""
+    samples = []
+    if path.exists():
+        for line in path.read_text().splitlines()[1:]:
+            fields = [f.strip() for f in line.split(",")]
+            if len(fields) > 1 and fields[1].endswith("MHz"):
+                samples.append((fields[0], float(fields[1].split()[0])))
+    return samples
+
+
+def median_clock(samples: list[tuple[str, float]], span: list[str] | None) -> float | None:
+    """The median SM clock (MHz) of the samples taken within ``span`` ([start, end], timestamps as nvidia-smi
+    writes them, which sort as text), or None when there is none."""
+    if not span or len(span) != 2:
+        return None
+    inside = sorted(mhz for when, mhz in samples if span[0] <= when <= span[1])
+    return inside[len(inside) // 2] if inside else None
+
+
+def time_table(records: list[dict[str, Any]], clocks: list[tuple[str, float]] = ()) -> str:
     """Where each scene's frame goes: CPU ms per system, the wait, GPU ms per pass (when the run timed them:
-    ``--gpu-passes``) and the GPU memory the renderer holds."""
+    ``--gpu-passes``) and the GPU memory the renderer holds; with ``clocks`` (:func:`load_clocks`), the GPU's median
+    SM clock while the measured frames ran and while the passes were timed."""
     lines = ["| backend | scene | path | wait | fps | p50 ms | rotate ms | transform ms | render ms (gather) "
-             "| sync ms | GPU ms per pass | GPU MiB |",
-             "|---|---|---|---|---:|---:|---:|---:|---:|---:|---|---:|"]
+             "| sync ms | GPU ms per pass | GPU MiB |" + (" SM MHz (measured / timed) |" if clocks else ""),
+             "|---|---|---|---|---:|---:|---:|---:|---:|---:|---|---:|" + ("---|" if clocks else "")]
     doubtful = False
     for r in records:
         c = r["cpu_ms"]
@@ -116,12 +137,20 @@ def time_table(records: list[dict[str, Any]]) -> str:
         lines.append(f"| {r['backend']} | {r['scene']} | {r.get('rotate') or 'static'} | {r.get('sync', 'pixel')} | "
                      f"{r['fps']} | "
                      f"{r['frame_ms']['p50']} | {c['update']} | {c['transform']} | {c['render']} "
-                     f"({c.get('gather', '—')}) | {c['sync']} | {gpu} | {held} |")
+                     f"({c.get('gather', '—')}) | {c['sync']} | {gpu} | {held} |"
+                     + (f" {clock_cell(clocks, r.get('utc', {}))} |" if clocks else ""))
     if doubtful:
         lines.append("\n‡ The captured frames' GPU time is longer than the measured frames' whole time (p50): those "
                      "captures did not run as the measured frames did (lower GPU clocks, or CPU work inside the "
                      "timed spans), and their milliseconds are not the frame's.")
     return "\n".join(lines) + "\n"
+
+
+def clock_cell(clocks: list[tuple[str, float]], utc: dict[str, list[str]]) -> str:
+    """'measured / timed' median SM clocks of a scene's two phases (— where a phase has no sample)."""
+    def show(mhz: float | None) -> str:
+        return "—" if mhz is None else f"{mhz:.0f}"
+    return f"{show(median_clock(clocks, utc.get('measured')))} / {show(median_clock(clocks, utc.get('gpu_passes')))}"
 
 
 def plausible_gpu_times(record: dict[str, Any]) -> bool:
@@ -147,7 +176,7 @@ def main(argv: list[str]) -> int:
         met = "—" if row["value"] is None else "yes" if row["met"] else "no"
         # Thresholds are floors, except times (ms): those are ceilings.
         lines.append(f"| {row['backend']} | {row['target']} | {value} | {row['threshold']} | {met} |")
-    table = "\n".join(lines) + "\n\n" + time_table(records)
+    table = "\n".join(lines) + "\n\n" + time_table(records, load_clocks(out / "clocks.csv"))
     (out / "targets.md").write_text(table)
     raw_fps = {f"{b}-{n}" + ("" if s == "pixel" else f"-{s}"): v for (b, n, s), v in raw.items()}
     (out / "targets.json").write_text(json.dumps({"targets": rows, "raw_fps": raw_fps}, indent=1))

@@ -4,7 +4,9 @@
 # one entity, the frame's Python at 1k, with GPU ms per pass (--gpu-passes) and the GPU memory the renderer
 # holds in the JSON; then the same scenes and raw ceiling again with two frames in flight (each
 # frame waits for the one before: --sync inflight / SYNC=inflight). Writes scenes-*.json, raw*.jsonl,
-# frame-cost-*.json, targets.md/json and log.txt into the folder given (default: $OUT).
+# frame-cost-*.json, targets.md/json and log.txt into the folder given (default: $OUT); where nvidia-smi is there,
+# also clocks.csv: the GPU's SM and memory clocks, load and power every 100 ms while the run lasts (a captured
+# frame timed slower than the measured ones can then be checked against the clocks).
 # usage: bash benchmarks/run_perf_targets.sh [OUT_DIR] [PYTHON]
 set -u
 out="${1:-${OUT:-perf-out}}"
@@ -14,6 +16,13 @@ out="$(cd "$out" && pwd)"  # absolute: the runs below start from the repository 
 cd "$(dirname "$0")/.."
 common=(--frames 300 --warmup 30 --max-seconds 3 --size 1280x720)
 timed=(--gpu-passes 20)  # then 20 frames more through the frame inspector's timer: GPU ms per pass, beside the fps
+clocks=""
+if command -v nvidia-smi > /dev/null; then
+  nvidia-smi --query-gpu=timestamp,clocks.sm,clocks.mem,utilization.gpu,power.draw --format=csv -lms 100 \
+      > "$out/clocks.csv" 2>&1 &
+  clocks=$!
+  trap 'kill "$clocks" 2> /dev/null' EXIT
+fi
 {
   "$py" benchmarks/bench_scenes.py "${common[@]}" --scenes scene1,cubes1k,cubes10k,static100k --rotate batch \
       "${timed[@]}" --json "$out/scenes-cpu.json"

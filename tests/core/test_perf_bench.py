@@ -56,6 +56,9 @@ def test_bench_scenes_times_each_pass_on_the_gpu_path(tmp_path) -> None:
         passes = r["gpu_ms_per_pass"]
         assert {"compute", "opaque", "frame"} <= set(passes), (r["backend"], passes)
         assert passes["compute"] >= 0 and passes["opaque"] > 0 and passes["frame"] > 0, (r["backend"], passes)
+        # Each phase's wall-clock span, in order, to line it up with a clock log.
+        measured, timed = r["utc"]["measured"], r["utc"]["gpu_passes"]
+        assert measured[0] <= measured[1] <= timed[0] <= timed[1], r["utc"]
 
 
 def test_perf_targets_marks_gpu_times_longer_than_their_frame() -> None:
@@ -75,3 +78,26 @@ def test_perf_targets_marks_gpu_times_longer_than_their_frame() -> None:
     assert "‡" not in time_table([fine])
     table = time_table([fine, slow])
     assert table.count("‡") == 2 and "not the frame's" in table
+
+
+def test_perf_targets_shows_the_gpu_clock_of_each_phase(tmp_path) -> None:
+    """With nvidia-smi's clock log beside the JSON, each scene's row gives the median SM clock while its measured
+    frames ran and while its passes were timed, from the samples inside each phase's wall-clock span alone."""
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    from perf_targets import load_clocks, time_table
+
+    (tmp_path / "clocks.csv").write_text(
+        "timestamp, clocks.current.sm [MHz], clocks.current.memory [MHz], utilization.gpu [%], power.draw [W]\n"
+        + "".join(f"2026/12/08 02:00:0{s}.000, {mhz} MHz, 2619 MHz, 90 %, 300.00 W\n"
+                  for s, mhz in enumerate([1980, 1980, 1965, 345, 345, 360, 1980]))
+        + "2026/12/08 02:00:07.000, [N/A], 2619 MHz, 0 %, [N/A]\n")
+    clocks = load_clocks(tmp_path / "clocks.csv")
+    assert len(clocks) == 7 and load_clocks(tmp_path / "none.csv") == []
+    record = {"backend": "webgpu", "scene": "cubes1m", "rotate": "gpu", "sync": "pixel", "fps": 60.0,
+              "frame_ms": {"p50": 16.0}, "gpu_ms_per_pass": {"opaque": 15.2},
+              "cpu_ms": {"update": 0.0, "transform": 0.0, "render": 0.5, "gather": 0.2, "sync": 15.0},
+              "utc": {"measured": ["2026/12/08 02:00:00.000", "2026/12/08 02:00:02.500"],
+                      "gpu_passes": ["2026/12/08 02:00:02.900", "2026/12/08 02:00:05.100"]}}
+    table = time_table([record], clocks)
+    assert "SM MHz (measured / timed)" in table and "| 1980 / 345 |" in table
+    assert "SM MHz" not in time_table([record])
