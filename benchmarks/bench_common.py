@@ -123,9 +123,9 @@ def gpu_ms_per_pass(app: Any, frames: int, warmup: int = 3) -> dict[str, float]:
     measured ones (the frame inspector's timer: timestamp queries; not part of the fps figures).
 
     The captures run back to back, after ``warmup`` captured frames that are not counted, and name no entities
-    (``name=False``): a capture's own CPU work between frames (naming a million instances takes a quarter of a
-    second) would leave the GPU idle long enough to lower its clocks, and its passes would be timed slower than the
-    frames whose fps are reported. Passes of one name in a frame (two dispatches, say) add up."""
+    (``name=False``): a capture's own CPU work between frames (naming a million instances takes about 0.3 s) would
+    leave the GPU idle long enough to lower its clocks, and its passes would be timed slower than the frames whose
+    fps are reported. Passes of one name in a frame (two dispatches, say) add up."""
     import statistics
 
     from step07_advanced.editor.frame_inspector.capture import capture_frame
