@@ -125,7 +125,8 @@ def gpu_ms_per_pass(app: Any, frames: int, warmup: int = 3) -> dict[str, float]:
     The captures run back to back, after ``warmup`` captured frames that are not counted, and name no entities
     (``name=False``): a capture's own CPU work between frames (naming a million instances takes about 0.3 s) would
     leave the GPU idle long enough to lower its clocks, and its passes would be timed slower than the frames whose
-    fps are reported. Passes of one name in a frame (two dispatches, say) add up."""
+    fps are reported. Passes of one name in a frame (two dispatches, say) add up, and so do the frame's
+    render() calls (the editor's viewport and window) in ``frame``."""
     import statistics
 
     from step07_advanced.editor.frame_inspector.capture import capture_frame
