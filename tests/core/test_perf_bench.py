@@ -43,7 +43,7 @@ def test_bench_pygandalf_work_quick(tmp_path) -> None:
     assert summary and not summary[0]["same_work_as_reference"] and "fps_ratio" not in summary[0]
 
 
-def test_bench_scenes_times_each_pass_on_the_gpu_path(tmp_path) -> None:
+def test_bench_scenes_times_each_pass_on_the_gpu_path() -> None:
     """``--gpu-passes``: the GPU milliseconds of the motion kernel's compute pass, the opaque pass and the whole
     frame are in each record (both APIs time them on these rasterisers). llvmpipe runs a small dispatch as it is
     made, so its compute pass may round to 0.000 ms."""
