@@ -247,11 +247,12 @@ class TimedCall(Timed):
         return result
 
 
-def utc_now() -> str:
-    """The wall clock in UTC to the millisecond, as nvidia-smi's timestamps read (``2026/12/08 02:20:01.123``)."""
+def clock_now() -> str:
+    """The wall clock to the millisecond as nvidia-smi's ``timestamp`` reads it: the machine's local time,
+    ``2026/12/08 02:20:01.123``."""
     import datetime
 
-    return datetime.datetime.now(datetime.timezone.utc).strftime("%Y/%m/%d %H:%M:%S.%f")[:-3]
+    return datetime.datetime.now().strftime("%Y/%m/%d %H:%M:%S.%f")[:-3]
 
 
 # ------------------------------------------------------------------------------------------------
@@ -304,7 +305,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
         profiler.enable()
     times = []
     deadline = time.perf_counter() + cfg["max_seconds"]
-    utc = {"measured": [utc_now()]}  # wall-clock times, to line the phases up with a clock log (nvidia-smi's)
+    spans = {"measured": [clock_now()]}  # wall-clock times, to line the phases up with a clock log (nvidia-smi's)
     t0 = time.perf_counter()
     for _ in range(cfg["frames"]):
         a = time.perf_counter()
@@ -318,7 +319,7 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
             break
     getattr(sync, "drain", lambda: None)()  # two frames in flight: the last frame has finished too
     wall = time.perf_counter() - t0
-    utc["measured"].append(utc_now())
+    spans["measured"].append(clock_now())
     if profiler is not None:
         import pstats
 
@@ -371,10 +372,10 @@ def run_config(cfg: dict[str, Any]) -> dict[str, Any]:
     record["gpu_memory_mib"] = in_mib(app.renderer.gpu_memory())
     if cfg.get("gpu_passes"):
         # After the measured frames, so the timer's queries cost the fps figures nothing.
-        utc["gpu_passes"] = [utc_now()]
+        spans["gpu_passes"] = [clock_now()]
         record["gpu_ms_per_pass"] = bench_common.gpu_ms_per_pass(app, cfg["gpu_passes"])
-        utc["gpu_passes"].append(utc_now())
-    record["utc"] = utc
+        spans["gpu_passes"].append(clock_now())
+    record["wall_clock"] = spans
     app.close()
     # Linux reports ru_maxrss in KiB (macOS in bytes).
     record["peak_rss_mb"] = rss_mb()

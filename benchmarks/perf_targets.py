@@ -138,7 +138,7 @@ def time_table(records: list[dict[str, Any]], clocks: list[tuple[str, float]] = 
                      f"{r['fps']} | "
                      f"{r['frame_ms']['p50']} | {c['update']} | {c['transform']} | {c['render']} "
                      f"({c.get('gather', '—')}) | {c['sync']} | {gpu} | {held} |"
-                     + (f" {clock_cell(clocks, r.get('utc', {}))} |" if clocks else ""))
+                     + (f" {clock_cell(clocks, r.get('wall_clock', {}))} |" if clocks else ""))
     if doubtful:
         lines.append("\n‡ The captured frames' GPU time is longer than the measured frames' whole time (p50): those "
                      "captures did not run as the measured frames did (lower GPU clocks, or CPU work inside the "
@@ -146,11 +146,12 @@ def time_table(records: list[dict[str, Any]], clocks: list[tuple[str, float]] = 
     return "\n".join(lines) + "\n"
 
 
-def clock_cell(clocks: list[tuple[str, float]], utc: dict[str, list[str]]) -> str:
+def clock_cell(clocks: list[tuple[str, float]], spans: dict[str, list[str]]) -> str:
     """'measured / timed' median SM clocks of a scene's two phases (— where a phase has no sample)."""
     def show(mhz: float | None) -> str:
         return "—" if mhz is None else f"{mhz:.0f}"
-    return f"{show(median_clock(clocks, utc.get('measured')))} / {show(median_clock(clocks, utc.get('gpu_passes')))}"
+    measured, timed = (median_clock(clocks, spans.get(phase)) for phase in ("measured", "gpu_passes"))
+    return f"{show(measured)} / {show(timed)}"
 
 
 def plausible_gpu_times(record: dict[str, Any]) -> bool:

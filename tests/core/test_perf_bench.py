@@ -66,8 +66,8 @@ def test_bench_scenes_times_each_pass_on_the_gpu_path() -> None:
         assert {"compute", "opaque", "frame"} <= set(passes), (r["backend"], passes)
         assert passes["compute"] >= 0 and passes["opaque"] > 0 and passes["frame"] > 0, (r["backend"], passes)
         # Each phase's wall-clock span, in order, to line it up with a clock log.
-        measured, timed = r["utc"]["measured"], r["utc"]["gpu_passes"]
-        assert measured[0] <= measured[1] <= timed[0] <= timed[1], r["utc"]
+        measured, timed = r["wall_clock"]["measured"], r["wall_clock"]["gpu_passes"]
+        assert measured[0] <= measured[1] <= timed[0] <= timed[1], r["wall_clock"]
 
 
 def test_perf_targets_marks_gpu_times_longer_than_their_frame() -> None:
@@ -105,7 +105,7 @@ def test_perf_targets_shows_the_gpu_clock_of_each_phase(tmp_path) -> None:
     record = {"backend": "webgpu", "scene": "cubes1m", "rotate": "gpu", "sync": "pixel", "fps": 60.0,
               "frame_ms": {"p50": 16.0}, "gpu_ms_per_pass": {"opaque": 15.2},
               "cpu_ms": {"update": 0.0, "transform": 0.0, "render": 0.5, "gather": 0.2, "sync": 15.0},
-              "utc": {"measured": ["2026/12/08 02:00:00.000", "2026/12/08 02:00:02.500"],
+              "wall_clock": {"measured": ["2026/12/08 02:00:00.000", "2026/12/08 02:00:02.500"],
                       "gpu_passes": ["2026/12/08 02:00:02.900", "2026/12/08 02:00:05.100"]}}
     table = time_table([record], clocks)
     assert "SM MHz (measured / timed)" in table and "| 1980 / 345 |" in table
